@@ -1,0 +1,24 @@
+# The two commands of the README:
+#   make run   - set up, build, and run the main job on the default scene
+#                (window when a display exists, else headless export into ./out)
+#   make test  - set up, build, and run every test (GUI tests under xvfb-run)
+BUILD ?= build
+JOBS  ?= $(shell nproc)
+
+.PHONY: setup build run test clean
+setup:
+	@scripts/setup.sh
+
+build: setup
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	@if [ -n "$$DISPLAY" ]; then $(BUILD)/penumbra; \
+	 else $(BUILD)/penumbra export --scene cube --out out && echo "no display: exported the default scene into ./out"; fi
+
+test: build
+	@cd $(BUILD) && xvfb-run -a -s '-screen 0 1280x800x24' ctest --output-on-failure -j 2
+
+clean:
+	rm -rf $(BUILD) out

@@ -1,0 +1,27 @@
+// One OpenGL 4.5 core context, created either headless (EGL surfaceless, falling back to the
+// EGL device platform) or in a GLFW window. GL calls go through libepoxy either way.
+#pragma once
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+class GlContext {
+public:
+  virtual ~GlContext() = default;
+
+  // Returns nullptr and fills `error` (what was found, what to install) on failure.
+  static std::unique_ptr<GlContext> createHeadless(std::string& error);
+  static std::unique_ptr<GlContext> createWindow(int width, int height, const char* title,
+                                                 std::string& error);
+
+  virtual GLFWwindow* window() const { return nullptr; }
+  std::string renderer() const;  // "llvmpipe (LLVM 15.0.6, 256 bits) | 4.5 (Core Profile) Mesa ..."
+  bool isSoftwareRenderer() const;  // llvmpipe/softpipe: GL_TIME_ELAPSED is not trustworthy
+  int majorVersion() const;
+  int minorVersion() const;
+  bool isCoreProfile() const;
+};
+
+// Routes KHR_debug messages (medium and high severity) to stderr.
+void installGlDebugLog();

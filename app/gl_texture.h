@@ -1,0 +1,74 @@
+// Owning handles for the GL objects the stages create, and float read-back.
+#pragma once
+#include <epoxy/gl.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+class GlTexture {
+public:
+  GlTexture() = default;
+  // A 2D texture (layers == 0) or a 2D array texture (layers >= 1), one mip level.
+  GlTexture(GLenum internalFormat, int width, int height, int layers = 0);
+  ~GlTexture() { release(); }
+  GlTexture(GlTexture&& other) noexcept { *this = std::move(other); }
+  GlTexture& operator=(GlTexture&& other) noexcept;
+  GlTexture(const GlTexture&) = delete;
+  GlTexture& operator=(const GlTexture&) = delete;
+
+  GLuint id() const { return id_; }
+  GLenum internalFormat() const { return format_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int layers() const { return layers_; }
+  bool isArray() const { return layers_ > 0; }
+  int channelCount() const;  // channels of the internal format (depth: 1)
+  bool isInteger() const;    // R32UI and friends
+
+  // Reads layer `layer` as floats (integer formats converted), row 0 at the bottom (GL order).
+  std::vector<float> readFloats(int layer = 0) const;
+
+private:
+  void release();
+  GLuint id_ = 0;
+  GLenum format_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 0;
+};
+
+// Framebuffers and buffers are created on first use, so stages can be declared (for --set,
+// help, tests of parameters) before a GL context exists.
+class GlFramebuffer {
+public:
+  GlFramebuffer() = default;
+  ~GlFramebuffer() { if (id_) glDeleteFramebuffers(1, &id_); }
+  GlFramebuffer(const GlFramebuffer&) = delete;
+  GlFramebuffer& operator=(const GlFramebuffer&) = delete;
+  GLuint id() const {
+    if (!id_) glCreateFramebuffers(1, &id_);
+    return id_;
+  }
+  // Throws with the status name when the attachments are incomplete.
+  void checkComplete(const char* who) const;
+
+private:
+  mutable GLuint id_ = 0;
+};
+
+class GlBuffer {
+public:
+  GlBuffer() = default;
+  ~GlBuffer() { if (id_) glDeleteBuffers(1, &id_); }
+  GlBuffer(const GlBuffer&) = delete;
+  GlBuffer& operator=(const GlBuffer&) = delete;
+  GLuint id() const {
+    if (!id_) glCreateBuffers(1, &id_);
+    return id_;
+  }
+  void upload(const void* data, size_t bytes) {
+    glNamedBufferData(id(), GLsizeiptr(bytes), data, GL_DYNAMIC_DRAW);
+  }
+
+private:
+  mutable GLuint id_ = 0;
+};

@@ -1,0 +1,53 @@
+// penumbra: a step-by-step visualizer of Monte Carlo soft shadows (Curtis & Olano 2009).
+// Subcommands (DESIGN.md §1); bad arguments print what is wrong and exit with status 2.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "export_command.h"
+#include "window_app.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"penumbra - a step-by-step visualizer of real-time soft shadows"};
+  app.require_subcommand(0, 1);
+
+  WindowOptions window;
+  app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine) or a "
+                                          ".json/.gltf/.glb file")->capture_default_str();
+  app.add_option("--set", window.sets, "stage.key=value, repeatable");
+  app.add_option("--screenshot", window.screenshot, "save the window to this PNG and exit");
+  app.add_option("--frames", window.frames, "frames to render before --screenshot")
+      ->check(CLI::Range(1, 100000))->capture_default_str();
+  app.add_option("--width", window.width, "window width")->check(CLI::Range(320, 8192));
+  app.add_option("--height", window.height, "window height")->check(CLI::Range(240, 8192));
+
+  ExportOptions exporting;
+  CLI::App* exportCommand = app.add_subcommand("export", "run the pipeline headless and write "
+                                                         "every stage output (EXR + PNG) and run.json");
+  exportCommand->add_option("--scene", exporting.scene, "built-in scene or scene file")
+      ->capture_default_str();
+  exportCommand->add_option("--out", exporting.outDirectory, "output directory")
+      ->capture_default_str();
+  exportCommand->add_option("--width", exporting.width, "eye image width")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  exportCommand->add_option("--height", exporting.height, "eye image height")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  exportCommand->add_option("--set", exporting.sets, "stage.key=value, repeatable");
+  exportCommand->add_option("--frame-key", exporting.frameKey, "hash key of the frame")
+      ->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    app.exit(error);
+    return 2;
+  }
+
+  if (*exportCommand) return runExport(exporting);
+  return runWindow(window);
+}

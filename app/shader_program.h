@@ -1,0 +1,46 @@
+// GLSL programs loaded from shaders/ with our own `#include "file"` resolver, so the layout
+// headers in shaders/shared/ are read by both C++ and GLSL. A failed (re)load keeps the last
+// good program and returns the compiler log.
+#pragma once
+#include <epoxy/gl.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+std::filesystem::path shaderDirectory();  // $PENUMBRA_SHADER_DIR, else <source>/shaders
+
+// Reads `file` (relative to shaderDirectory()) with every #include expanded once, with
+// #line directives so compiler messages name the right line. Throws std::runtime_error.
+std::string loadShaderSource(const std::string& file, const std::string& defines = "");
+
+class ShaderProgram {
+public:
+  struct Source { GLenum type; std::string file; };
+  ShaderProgram() = default;
+  ShaderProgram(std::vector<Source> sources, std::string defines = "");
+  ~ShaderProgram();
+  ShaderProgram(const ShaderProgram&) = delete;
+  ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+  // Compiles and links; on failure keeps the previous program, returns false and the log.
+  bool reload(std::string& log);
+  // Built on first use (so stages can be declared before a GL context exists); throws
+  // std::runtime_error with the compiler log if the first build fails.
+  GLuint id();
+  void use() { glUseProgram(id()); }
+  const std::vector<Source>& sources() const { return sources_; }
+
+  // Every live program, for hot reload.
+  static bool reloadAll(std::string& log);
+
+private:
+  std::vector<Source> sources_;
+  std::string defines_;
+  GLuint program_ = 0;
+};
+
+// Dispatches a compute program over width x height in 8x8 groups, split into row bands of
+// at most `rowsPerBand` rows (llvmpipe blocks the calling thread for the whole dispatch).
+// The band's first row is passed in the uniform `uRowOffset` (location 0).
+void dispatchRows(int width, int height, int rowsPerBand = 1 << 30);

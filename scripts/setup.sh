@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages penumbra needs, only those missing (idempotent).
+set -euo pipefail
+packages=(
+  cmake g++ make pkg-config
+  libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev nlohmann-json3-dev
+  libopenimageio-dev openimageio-tools libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
+  xvfb xauth libcli11-dev googletest libgtest-dev assimp-testmodels
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,27 @@
+// Stage `composite` (thesis Algorithm 1, last step): albedo x (ambient + visibility x Lambert).
+#include "shared/screen_pass.glsl"
+layout(binding = 0) uniform sampler2D albedoTexture;
+layout(binding = 1) uniform sampler2D wsNormalTexture;
+layout(binding = 2) uniform sampler2D wsPositionTexture;
+layout(binding = 3) uniform sampler2D visibilityTexture;
+layout(binding = 0, rgba32f) uniform writeonly image2D colorImage;
+
+void main() {
+  ivec2 pixel = screenPixel();
+  if (pixel.x < 0) return;
+  vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+  if (wsPosition.w == 0.0) {  // background: a quiet vertical gradient
+    float t = float(pixel.y) / float(frame.sizes.y);
+    imageStore(colorImage, pixel, vec4(mix(vec3(0.16), vec3(0.30, 0.32, 0.36), t), 1.0));
+    return;
+  }
+  vec3 albedo = texelFetch(albedoTexture, pixel, 0).rgb;
+  vec3 n = texelFetch(wsNormalTexture, pixel, 0).xyz;
+  vec3 toLight = frame.wsLightCenter.xyz - wsPosition.xyz;
+  vec3 l = toLight / max(length(toLight), 1e-20);
+  // Lit only from the light's emitting side.
+  float lambert = dot(-l, frame.wsLightForward.xyz) > 0.0 ? max(dot(n, l), 0.0) : 0.0;
+  float visibility = clamp(texelFetch(visibilityTexture, pixel, 0).r, 0.0, 1.0);
+  vec3 color = albedo * (frame.shading.x + (1.0 - frame.shading.x) * visibility * lambert);
+  imageStore(colorImage, pixel, vec4(color, 1.0));
+}

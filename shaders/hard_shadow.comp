@@ -1,0 +1,33 @@
+// Stage `hard_shadow`: the classic shadow-map test (Williams 1978; thesis §2.3) against the
+// near layer. The map is seen from the projection point behind the light center, which
+// tends to the center as the light shrinks (Eq 3.1), so this is the point-light limit.
+#include "shared/screen_pass.glsl"
+#include "shared/bias.glsl"
+layout(binding = 0) uniform sampler2D wsPositionTexture;
+layout(binding = 1) uniform sampler2D nearLayer;
+layout(binding = 2) uniform sampler2D wsNormalTexture;
+layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
+layout(location = 1) uniform float uConstantBias;  // world units
+layout(location = 2) uniform bool uAdaptiveBias;   // add Eq 3.2
+layout(location = 3) uniform float uMinCosine;
+
+void main() {
+  ivec2 pixel = screenPixel();
+  if (pixel.x < 0) return;
+  vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+  float visibility = 1.0;
+  vec3 map = lightMapCoords(wsPosition.xyz);
+  bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
+                   && map.z >= frame.lightDepthRange.x;
+  if (wsPosition.w > 0.0 && insideMap) {
+    ivec2 texel = ivec2(map.xy * vec2(frame.sizes.zw));
+    float nearDepth = texelFetch(nearLayer, texel, 0).r;
+    float bias = uConstantBias;
+    if (uAdaptiveBias) {
+      vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
+      bias += adaptiveBias(map.z, wsNormal, -frame.wsLightForward.xyz, uMinCosine);
+    }
+    visibility = zToLsDepth(map.z - bias) <= nearDepth ? 1.0 : 0.0;
+  }
+  imageStore(visibilityImage, pixel, vec4(visibility));
+}

@@ -1,0 +1,19 @@
+// The pipeline, in execution order (thesis Algorithm 1, deferred form; DESIGN.md §2).
+#include <memory>
+#include <vector>
+
+#include "stage.h"
+
+std::unique_ptr<Stage> makeGBufferStage();
+std::unique_ptr<Stage> makeLightLayersStage();
+std::unique_ptr<Stage> makeHardShadowStage();
+std::unique_ptr<Stage> makeCompositeStage();
+
+std::vector<std::unique_ptr<Stage>> makeStages() {
+  std::vector<std::unique_ptr<Stage>> stages;
+  stages.push_back(makeGBufferStage());
+  stages.push_back(makeLightLayersStage());
+  stages.push_back(makeHardShadowStage());
+  stages.push_back(makeCompositeStage());
+  return stages;
+}

@@ -1,0 +1,17 @@
+#include "command.h"
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+CommandResult runPenumbra(const std::string& arguments) {
+  const std::string command = std::string(PENUMBRA_BINARY_PATH) + " " + arguments + " 2>&1";
+  CommandResult result{-1, ""};
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer;
+  while (size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}

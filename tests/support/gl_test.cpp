@@ -1,0 +1,32 @@
+#include "gl_test.h"
+
+#include <cstdlib>
+
+GlContext& headlessContext() {
+  static std::unique_ptr<GlContext> context = [] {
+    std::string error;
+    auto created = GlContext::createHeadless(error);
+    if (!created) {
+      std::fprintf(stderr, "headless context: %s\n", error.c_str());
+      std::abort();
+    }
+    return created;
+  }();
+  return *context;
+}
+
+PipelineRun::PipelineRun(Scene sceneIn, const std::vector<std::string>& sets, int width,
+                         int height)
+    : scene(std::move(sceneIn)) {
+  headlessContext();
+  gpuScene = std::make_unique<GpuScene>(scene);
+  pipeline = std::make_unique<Pipeline>();
+  for (const std::string& assignment : sets) {
+    const std::string problem = pipeline->set(assignment);
+    EXPECT_EQ(problem, "") << assignment;
+  }
+  frame = std::make_unique<Frame>(scene, *gpuScene, *pipeline);
+  frame->eyeWidth = width;
+  frame->eyeHeight = height;
+  run();
+}

@@ -1,0 +1,86 @@
+// The command line: export writes what it promises; bad flags exit 2 with a clear message.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/command.h"
+
+namespace fs = std::filesystem;
+
+TEST(Cli, ExportWritesEveryOutputAndRunJson) {
+  const fs::path out = fs::temp_directory_path() / "penumbra_cli_export";
+  fs::remove_all(out);
+  const auto result = runPenumbra("export --scene cube --out " + out.string() +
+                                  " --width 128 --height 96 --set light_layers.resolution=128");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  for (const char* stem : {"gbuffer.albedo", "gbuffer.wsNormal", "gbuffer.wsPosition",
+                           "gbuffer.depth", "light_layers.near", "light_layers.far",
+                           "hard_shadow.visibility", "composite.color"}) {
+    EXPECT_TRUE(fs::exists(out / (std::string(stem) + ".exr"))) << stem;
+    EXPECT_TRUE(fs::exists(out / (std::string(stem) + ".png"))) << stem;
+  }
+  std::ifstream in(out / "run.json");
+  const auto run = nlohmann::json::parse(in);
+  EXPECT_EQ(run["scene"], "cube");
+  EXPECT_EQ(run["parameters"]["light_layers"]["resolution"], "128");
+  EXPECT_TRUE(run["renderer"].get<std::string>().size() > 3);
+  EXPECT_TRUE(run["stage_milliseconds"].contains("trace") || run["stage_milliseconds"].contains("hard_shadow"));
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+  fs::remove_all(out);
+}
+
+TEST(Cli, UnknownSetKeyExits2AndListsValidKeys) {
+  const auto result = runPenumbra("export --scene cube --out /tmp/penumbra_never --set nope.key=1");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.output.find("unknown parameter 'nope.key'"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("light_layers.resolution"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists("/tmp/penumbra_never"));
+}
+
+TEST(Cli, OutOfRangeValueExits2AndNamesTheRange) {
+  const auto result = runPenumbra("export --scene cube --out /tmp/penumbra_never "
+                                  "--set light_layers.resolution=5000");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.output.find("[128, 2048]"), std::string::npos) << result.output;
+  const auto notNumber = runPenumbra("export --set hard_shadow.bias=abc --out /tmp/penumbra_never");
+  EXPECT_EQ(notNumber.exitCode, 2);
+  EXPECT_NE(notNumber.output.find("hard_shadow.bias"), std::string::npos) << notNumber.output;
+}
+
+TEST(Cli, BadFlagsAndScenesExit2) {
+  EXPECT_EQ(runPenumbra("export --width -3").exitCode, 2);
+  EXPECT_EQ(runPenumbra("--no-such-flag").exitCode, 2);
+  const auto scene = runPenumbra("export --scene nowhere --out /tmp/penumbra_never");
+  EXPECT_EQ(scene.exitCode, 2);
+  EXPECT_NE(scene.output.find("cube, plate, spheres, engine"), std::string::npos) << scene.output;
+  const auto missing = runPenumbra("export --scene /nonexistent/file.glb --out /tmp/penumbra_never");
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("file.glb"), std::string::npos) << missing.output;
+}
+
+TEST(Window, ScreenshotUnderXvfbIsNotBlank) {
+  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (make test does)";
+  const fs::path shot = fs::temp_directory_path() / "penumbra_window_smoke.png";
+  fs::remove(shot);
+  const auto result = runPenumbra("--screenshot " + shot.string() + " --frames 3 --width 800 --height 500");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  OIIO::ImageBuf image(shot.string());
+  ASSERT_TRUE(image.read()) << image.geterror();
+  EXPECT_EQ(image.spec().width, 800);
+  const auto stats = OIIO::ImageBufAlgo::computePixelStats(image);
+  double spread = 0;
+  for (int c = 0; c < 3; ++c) spread += stats.max[c] - stats.min[c];
+  EXPECT_GT(spread, 0.5) << "screenshot looks blank";
+  // The view (right of the 340-pixel panel) shows the composite, not just background.
+  OIIO::ImageBuf view = OIIO::ImageBufAlgo::cut(image, OIIO::ROI(400, 800, 0, 500));
+  const auto viewStats = OIIO::ImageBufAlgo::computePixelStats(view);
+  EXPECT_GT(viewStats.stddev[0], 0.02);
+  fs::remove(shot);
+}
