@@ -67,9 +67,10 @@ class Reader {
   double number(const json& value, const std::string& pointer) const {
     if (!value.is_number()) fail(pointer, "expected a number, got " + typeOf(value));
     const double result = value.get<double>();
-    // JSON has no NaN or infinity, but an out-of-range literal such as 1e999 parses as one.
+    // nlohmann refuses literals such as 1e999 itself; values beyond float range (or
+    // close enough that arithmetic overflows) would turn into infinities later.
     if (!std::isfinite(result) || std::abs(result) > 1e30)
-      fail(pointer, "number is not finite or too large");
+      fail(pointer, "must be finite and within 1e30 in magnitude, got " + value.dump());
     return result;
   }
 

@@ -1,0 +1,31 @@
+// The N-buffer (thesis §3.5, after Décoret 2005 and Schwarz & Stamminger 2007).
+//
+// Storage: a 2D array texture, RGBA32F, the size W x H of the light layers, one layer per
+// level n = 0 .. ceil(log2(max(W, H))). Channels: x = zNearMin, y = zNearMax, z = zFarMax
+// (linear light depth, frame_block.h), w = 0.
+//
+// Neighbourhoods. Level n texel (x, y) holds min/max over the window of 2^n x 2^n level-0
+// texels "moved approximately to the center" (§3.5) and, where that window would stick
+// out of the map, shifted inward so it lies inside (then no information near the edges is
+// lost, and every value is exact, not merely conservative). Per axis, with a_n = 2^n / 2
+// (a_0 = 0):  lo = clamp(x - a_n, 0, max(W - 2^n, 0)),  window = [lo, min(lo + 2^n, W) - 1].
+// Level n is built from level n-1 by 4 fetches per texel, at lo + a_{n-1} and
+// lo + 2^(n-1) + a_{n-1} per axis (clamped to the map), whose windows tile this one.
+//
+// A search that wants the level-n window starting at texel `lo` (or ending at it) asks for
+// the texel lo + a_n: nbufferTexelForWindow below. Texels outside the map are empty: the
+// layers were cleared to near = 1, far = 0 (§3.3).
+
+int nbufferHalf(int level) { return level == 0 ? 0 : 1 << (level - 1); }
+
+// Per axis: the window [lo, hi] (inclusive) of level `level` texel `x` on a map of `size`.
+ivec2 nbufferWindow1D(int level, int x, int size) {
+  int span = 1 << level;
+  int lo = clamp(x - nbufferHalf(level), 0, max(size - span, 0));
+  return ivec2(lo, min(lo + span, size) - 1);
+}
+
+// The level texel whose window starts at `lo` (clamped inward like the window itself).
+int nbufferTexelForWindow(int level, int lo, int size) {
+  return clamp(lo, 0, max(size - (1 << level), 0)) + nbufferHalf(level);
+}
