@@ -6,7 +6,7 @@
 #include <string>
 
 #include "gl_texture.h"
-#include "gpu_layout.h"
+#include "gpu_layout_trace.h"
 #include "gpu_scene.h"
 #include "light_frame.h"
 #include "stage.h"
@@ -24,7 +24,8 @@ struct Frame {
   GlBuffer uniformBuffer;
 
   std::map<std::string, GlTexture> textures;  // "stage.output"
-  std::map<std::string, double> counters;     // "trace.raysTraced", ...
+  std::map<std::string, double> counters;     // "trace.rays", ...
+  std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
 
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}

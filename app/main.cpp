@@ -6,6 +6,8 @@
 #include <cstdlib>
 
 #include "export_command.h"
+#include "hash_command.h"
+#include "trace_command.h"
 #include "window_app.h"
 
 int main(int argc, char** argv) {
@@ -37,6 +39,28 @@ int main(int argc, char** argv) {
   exportCommand->add_option("--frame-key", exporting.frameKey, "hash key of the frame")
       ->capture_default_str();
 
+  TraceOptions tracing;
+  CLI::App* traceCommand = app.add_subcommand("trace", "record every step of every ray at one "
+                                                       "pixel, as JSON");
+  traceCommand->add_option("--scene", tracing.scene, "built-in scene or scene file")
+      ->capture_default_str();
+  traceCommand->add_option("--pixel", tracing.pixel, "X,Y in image coordinates (row 0 on top)")
+      ->required();
+  traceCommand->add_option("--out", tracing.out, "JSON file (default: standard output)");
+  traceCommand->add_option("--width", tracing.width, "eye image width")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  traceCommand->add_option("--height", tracing.height, "eye image height")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  traceCommand->add_option("--set", tracing.sets, "stage.key=value, repeatable");
+
+  HashOptions hashing;
+  CLI::App* hashCommand = app.add_subcommand("hash", "raw little-endian uint32 stream of a hash "
+                                                     "on the inputs 1, 2, ... (dieharder -g 200)");
+  hashCommand->add_option("--hash", hashing.hash, "md5_16, md5_64 or pcg3d")->capture_default_str();
+  hashCommand->add_option("--count", hashing.count, "number of hashes (16 bytes each)")
+      ->capture_default_str();
+  hashCommand->add_option("--key", hashing.key, "key XORed into every seed")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -49,5 +73,7 @@ int main(int argc, char** argv) {
   }
 
   if (*exportCommand) return runExport(exporting);
+  if (*traceCommand) return runTraceCommand(tracing);
+  if (*hashCommand) return runHashCommand(hashing);
   return runWindow(window);
 }

@@ -10,6 +10,7 @@
 #include "mesh_builders.h"
 #include "scene_file.h"
 #include "scene_gltf.h"
+#include "scene_stress.h"
 
 namespace {
 
@@ -108,13 +109,16 @@ Scene makeBuiltinScene(const std::string& name) {
   std::string valid;
   for (const std::string& each : builtinSceneNames()) valid += (valid.empty() ? "" : ", ") + each;
   throw std::runtime_error("unknown scene '" + name + "'; built-in scenes: " + valid +
-                           ", or a path to a .json, .gltf or .glb file");
+                           " (stress scenes: stress_grazing, stress_contact, ...), or a path to "
+                           "a .json, .gltf or .glb file");
 }
 
 Scene loadScene(const std::string& nameOrPath, std::vector<std::string>& warnings) {
   Scene scene;
   const std::string extension = std::filesystem::path(nameOrPath).extension().string();
-  if (isBuiltinScene(nameOrPath))
+  if (isStressScene(nameOrPath))
+    scene = makeStressScene(nameOrPath);
+  else if (isBuiltinScene(nameOrPath))
     scene = nameOrPath == "engine" ? gltfOnGround(kEnginePath, "engine", warnings)
                                    : makeBuiltinScene(nameOrPath);
   else if (extension == ".json")

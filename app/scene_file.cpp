@@ -21,9 +21,12 @@ namespace fs = std::filesystem;
 std::string pointerTo(const std::string& parent, const std::string& key) {
   std::string escaped;
   for (char c : key) {
-    if (c == '~') escaped += "~0";
-    else if (c == '/') escaped += "~1";
-    else escaped += c;
+    if (c == '~')
+      escaped += "~0";
+    else if (c == '/')
+      escaped += "~1";
+    else
+      escaped += c;
   }
   return parent + "/" + escaped;
 }
@@ -82,9 +85,9 @@ class Reader {
 
   glm::vec3 vec3(const json& value, const std::string& pointer) const {
     if (!value.is_array() || value.size() != 3)
-      fail(pointer, "expected an array of 3 numbers, got " +
-                        (value.is_array() ? "an array of " + std::to_string(value.size())
-                                          : typeOf(value)));
+      fail(pointer,
+           "expected an array of 3 numbers, got " +
+               (value.is_array() ? "an array of " + std::to_string(value.size()) : typeOf(value)));
     return {number(value[0], pointer + "/0"), number(value[1], pointer + "/1"),
             number(value[2], pointer + "/2")};
   }
@@ -114,8 +117,7 @@ class Reader {
 // then moved.
 glm::mat4 placement(const Reader& r, const json& object, const std::string& pointer) {
   glm::vec3 translate(0), rotate(0), scale(1);
-  if (object.contains("translate"))
-    translate = r.vec3(object["translate"], pointer + "/translate");
+  if (object.contains("translate")) translate = r.vec3(object["translate"], pointer + "/translate");
   if (object.contains("rotate_degrees"))
     rotate = r.vec3(object["rotate_degrees"], pointer + "/rotate_degrees");
   if (object.contains("scale")) {
@@ -146,8 +148,8 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     r.expectObject(object, pointer, {"ground", "name", "color", "receiver_only"});
     const std::string at = pointer + "/ground";
     r.expectObject(object["ground"], at, {"size", "y"});
-    const float size = static_cast<float>(r.positive(r.required(object["ground"], at, "size"),
-                                                     at + "/size"));
+    const float size =
+        static_cast<float>(r.positive(r.required(object["ground"], at, "size"), at + "/size"));
     const float y = object["ground"].contains("y")
                         ? static_cast<float>(r.number(object["ground"]["y"], at + "/y"))
                         : 0.0f;
@@ -157,8 +159,9 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     ground.receiverOnly = true;  // a floor rarely shadows anything; saves a depth layer
     scene.objects.push_back(std::move(ground));
   } else {
-    r.expectObject(object, pointer, {"gltf", "name", "translate", "rotate_degrees", "scale",
-                                     "color", "receiver_only"});
+    r.expectObject(
+        object, pointer,
+        {"gltf", "name", "translate", "rotate_degrees", "scale", "color", "receiver_only"});
     const std::string at = pointer + "/gltf";
     const std::string file = r.string(object["gltf"], at);
     if (file.empty()) r.fail(at, "empty path");
@@ -262,8 +265,8 @@ Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings)
   r.expectObject(root, "", {"name", "objects", "light", "camera"});
 
   Scene scene;
-  scene.name = root.contains("name") ? r.string(root["name"], "/name")
-                                     : fs::path(path).stem().string();
+  scene.name =
+      root.contains("name") ? r.string(root["name"], "/name") : fs::path(path).stem().string();
   const json& objects = r.required(root, "", "objects");
   if (!objects.is_array() || objects.empty())
     r.fail("/objects", "expected a non-empty array of objects");

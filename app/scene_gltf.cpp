@@ -45,19 +45,6 @@ std::string componentTypeName(int type) {
   }
 }
 
-size_t componentSize(int type) {
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_INT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
-  }
-}
-
 std::string typeName(int type) {
   switch (type) {
     case TINYGLTF_TYPE_SCALAR: return "SCALAR";
@@ -76,8 +63,10 @@ std::string oneLine(std::string text) {
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
   std::string result;
   for (char c : text) {
-    if (c == '\n') result += "; ";
-    else if (c != '\r') result += c;
+    if (c == '\n')
+      result += "; ";
+    else if (c != '\r')
+      result += c;
   }
   return result;
 }
@@ -147,17 +136,16 @@ std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
   for (int root : rootNodes()) visit(root, -1, worldFromFile, 0);
   if (objects_.empty())
     fail("no triangles to load (" + std::to_string(model_.meshes.size()) + " meshes, " +
-         std::to_string(model_.nodes.size()) + " nodes, " +
-         std::to_string(model_.scenes.size()) + " scenes, " +
-         std::to_string(skippedPrimitives_) + " non-triangle primitives skipped)");
+         std::to_string(model_.nodes.size()) + " nodes, " + std::to_string(model_.scenes.size()) +
+         " scenes, " + std::to_string(skippedPrimitives_) + " non-triangle primitives skipped)");
   return std::move(objects_);
 }
 
 void Importer::checkExtensions() {
   // These change how geometry is stored; reading past them would produce garbage.
-  static const std::set<std::string> geometry = {
-      "KHR_draco_mesh_compression", "KHR_mesh_quantization", "EXT_meshopt_compression",
-      "EXT_mesh_gpu_instancing"};
+  static const std::set<std::string> geometry = {"KHR_draco_mesh_compression",
+                                                 "KHR_mesh_quantization", "EXT_meshopt_compression",
+                                                 "EXT_mesh_gpu_instancing"};
   for (const std::string& name : model_.extensionsRequired) {
     if (geometry.count(name)) fail("requires unsupported extension " + name);
     warn("ignoring required extension " + name);
@@ -250,7 +238,7 @@ void Importer::addMeshInstance(int nodeIndex, int meshIndex, const glm::dmat4& w
   }
   const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
   const tinygltf::Node& node = model_.nodes[nodeIndex];
-  std::string name = !node.name.empty()  ? node.name
+  std::string name = !node.name.empty()   ? node.name
                      : !mesh.name.empty() ? mesh.name
                                           : "node " + std::to_string(nodeIndex);
   for (size_t i = 0; i < mesh.primitives.size(); ++i) {
@@ -276,7 +264,8 @@ AccessorView Importer::view(int accessorIndex, const std::string& where, int wan
     fail(at + ": component type " + componentTypeName(a.componentType) + ", expected " + valid);
   }
   // Every type accepted here is one the spec forbids to be normalized.
-  if (a.normalized) fail(at + ": " + componentTypeName(a.componentType) + " must not be normalized");
+  if (a.normalized)
+    fail(at + ": " + componentTypeName(a.componentType) + " must not be normalized");
   if (a.sparse.isSparse) fail(at + ": sparse accessors are not supported");
   if (a.count == 0) fail(at + ": count is 0");
   if (a.bufferView < 0) fail(at + ": no bufferView (all-zero data)");
@@ -291,15 +280,18 @@ AccessorView Importer::view(int accessorIndex, const std::string& where, int wan
   const std::vector<unsigned char>& bytes = model_.buffers[bv.buffer].data;
   if (bv.byteOffset > bytes.size() || bv.byteLength > bytes.size() - bv.byteOffset)
     fail(at + ": " + bvName + " bytes [" + std::to_string(bv.byteOffset) + ", +" +
-         std::to_string(bv.byteLength) + ") exceed buffer " + std::to_string(bv.buffer) +
-         " (" + std::to_string(bytes.size()) + " bytes)");
-  const size_t component = componentSize(a.componentType);
-  const size_t element = component * static_cast<size_t>(tinygltf::GetNumComponentsInType(a.type));
+         std::to_string(bv.byteLength) + ") exceed buffer " + std::to_string(bv.buffer) + " (" +
+         std::to_string(bytes.size()) + " bytes)");
+  const size_t component = static_cast<size_t>(
+      tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType)));
+  const size_t element =
+      component *
+      static_cast<size_t>(tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)));
   size_t stride = element;
   if (bv.byteStride != 0) {
     if (bv.byteStride < element || bv.byteStride > 252 || bv.byteStride % component != 0)
-      fail(at + ": " + bvName + " byteStride " + std::to_string(bv.byteStride) +
-           " invalid for " + std::to_string(element) + "-byte elements");
+      fail(at + ": " + bvName + " byteStride " + std::to_string(bv.byteStride) + " invalid for " +
+           std::to_string(element) + "-byte elements");
     stride = bv.byteStride;
   }
   // Written as subtractions so that hostile sizes cannot overflow.
@@ -322,10 +314,10 @@ std::vector<glm::vec3> Importer::readVec3(int accessorIndex, const std::string& 
 
 std::vector<std::uint32_t> Importer::readIndices(int accessorIndex, const std::string& where,
                                                  size_t vertexCount) {
-  const AccessorView v = view(accessorIndex, where + " indices", TINYGLTF_TYPE_SCALAR,
-                              {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+  const AccessorView v =
+      view(accessorIndex, where + " indices", TINYGLTF_TYPE_SCALAR,
+           {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
   std::vector<std::uint32_t> result(v.count);
   for (size_t i = 0; i < v.count; ++i) {
     const unsigned char* p = v.data + i * v.stride;
@@ -403,15 +395,13 @@ void repairNormals(Mesh& mesh, const std::vector<char>& bad) {
 }
 
 bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
-                            const std::string& objectName, const glm::dmat4& world,
-                            bool mirrored) {
+                            const std::string& objectName, const glm::dmat4& world, bool mirrored) {
   const tinygltf::Primitive& p = mesh.primitives[primitiveIndex];
-  const std::string where =
-      (mesh.name.empty() ? "mesh" : "mesh '" + mesh.name + "'") + " primitive " +
-      std::to_string(primitiveIndex);
+  const std::string where = (mesh.name.empty() ? "mesh" : "mesh '" + mesh.name + "'") +
+                            " primitive " + std::to_string(primitiveIndex);
   const int mode = p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES) {
-    static const char* const names[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP",
+    static const char* const names[] = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
                                         "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
     const std::string name = mode >= 0 && mode <= 6 ? names[mode] : "invalid";
     warn(where + ": mode " + std::to_string(mode) + " (" + name + ") is not TRIANGLES; skipped");
@@ -481,8 +471,10 @@ bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
       }
       const glm::dvec3 w = normalMatrix * (n / length);
       const double wl = glm::length(w);
-      if (!std::isfinite(wl) || wl == 0) bad[i] = 1;  // extreme scales can lose it
-      else out.normals[i] = glm::vec3(w / wl);
+      if (!std::isfinite(wl) || wl == 0)
+        bad[i] = 1;  // extreme scales can lose it
+      else
+        out.normals[i] = glm::vec3(w / wl);
     }
     if (badInFile > 0)
       warn(where + ": " + std::to_string(badInFile) +

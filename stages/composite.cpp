@@ -12,7 +12,7 @@ public:
                  {"R", "G", "B", "A"}, {}}};
     params_ = {
         Param::choice("shadow", "Which stage's visibility shades the image.",
-                      {"hard_shadow", "none"}, 0),
+                      {"filter", "trace", "hard_shadow", "none"}, 0),
         Param::real("ambient", "Light that reaches shadowed surfaces (fraction).", 0.2, 0, 1),
     };
   }

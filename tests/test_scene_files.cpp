@@ -23,9 +23,12 @@ namespace {
 
 const fs::path kModels = "/usr/share/assimp/models/glTF2";  // Debian assimp-testmodels
 const std::string kEngine = (kModels / "2CylinderEngine-glTF-Binary/2CylinderEngine.glb").string();
-const std::string kExampleScene = std::string(PENUMBRA_SOURCE_DIR) + "/assets/scenes/engine_on_ground.json";
+const std::string kExampleScene =
+    std::string(PENUMBRA_SOURCE_DIR) + "/assets/scenes/engine_on_ground.json";
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // What every consumer relies on, checked more strictly than validateScene (unit normals).
 void expectUsable(const std::vector<SceneObject>& objects, const std::string& what) {
@@ -52,11 +55,10 @@ size_t triangles(const std::vector<SceneObject>& objects) {
 }
 
 // A per-process directory: ctest runs the tests of this binary as parallel processes.
-class TempDir : public ::testing::Test {
+class SceneFilesTemp : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("penumbra_scene_files_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() / ("penumbra_scene_files_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -105,30 +107,34 @@ struct TinyGltf {
   TinyGltf() { rebuild(); }
   void rebuild() {
     const size_t posBytes = positions.size() * 4, nrmBytes = normals.size() * 4;
-    doc = {{"asset", {{"version", "2.0"}}},
-           {"scene", 0},
-           {"scenes", json::array({{{"nodes", {0}}}})},
-           {"nodes", json::array({{{"mesh", 0}}})},
-           {"meshes", json::array({{{"name", "tri"},
-                                    {"primitives", json::array({{{"attributes", {{"POSITION", 0}}},
-                                                                 {"indices", 1}}})}}})},
-           {"buffers", json::array({{{"uri", "tiny.bin"}, {"byteLength", bin().size()}}})},
-           {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", posBytes}},
-                                        {{"buffer", 0},
-                                         {"byteOffset", posBytes + nrmBytes},
-                                         {"byteLength", indices.size() * 2}}})},
-           {"accessors", json::array({{{"bufferView", 0},
-                                       {"componentType", 5126},
-                                       {"count", positions.size() / 3},
-                                       {"type", "VEC3"}},
-                                      {{"bufferView", 1},
-                                       {"componentType", 5123},
-                                       {"count", indices.size()},
-                                       {"type", "SCALAR"}}})}};
+    doc = {
+        {"asset", {{"version", "2.0"}}},
+        {"scene", 0},
+        {"scenes", json::array({{{"nodes", {0}}}})},
+        {"nodes", json::array({{{"mesh", 0}}})},
+        {"meshes", json::array({{{"name", "tri"},
+                                 {"primitives", json::array({{{"attributes", {{"POSITION", 0}}},
+                                                              {"indices", 1}}})}}})},
+        {"buffers", json::array({{{"uri", "tiny.bin"}, {"byteLength", bin().size()}}})},
+        {"bufferViews", json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", posBytes}},
+                                     {{"buffer", 0},
+                                      {"byteOffset", posBytes + nrmBytes},
+                                      {"byteLength", indices.size() * 2}}})},
+        {"accessors", json::array({{{"bufferView", 0},
+                                    {"componentType", 5126},
+                                    {"count", positions.size() / 3},
+                                    {"type", "VEC3"}},
+                                   {{"bufferView", 1},
+                                    {"componentType", 5123},
+                                    {"count", indices.size()},
+                                    {"type", "SCALAR"}}})}};
     if (!normals.empty()) {
-      doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", posBytes}, {"byteLength", nrmBytes}});
-      doc["accessors"].push_back(
-          {{"bufferView", 2}, {"componentType", 5126}, {"count", normals.size() / 3}, {"type", "VEC3"}});
+      doc["bufferViews"].push_back(
+          {{"buffer", 0}, {"byteOffset", posBytes}, {"byteLength", nrmBytes}});
+      doc["accessors"].push_back({{"bufferView", 2},
+                                  {"componentType", 5126},
+                                  {"count", normals.size() / 3},
+                                  {"type", "VEC3"}});
       doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
     }
   }
@@ -155,7 +161,11 @@ TEST(SceneGltf, EngineLoadsAllTrianglesFinite) {
 // String,Uint}: a texture, material or name); those files draw correctly, so they load.
 TEST(SceneGltf, AssimpCorpusRefusedOrRepaired) {
   ASSERT_TRUE(fs::is_directory(kModels)) << "install assimp-testmodels (scripts/setup.sh)";
-  struct Case { const char* file; bool loads; const char* needle; };
+  struct Case {
+    const char* file;
+    bool loads;
+    const char* needle;
+  };
   const Case cases[] = {
       {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", false, "POSITION 0 is not finite"},
       {"IndexOutOfRange/IndexOutOfRange.gltf", false, "index 255 out of range (24 vertices)"},
@@ -188,7 +198,8 @@ TEST(SceneGltf, AssimpCorpusRefusedOrRepaired) {
       expectUsable(objects, c.file);
       if (*c.needle) {
         bool found = false;
-        for (const std::string& w : warnings) found = found || w.find(c.needle) != std::string::npos;
+        for (const std::string& w : warnings)
+          found = found || w.find(c.needle) != std::string::npos;
         EXPECT_TRUE(found) << c.file << ": no warning contains '" << c.needle << "'";
       }
     } catch (const std::runtime_error& e) {
@@ -201,7 +212,7 @@ TEST(SceneGltf, AssimpCorpusRefusedOrRepaired) {
   }
 }
 
-TEST_F(TempDir, TinyGltfBaselineLoadsWithFlatNormals) {
+TEST_F(SceneFilesTemp, TinyGltfBaselineLoadsWithFlatNormals) {
   TinyGltf t;
   const std::vector<unsigned char> bin = t.bin();
   write("tiny.bin", std::string(bin.begin(), bin.end()));
@@ -215,12 +226,12 @@ TEST_F(TempDir, TinyGltfBaselineLoadsWithFlatNormals) {
   EXPECT_TRUE(warnings.empty());
 }
 
-TEST_F(TempDir, NodeTransformsAndMirroringKeepNormalsOutward) {
+TEST_F(SceneFilesTemp, NodeTransformsAndMirroringKeepNormalsOutward) {
   TinyGltf t;
   t.normals = {0, 0, 1, 0, 0, 1, 0, 0, 1};
   t.rebuild();
-  t.doc["nodes"] = json::array({{{"children", {1}}, {"translation", {1, 2, 3}}},
-                                {{"mesh", 0}, {"scale", {-2, 2, 2}}}});
+  t.doc["nodes"] = json::array(
+      {{{"children", {1}}, {"translation", {1, 2, 3}}}, {{"mesh", 0}, {"scale", {-2, 2, 2}}}});
   const std::vector<unsigned char> bin = t.bin();
   write("tiny.bin", std::string(bin.begin(), bin.end()));
   std::vector<std::string> warnings;
@@ -234,7 +245,7 @@ TEST_F(TempDir, NodeTransformsAndMirroringKeepNormalsOutward) {
   EXPECT_GT(glm::dot(face, m.normals[0]), 0.0f) << "winding must follow the normals";
 }
 
-TEST_F(TempDir, BadNormalsRepairedWithWarning) {
+TEST_F(SceneFilesTemp, BadNormalsRepairedWithWarning) {
   TinyGltf t;
   t.normals = {0, 0, 1, NAN, 0, 0, 0, 0, 0};
   t.rebuild();
@@ -244,11 +255,12 @@ TEST_F(TempDir, BadNormalsRepairedWithWarning) {
   const auto objects = loadGltf(write("normals.gltf", t.doc.dump()), glm::mat4(1), warnings);
   expectUsable(objects, "normals");
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("2 non-finite or zero-length normals"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("2 non-finite or zero-length normals"), std::string::npos)
+      << warnings[0];
   for (const glm::vec3& n : objects[0].mesh.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
 }
 
-TEST_F(TempDir, OwnBrokenFilesRefused) {
+TEST_F(SceneFilesTemp, OwnBrokenFilesRefused) {
   TinyGltf base;
   const std::vector<unsigned char> bin = base.bin();
   write("tiny.bin", std::string(bin.begin(), bin.end()));
@@ -259,24 +271,28 @@ TEST_F(TempDir, OwnBrokenFilesRefused) {
   };
   expectRefused(variant("past_end.gltf", [](json& d) { d["accessors"][0]["count"] = 4; }),
                 "exceed bufferView 0");
-  expectRefused(variant("view_past_buffer.gltf", [](json& d) { d["bufferViews"][1]["byteLength"] = 400; }),
-                "exceed buffer 0");
-  expectRefused(variant("float_indices.gltf", [](json& d) { d["accessors"][1]["componentType"] = 5126; }),
-                "component type FLOAT, expected UNSIGNED_BYTE or UNSIGNED_SHORT or UNSIGNED_INT");
+  expectRefused(
+      variant("view_past_buffer.gltf", [](json& d) { d["bufferViews"][1]["byteLength"] = 400; }),
+      "exceed buffer 0");
+  expectRefused(
+      variant("float_indices.gltf", [](json& d) { d["accessors"][1]["componentType"] = 5126; }),
+      "component type FLOAT, expected UNSIGNED_BYTE or UNSIGNED_SHORT or UNSIGNED_INT");
   expectRefused(variant("vec2_positions.gltf", [](json& d) { d["accessors"][0]["type"] = "VEC2"; }),
                 "type VEC2, expected VEC3");
   // tinygltf catches a few dangling indices itself; its message is passed on.
-  expectRefused(variant("bad_accessor.gltf",
-                        [](json& d) { d["meshes"][0]["primitives"][0]["indices"] = 9; }),
-                "accessor out of bounds");
+  expectRefused(
+      variant("bad_accessor.gltf", [](json& d) { d["meshes"][0]["primitives"][0]["indices"] = 9; }),
+      "accessor out of bounds");
   expectRefused(variant("bad_view.gltf", [](json& d) { d["accessors"][0]["bufferView"] = 9; }),
                 "bufferView");
   expectRefused(variant("bad_buffer.gltf", [](json& d) { d["bufferViews"][0]["buffer"] = 5; }),
                 "buffer");
-  expectRefused(variant("bad_node.gltf", [](json& d) { d["scenes"][0]["nodes"] = {0, 4}; }),
+  expectRefused(variant("bad_node.gltf",
+                        [](json& d) {
+                          d["scenes"][0]["nodes"] = {0, 4};
+                        }),
                 "node 4");
-  expectRefused(variant("bad_mesh.gltf", [](json& d) { d["nodes"][0]["mesh"] = 3; }),
-                "mesh 3");
+  expectRefused(variant("bad_mesh.gltf", [](json& d) { d["nodes"][0]["mesh"] = 3; }), "mesh 3");
   expectRefused(variant("normalized.gltf", [](json& d) { d["accessors"][1]["normalized"] = true; }),
                 "must not be normalized");
   expectRefused(variant("bad_stride.gltf", [](json& d) { d["bufferViews"][0]["byteStride"] = 8; }),
@@ -289,13 +305,13 @@ TEST_F(TempDir, OwnBrokenFilesRefused) {
                               {"values", {{"bufferView", 0}}}};
                         }),
                 "sparse");
-  expectRefused(variant("cycle.gltf",
-                        [](json& d) {
-                          d["nodes"] = json::array({{{"mesh", 0}, {"children", {1}}},
-                                                    {{"children", {2}}},
-                                                    {{"children", {1}}}});
-                        }),
-                "cycle");
+  expectRefused(
+      variant("cycle.gltf",
+              [](json& d) {
+                d["nodes"] = json::array(
+                    {{{"mesh", 0}, {"children", {1}}}, {{"children", {2}}}, {{"children", {1}}}});
+              }),
+      "cycle");
   expectRefused(variant("deep.gltf",
                         [](json& d) {
                           json nodes = json::array();
@@ -308,7 +324,8 @@ TEST_F(TempDir, OwnBrokenFilesRefused) {
                 "1 non-triangle primitives skipped");
   expectRefused(variant("nan_matrix.gltf",
                         [](json& d) {
-                          d["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+                          d["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0,
+                                                     0, 0, 1, 0, 0, 0, 0, 1};
                           d["nodes"][0]["matrix"][12] = 1e300;  // finite, but not as a float
                         }),
                 "not finite after the node transforms");
@@ -369,13 +386,16 @@ TEST(SceneFile, GroundQuadFacesUp) {
   for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 1, 0));
 }
 
-TEST_F(TempDir, MalformedSceneFilesNameTheProblem) {
+TEST_F(SceneFilesTemp, MalformedSceneFilesNameTheProblem) {
   // Only a ground, so that each variant loads fast; the glTF path is tested separately.
-  const json base = {
-      {"objects", json::array({{{"ground", {{"size", 10}}}}})},
-      {"light", {{"center", {0, 4, 0}}, {"forward", {0, -1, 0}}, {"up", {0, 0, -1}},
-                 {"width", 1}, {"height", 1}}},
-      {"camera", {{"position", {0, 3, 6}}, {"target", {0, 0, 0}}}}};
+  const json base = {{"objects", json::array({{{"ground", {{"size", 10}}}}})},
+                     {"light",
+                      {{"center", {0, 4, 0}},
+                       {"forward", {0, -1, 0}},
+                       {"up", {0, 0, -1}},
+                       {"width", 1},
+                       {"height", 1}}},
+                     {"camera", {{"position", {0, 3, 6}}, {"target", {0, 0, 0}}}}};
   std::vector<std::string> warnings;
   EXPECT_EQ(loadSceneFile(write("base.json", base.dump()), warnings).objects.size(), 1u);
 
@@ -390,7 +410,8 @@ TEST_F(TempDir, MalformedSceneFilesNameTheProblem) {
       const std::string message = e.what();
       std::cout << "  " << message << "\n";
       EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
-      for (const char* needle : needles) EXPECT_NE(message.find(needle), std::string::npos) << message;
+      for (const char* needle : needles)
+        EXPECT_NE(message.find(needle), std::string::npos) << message;
     }
   };
   auto edited = [&](auto&& edit) {
@@ -403,13 +424,17 @@ TEST_F(TempDir, MalformedSceneFilesNameTheProblem) {
   expectError("top_array.json", "[1, 2]", {"/: expected an object, got an array"});
   expectError("unknown_top.json", edited([](json& d) { d["lights"] = d["light"]; }),
               {"unknown key 'lights'", "valid keys: name, objects, light, camera"});
-  expectError("unknown_obj.json", edited([](json& d) { d["objects"][0]["colour"] = {1, 0, 0}; }),
+  expectError("unknown_obj.json", edited([](json& d) {
+                d["objects"][0]["colour"] = {1, 0, 0};
+              }),
               {"/objects/0: unknown key 'colour'", "color"});
   expectError("wrong_type.json", edited([](json& d) { d["light"]["width"] = "1.0"; }),
               {"/light/width: expected a number, got a string"});
   expectError("wrong_bool.json", edited([](json& d) { d["objects"][0]["receiver_only"] = 1; }),
               {"/objects/0/receiver_only: expected true or false"});
-  expectError("short_vec.json", edited([](json& d) { d["light"]["center"] = {0, 4}; }),
+  expectError("short_vec.json", edited([](json& d) {
+                d["light"]["center"] = {0, 4};
+              }),
               {"/light/center: expected an array of 3 numbers, got an array of 2"});
   expectError("missing_light.json", edited([](json& d) { d.erase("light"); }),
               {"/light: missing (required)"});
@@ -423,34 +448,43 @@ TEST_F(TempDir, MalformedSceneFilesNameTheProblem) {
               {"/light/center/1: must be finite and within 1e30"});
   expectError("negative_width.json", edited([](json& d) { d["light"]["width"] = -1; }),
               {"/light/width: must be positive"});
-  expectError("negative_ground.json", edited([](json& d) { d["objects"][0]["ground"]["size"] = -5; }),
+  expectError("negative_ground.json",
+              edited([](json& d) { d["objects"][0]["ground"]["size"] = -5; }),
               {"/objects/0/ground/size: must be positive"});
-  expectError("zero_scale.json",
-              edited([](json& d) { d["objects"][0] = {{"gltf", kEngine}, {"scale", {1, 0, 1}}}; }),
+  expectError("zero_scale.json", edited([](json& d) {
+                d["objects"][0] = {{"gltf", kEngine}, {"scale", {1, 0, 1}}};
+              }),
               {"/objects/0/scale: must be positive"});
   expectError("both_kinds.json", edited([](json& d) { d["objects"][0]["gltf"] = "x.glb"; }),
               {"/objects/0: needs exactly one of 'gltf' or 'ground'"});
   expectError("no_objects.json", edited([](json& d) { d["objects"] = json::array(); }),
               {"/objects: expected a non-empty array"});
-  expectError("bad_color.json", edited([](json& d) { d["objects"][0]["color"] = {0.5, 2, 0}; }),
+  expectError("bad_color.json", edited([](json& d) {
+                d["objects"][0]["color"] = {0.5, 2, 0};
+              }),
               {"/objects/0/color/1: must be in [0, 1]"});
-  expectError("parallel_light.json", edited([](json& d) { d["light"]["up"] = {0, 2, 0}; }),
+  expectError("parallel_light.json", edited([](json& d) {
+                d["light"]["up"] = {0, 2, 0};
+              }),
               {"/light/up: is parallel to forward"});
-  expectError("camera_on_target.json", edited([](json& d) { d["camera"]["target"] = {0, 3, 6}; }),
+  expectError("camera_on_target.json", edited([](json& d) {
+                d["camera"]["target"] = {0, 3, 6};
+              }),
               {"/camera/target: must differ from position"});
   expectError("wide_fov.json", edited([](json& d) { d["camera"]["fov_y_degrees"] = 200; }),
               {"/camera/fov_y_degrees: must be in (1, 179)"});
-  expectError("missing_gltf.json",
-              edited([](json& d) { d["objects"][0] = {{"gltf", "models/nothing.glb"}}; }),
-              {"/objects/0/gltf: ", "models/nothing.glb: no such file"});
-  expectError("broken_gltf.json",
-              edited([](json& d) {
-                d["objects"][0] = {{"gltf", (kModels / "IndexOutOfRange/IndexOutOfRange.gltf").string()}};
+  expectError("missing_gltf.json", edited([](json& d) {
+                d["objects"][0] = {{"gltf", "models/nothing.glb"}};
               }),
-              {"/objects/0/gltf: ", "IndexOutOfRange.gltf: mesh 'Mesh' primitive 0: index 255"});
+              {"/objects/0/gltf: ", "models/nothing.glb: no such file"});
+  expectError(
+      "broken_gltf.json", edited([](json& d) {
+        d["objects"][0] = {{"gltf", (kModels / "IndexOutOfRange/IndexOutOfRange.gltf").string()}};
+      }),
+      {"/objects/0/gltf: ", "IndexOutOfRange.gltf: mesh 'Mesh' primitive 0: index 255"});
 }
 
-TEST_F(TempDir, SceneFileRelativePathsAndOverrides) {
+TEST_F(SceneFilesTemp, SceneFileRelativePathsAndOverrides) {
   TinyGltf t;
   const std::vector<unsigned char> bin = t.bin();
   fs::create_directories(dir_ / "models");
@@ -465,8 +499,12 @@ TEST_F(TempDir, SceneFileRelativePathsAndOverrides) {
                                 {"scale", 2},
                                 {"color", {1, 0, 0}},
                                 {"receiver_only", true}}})},
-      {"light", {{"center", {0, 4, 0}}, {"forward", {0, -1, 0}}, {"up", {0, 0.5, -1}},
-                 {"width", 1}, {"height", 2}}},
+      {"light",
+       {{"center", {0, 4, 0}},
+        {"forward", {0, -1, 0}},
+        {"up", {0, 0.5, -1}},
+        {"width", 1},
+        {"height", 2}}},
       {"camera", {{"position", {0, 3, 6}}, {"target", {0, 0, 0}}, {"fov_y_degrees", 30}}}};
   std::vector<std::string> warnings;
   const Scene scene = loadSceneFile(write("relative.json", doc.dump()), warnings);

@@ -1,0 +1,75 @@
+// Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): per eye pixel, bounds on the
+// occluder depths that any ray from the light to the receiver can meet, refined by
+// iterating Eq 3.3 over the N-buffer, and the class they imply:
+//   lit      receiver depth (minus the Eq 3.2 bias) <= zNearMin: nothing can block any ray;
+//   umbra    receiver depth (minus the bias) >= zNearMax: every ray ends behind the near
+//            layer (valid for a single-layer height field; off with three layers, §3.6);
+//   penumbra otherwise; outside: the receiver is not in the light's frustum.
+#include "shared/screen_pass.glsl"
+#include "shared/bias.glsl"
+#include "shared/nbuffer.glsl"
+#include "shared/classify.glsl"
+#include "shared/classes.h"
+#include "shared/classify_layout.h"
+layout(binding = 0) uniform sampler2D wsPositionTexture;
+layout(binding = 1) uniform sampler2D wsNormalTexture;
+layout(binding = 2) uniform sampler2DArray nbufferLevels;
+layout(binding = 0, r32f) uniform writeonly image2D maskImage;
+layout(binding = 1, rgba32f) uniform writeonly image2D zRangeImage;
+layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
+  ClassifyCounts counts;
+};
+layout(location = 1) uniform int uIterations;
+layout(location = 2) uniform bool uUmbraTest;
+layout(location = 3) uniform float uMinCosine;
+
+shared uint groupCounts[CLASSIFY_CLASS_COUNT];
+
+// Writes the bounds (zNearMin, zNearMax, zFarMax, receiver lsDepth) and returns the class.
+int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
+  ivec3 size = textureSize(nbufferLevels, 0);
+  // The coarsest level's window is the whole map: the starting bounds (§3.6).
+  vec3 bounds = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
+  vec3 map = lightMapCoords(wsPosition);
+  float receiverLsDepth = zToLsDepth(map.z);
+  zRange = vec4(bounds, receiverLsDepth);
+  bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
+                   && map.z > frame.lightDepthRange.x;
+  if (!insideMap) {
+    zRange.w = isinf(receiverLsDepth) || isnan(receiverLsDepth) ? 0.0 : receiverLsDepth;
+    return CLASS_OUTSIDE;
+  }
+  float bias = adaptiveBias(map.z, wsNormal, -frame.wsLightForward.xyz, uMinCosine);
+  float endLsDepth = zToLsDepth(map.z - bias);  // where the rays end (shortened by Eq 3.2)
+  for (int i = 0; i < uIterations && endLsDepth > bounds.x; ++i) {
+    ivec4 rect = reachableTexels(map.xy, map.z, lsDepthToZ(bounds.x), size.xy);
+    vec3 refined = nbufferBoundsOverRect(nbufferLevels, rect.xy, rect.zw);
+    // Each region lies inside the previous one, so every bound found so far still holds:
+    // keep the tightest (zNearMin monotone up, the maxima monotone down).
+    bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
+  }
+  zRange.xyz = bounds;
+  if (endLsDepth <= bounds.x) return CLASS_LIT;
+  if (uUmbraTest && endLsDepth >= bounds.y) return CLASS_UMBRA;
+  return CLASS_PENUMBRA;
+}
+
+void main() {
+  uint local = gl_LocalInvocationIndex;
+  if (local < uint(CLASSIFY_CLASS_COUNT)) groupCounts[local] = 0u;
+  barrier();
+  ivec2 pixel = screenPixel();
+  if (pixel.x >= 0) {
+    vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+    int pixelClass = CLASS_BACKGROUND;
+    vec4 zRange = vec4(0.0);  // background: no bounds
+    if (wsPosition.w > 0.0)
+      pixelClass = classify(wsPosition.xyz, texelFetch(wsNormalTexture, pixel, 0).xyz, zRange);
+    imageStore(maskImage, pixel, vec4(float(pixelClass)));
+    imageStore(zRangeImage, pixel, zRange);
+    atomicAdd(groupCounts[pixelClass], 1u);
+  }
+  barrier();
+  if (local < uint(CLASSIFY_CLASS_COUNT) && groupCounts[local] != 0u)
+    atomicAdd(counts.pixels[local], groupCounts[local]);
+}

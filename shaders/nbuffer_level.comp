@@ -1,0 +1,28 @@
+// N-buffer level n from level n-1 (thesis §3.5, Fig 3.6; layout in shared/nbuffer.glsl):
+// the level-n window of a texel is tiled by two level-(n-1) windows per axis, so 4 fetches
+// give its exact min/max. Windows are centered and shifted inward at the borders.
+#include "shared/nbuffer.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0, rgba32f) uniform readonly image2D finer;   // level n-1
+layout(binding = 1, rgba32f) uniform writeonly image2D coarser; // level n
+layout(location = 0) uniform int uLevel;                        // n >= 1
+
+void main() {
+  ivec2 size = imageSize(coarser);
+  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(texel, size))) return;
+  ivec2 lo = ivec2(nbufferWindow1D(uLevel, texel.x, size.x).x,
+                   nbufferWindow1D(uLevel, texel.y, size.y).x);
+  // The level-(n-1) texels whose windows start at lo and lo + 2^(n-1) (clamped to the map:
+  // where the map is narrower than 2^n both halves are shifted inward and still tile it).
+  int halfSpan = 1 << (uLevel - 1);
+  ivec2 first = min(lo + nbufferHalf(uLevel - 1), size - 1);
+  ivec2 second = min(lo + halfSpan + nbufferHalf(uLevel - 1), size - 1);
+  vec4 a = imageLoad(finer, first);
+  vec4 b = imageLoad(finer, ivec2(second.x, first.y));
+  vec4 c = imageLoad(finer, ivec2(first.x, second.y));
+  vec4 d = imageLoad(finer, second);
+  imageStore(coarser, texel, vec4(min(min(a.x, b.x), min(c.x, d.x)),
+                                  max(max(a.y, b.y), max(c.y, d.y)),
+                                  max(max(a.z, b.z), max(c.z, d.z)), 0.0));
+}

@@ -1,0 +1,66 @@
+// Linear and linear/binary search (thesis §2.2, §3.2-3.4): samples every `trace.bias.w`
+// texels along the projected ray.
+//   one layer:   a sample behind the near layer is a hit (§3.2; aliases, cannot refine);
+//   two layers:  a sample between near and far is a hit (§3.3);
+//   three layers: ... unless the eye sees that point (§3.4).
+// With binary refinement (linear_binary), a transition *to* an in-front-of state or *from*
+// a behind state between two samples may hide a crossing of the solid: bisect there
+// `trace.limits.y` times; if no hit is found, go on linearly from the farther sample (§3.3).
+
+struct LayerState { bool inFront, behind; };  // both: near > far (e.g. empty texel)
+
+LayerState layerState(vec2 layers, float depth) {
+  return LayerState(depth < layers.x, depth > layers.y);
+}
+bool isInside(LayerState state) { return !state.inFront && !state.behind; }
+bool isSuspicious(LayerState from, LayerState to) {
+  return (to.inFront && !from.inFront) || (from.behind && !to.behind);
+}
+
+// Whether the sample at s blocks the ray, and its state.
+bool sampleBlocks(Ray ray, float s, int layers, out LayerState state) {
+  vec2 layers2 = fetchLayers(texelAt(rayPoint(ray, s)));
+  float depth = rayLsDepth(ray, s);
+  state = layerState(layers2, depth);
+  if (layers == 1) return depth >= layers2.x;
+  if (!isInside(state)) return false;
+  return layers == 2 || hiddenFromEye(rayWorldPoint(ray, s));
+}
+
+bool searchLinear(Ray ray, float sStart, float sEnd, int layers, bool refine) {
+  float lengthTexels = length(ray.d) * (sEnd - sStart);
+  int steps = clamp(int(ceil(lengthTexels / trace.bias.w)), 1, trace.limits.x);
+  float ds = (sEnd - sStart) / float(steps);
+  LayerState previous;
+  float sPrevious = sStart;
+  bool blocked = sampleBlocks(ray, sStart, layers, previous);
+  for (int k = 0; k <= steps; ++k) {
+    gIterations += 1u;
+    float s = k == 0 ? sStart : sStart + float(k) * ds;
+    LayerState current;
+    if (k > 0) blocked = sampleBlocks(ray, s, layers, current);
+    else current = previous;
+    recordStep(-1, blocked ? STEP_HIT : STEP_SAMPLE, k, ivec4(texelAt(rayPoint(ray, s)), texelAt(rayPoint(ray, s))),
+               vec4(0.0, 0.0, rayLsDepth(ray, s), rayLsDepth(ray, s)), vec4(sPrevious, s, rayPoint(ray, s)));
+    if (blocked) return true;
+    if (refine && k > 0 && layers >= 2 && isSuspicious(previous, current)) {
+      float lo = sPrevious, hi = s;
+      LayerState loState = previous;
+      for (int i = 0; i < trace.limits.y; ++i) {
+        float mid = 0.5 * (lo + hi);
+        LayerState midState;
+        bool midBlocks = sampleBlocks(ray, mid, layers, midState);
+        recordStep(-1, midBlocks ? STEP_HIT : STEP_REFINE, k, ivec4(texelAt(rayPoint(ray, mid)), texelAt(rayPoint(ray, mid))),
+                   vec4(0.0, 0.0, rayLsDepth(ray, mid), rayLsDepth(ray, mid)), vec4(lo, mid, rayPoint(ray, mid)));
+        if (midBlocks) return true;
+        // Keep the half that still holds the suspicious transition.
+        if (isSuspicious(loState, midState)) hi = mid;
+        else { lo = mid; loState = midState; }
+      }
+    }
+    previous = current;
+    sPrevious = s;
+  }
+  recordStep(-1, STEP_MISS, steps, ivec4(-1), vec4(0.0), vec4(sEnd, sEnd, rayPoint(ray, sEnd)));
+  return false;
+}

@@ -1,0 +1,56 @@
+// Layouts of the trace stage, read by C++ (app/gpu_layout_trace.h) and GLSL.
+// std140 uniform block TraceBlock at binding 1; std430 storage buffers: per-pixel step
+// records at binding 0, totals at binding 1. Only 16-byte members (see frame_block.h).
+
+#define SEARCH_LINEAR 0
+#define SEARCH_LINEAR_BINARY 1
+#define SEARCH_HIERARCHICAL 2
+
+#define SAMPLING_JITTERED 0
+#define SAMPLING_RANDOM 1
+
+// Decisions in a step record (the visualizer draws them; tests add them up).
+#define STEP_DESCEND 0      // hierarchical: the window may hold an occluder: go finer
+#define STEP_ADVANCE 1      // hierarchical: nothing in the window: step past it
+#define STEP_ASCEND 2       // (recorded with ADVANCE: the next window is coarser)
+#define STEP_HIT 3          // the ray is blocked (terminal)
+#define STEP_MISS 4         // the ray reached its end (terminal)
+#define STEP_EARLY_BACKFACE 5  // terminal: the light sample is behind the surface (§3.7)
+#define STEP_EARLY_INSIDE 6    // terminal: the end point is inside a solid (§3.7)
+#define STEP_EARLY_REGION 7    // terminal: the ray's region holds no occluder (§3.7)
+#define STEP_SAMPLE 8          // linear: one sample along the ray
+#define STEP_REFINE 9          // binary refinement sample
+#define STEP_EYE_VISIBLE 10    // three layers: inside the volume but seen by the eye: free
+#define STEP_CLASSIFIED 11     // terminal for all rays: classify said lit or umbra (§3.6)
+
+// Totals (binding 1), indices:
+#define TOTAL_RAYS 0          // rays set up (n x n per traced pixel)
+#define TOTAL_RAYS_SEARCHED 1 // rays that reached a search loop
+#define TOTAL_FETCHES 2       // texel fetches in early outs and searches
+#define TOTAL_ITERATIONS 3    // search loop iterations
+#define TOTAL_EARLY_BACKFACE 4
+#define TOTAL_EARLY_INSIDE 5
+#define TOTAL_EARLY_REGION 6
+#define TOTAL_PIXELS_CLASSIFIED 7  // pixels spared by classification
+#define TOTAL_ITERATION_CAP 8      // rays stopped by the iteration cap (should stay 0)
+#define TOTAL_COUNT 12
+
+struct TraceParams {
+  ivec4 config;    // x = rays per side n, y = sampling, z = search, w = layers (1, 2, 3)
+  ivec4 switches;  // x = early out backface, y = early out inside, z = early out region,
+                   // w = shorten rays (§3.7)
+  ivec4 limits;    // x = iteration cap, y = binary refinement steps, z = hash function,
+                   // w = use classification (skip lit / umbra pixels)
+  vec4 bias;       // x = constant bias (world), y = adaptive Eq 3.2 (0/1), z = min cosine,
+                   // w = linear step (texels)
+  ivec4 record;    // xy = pixel whose steps are recorded (-1: none), z = record capacity,
+                   // w = N-buffer top level
+  vec4 eye;        // x = eye-visibility tolerance (world units, three layers), yzw unused
+};
+
+struct TraceStep {
+  ivec4 header;   // x = ray index, y = level (-1: none), z = decision (STEP_*), w = iteration
+  ivec4 window;   // texel rectangle x0, y0, x1, y1 (inclusive) of the visited window
+  vec4 depths;    // x = zNearMin, y = zFarMax (window), z, w = ray lsDepth at entry / exit
+  vec4 stepping;  // x = s before, y = s after, zw = texel-space point at s after
+};

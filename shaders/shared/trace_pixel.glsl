@@ -1,0 +1,119 @@
+// Visibility of the light from one receiver point: n x n rays to random points of the
+// light (§3.1), each with the early outs of §3.7, shortened (§3.7, Fig 3.9) and searched
+// (§3.3-3.5). Shared by the deferred compute pass and the forward raster pass.
+#include "trace_ray.glsl"
+#include "eye_layer.glsl"
+#include "bias.glsl"
+#include "hash.glsl"
+#include "search_hierarchical.glsl"
+#include "search_linear.glsl"
+
+// Light sample in [0,1)^2 over the light: seeded by the screen coordinates and the ray
+// index, scrambled by the frame key (Appendix A); jittered: one sample per grid cell (§3.1).
+vec2 lightSampleUnit(ivec2 pixel, int rayIndex, int raysPerSide) {
+  uvec4 bits = hashRand(uvec4(uint(pixel.x), uint(pixel.y), uint(rayIndex), 0u), frame.keys.x,
+                        trace.limits.z);
+  vec2 r = toUnitSquare(bits.xy);
+  if (trace.config.y == SAMPLING_RANDOM) return r;
+  return (vec2(rayIndex % raysPerSide, rayIndex / raysPerSide) + r) / float(raysPerSide);
+}
+
+vec3 lightSampleWorld(vec2 unit) {
+  return frame.wsLightCenter.xyz + (2.0 * unit.x - 1.0) * frame.wsLightRight.w * frame.wsLightRight.xyz
+                                 + (2.0 * unit.y - 1.0) * frame.wsLightUp.w * frame.wsLightUp.xyz;
+}
+
+// Early out "the ray's region holds no occluder" (§3.7): one N-buffer fetch at the level
+// whose window covers the ray's whole projection.
+bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
+  vec2 p0 = rayPoint(ray, sStart), p1 = rayPoint(ray, sEnd);
+  ivec2 lo = texelAt(min(p0, p1)), hi = texelAt(max(p0, p1));
+  int span = max(hi.x - lo.x, hi.y - lo.y) + 1;
+  int level = min(int(ceil(log2(float(span)))), trace.record.w);
+  ivec2 size = ivec2(frame.sizes.zw);
+  ivec2 texel = ivec2(nbufferTexelForWindow(level, lo.x, size.x),
+                      nbufferTexelForWindow(level, lo.y, size.y));
+  vec4 bounds = fetchNBuffer(texel, level);
+  float depthIn = rayLsDepth(ray, sStart), depthOut = rayLsDepth(ray, sEnd);
+  float farBound = layers == 1 ? 1.0 : bounds.z;
+  return depthOut < bounds.x || depthIn > farBound;
+}
+
+struct RayCounts { uint searched, backface, inside, region; };
+
+// zBounds: (zNearMin, zFarMax) over every texel any of this point's rays can cross
+// (classify's Eq 3.3 region; the whole map where no classification ran).
+float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
+                      inout RayCounts counts) {
+  int raysPerSide = trace.config.x, layers = trace.config.w, search = trace.config.z;
+  int rayCount = raysPerSide * raysPerSide;
+  int unblocked = 0;
+  float receiverZ = lightMapCoords(wsPosition).z;
+  for (int i = 0; i < rayCount; ++i) {
+    gRayIndex = i;
+    // 1. The ray: light sample -> receiver, shortened at the receiver by the bias (Eq 3.2).
+    vec3 wsLightSample = lightSampleWorld(lightSampleUnit(pixel, i, raysPerSide));
+    vec3 toLight = wsLightSample - wsPosition;
+    float distanceToLight = length(toLight);
+    vec3 direction = toLight / max(distanceToLight, 1e-20);
+    if (trace.switches.x != 0 && dot(wsNormal, direction) <= 0.0) {
+      counts.backface += 1u;
+      recordStep(-1, STEP_EARLY_BACKFACE, 0, ivec4(-1), vec4(0.0), vec4(0.0));
+      continue;  // 2. early out: the sample is behind the surface (§3.7)
+    }
+    float bias = trace.bias.x;
+    if (trace.bias.y != 0.0) bias += adaptiveBias(receiverZ, wsNormal, direction, trace.bias.z);
+    vec3 wsEnd = wsPosition + direction * min(bias, 0.999 * distanceToLight);
+    Ray ray = makeRay(wsLightSample, wsEnd);
+    float sStart = 0.0, sEnd = 1.0;
+    if (ray.invZb >= ray.invZa || !clipToMap(ray, sStart, sEnd)) {
+      ++unblocked;  // not beyond the light plane, or outside the map: nothing known blocks it
+      recordStep(-1, STEP_MISS, 0, ivec4(-1), vec4(0.0), vec4(0.0));
+      continue;
+    }
+    // 3. early out: the end point inside a solid (§3.7), one level-0 fetch.
+    if (trace.switches.y != 0) {
+      vec2 endLayers = fetchLayers(texelAt(rayPoint(ray, sEnd)));
+      float endDepth = rayLsDepth(ray, sEnd);
+      bool inside = layers == 1 ? endDepth >= endLayers.x
+                                : endDepth >= endLayers.x && endDepth <= endLayers.y &&
+                                      (layers == 2 || hiddenFromEye(wsEnd));
+      if (inside) {
+        counts.inside += 1u;
+        recordStep(0, STEP_EARLY_INSIDE, 0, ivec4(texelAt(rayPoint(ray, sEnd)), texelAt(rayPoint(ray, sEnd))),
+                   vec4(endLayers, endDepth, endDepth), vec4(sEnd, sEnd, rayPoint(ray, sEnd)));
+        continue;
+      }
+    }
+    // 4. Ray shortening to [zNearMin, zFarMax] (§3.7, Fig 3.9); one layer keeps its far end
+    //    (behind the near layer is solid however deep).
+    if (trace.switches.w != 0) {
+      sStart = max(sStart, raySAtLsDepth(ray, zBounds.x));
+      if (layers >= 2) sEnd = min(sEnd, raySAtLsDepth(ray, zBounds.y));
+    }
+    // 5. early out: nothing in the ray's region can block it (§3.7).
+    if (sStart > sEnd || (trace.switches.z != 0 && regionIsEmpty(ray, sStart, sEnd, layers))) {
+      counts.region += 1u;
+      ++unblocked;
+      recordStep(-1, STEP_EARLY_REGION, 0, ivec4(-1), vec4(0.0), vec4(sStart, sEnd, rayPoint(ray, sEnd)));
+      continue;
+    }
+    // 6. The search.
+    counts.searched += 1u;
+    bool blocked = search == SEARCH_HIERARCHICAL
+                       ? searchHierarchical(ray, sStart, sEnd, layers)
+                       : searchLinear(ray, sStart, sEnd, layers, search == SEARCH_LINEAR_BINARY);
+    if (!blocked) ++unblocked;
+  }
+  return float(unblocked) / float(rayCount);
+}
+
+void addTotals(RayCounts counts, uint rays) {
+  atomicAdd(totals[TOTAL_RAYS], rays);
+  atomicAdd(totals[TOTAL_RAYS_SEARCHED], counts.searched);
+  atomicAdd(totals[TOTAL_FETCHES], gFetches);
+  atomicAdd(totals[TOTAL_ITERATIONS], gIterations);
+  atomicAdd(totals[TOTAL_EARLY_BACKFACE], counts.backface);
+  atomicAdd(totals[TOTAL_EARLY_INSIDE], counts.inside);
+  atomicAdd(totals[TOTAL_EARLY_REGION], counts.region);
+}

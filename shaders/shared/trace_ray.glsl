@@ -1,0 +1,94 @@
+// Rays from a receiver to points on the light, in the light's texel space (thesis §3,
+// §3.3). A ray runs from A (the light sample: on the near plane, lsDepth 0) to B (the
+// receiver, moved towards the light by the bias). Texel space is uv * map size; texel
+// (i, j) covers [i, i+1) x [j, j+1). Along the projected segment P(s) = A + s (B - A),
+// s in [0, 1], perspective makes 1/z affine in s, so a ray's lsDepth is monotone in s and
+// is computed exactly at any s (no world/texture stepping drift, cf. §3.5's remark).
+#include "frame.glsl"
+#include "nbuffer.glsl"
+#include "trace_layout.h"
+
+layout(std140, binding = 1) uniform TraceBlock { TraceParams trace; };
+layout(std430, binding = 0) buffer TraceRecords { uvec4 recordHeader; TraceStep records[]; };
+layout(std430, binding = 1) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
+
+layout(binding = 2) uniform sampler2D nearLayer;
+layout(binding = 3) uniform sampler2D farLayer;
+layout(binding = 4) uniform sampler2DArray nbufferLevels;
+
+struct Ray {
+  vec2 a, d;            // texel space start and direction (B - A)
+  float invZa, invZb;   // 1 / linear depth at A and B
+  vec3 wsA, wsB;        // world end points (three layers need world points)
+};
+
+// Statistics and recording state of the current invocation.
+uint gFetches = 0u, gIterations = 0u;
+bool gRecording = false;
+int gRayIndex = 0;
+
+void recordStep(int level, int decision, int iteration, ivec4 window, vec4 depths,
+                vec4 stepping) {
+  if (!gRecording) return;
+  uint slot = atomicAdd(recordHeader.x, 1u);
+  if (slot >= uint(trace.record.z)) return;
+  records[slot].header = ivec4(gRayIndex, level, decision, iteration);
+  records[slot].window = window;
+  records[slot].depths = depths;
+  records[slot].stepping = stepping;
+}
+
+vec2 mapSize() { return vec2(frame.sizes.zw); }
+
+vec2 rayPoint(Ray ray, float s) { return ray.a + s * ray.d; }
+float rayLsDepth(Ray ray, float s) { return zToLsDepth(1.0 / mix(ray.invZa, ray.invZb, s)); }
+// The s at which the ray reaches lsDepth (inverse of rayLsDepth; unclamped).
+float raySAtLsDepth(Ray ray, float lsDepth) {
+  float invZ = 1.0 / lsDepthToZ(lsDepth);
+  return (invZ - ray.invZa) / (ray.invZb - ray.invZa);
+}
+// World point at s: z is affine in the world parameter t, so t = (z(s) - zA) / (zB - zA).
+vec3 rayWorldPoint(Ray ray, float s) {
+  float zA = 1.0 / ray.invZa, zB = 1.0 / ray.invZb;
+  float t = (1.0 / mix(ray.invZa, ray.invZb, s) - zA) / (zB - zA);
+  return mix(ray.wsA, ray.wsB, t);
+}
+
+Ray makeRay(vec3 wsLightSample, vec3 wsEnd) {
+  vec3 a = lightMapCoords(wsLightSample), b = lightMapCoords(wsEnd);
+  Ray ray;
+  ray.a = a.xy * mapSize();
+  ray.d = b.xy * mapSize() - ray.a;
+  ray.invZa = 1.0 / a.z;
+  ray.invZb = 1.0 / b.z;
+  ray.wsA = wsLightSample;
+  ray.wsB = wsEnd;
+  return ray;
+}
+
+// Clips [s0, s1] to the part of the segment inside the map [0, W] x [0, H] (slab test).
+// Returns false when nothing is left: outside the map there are no occluders.
+bool clipToMap(Ray ray, inout float s0, inout float s1) {
+  vec2 size = mapSize();
+  for (int axis = 0; axis < 2; ++axis) {
+    if (abs(ray.d[axis]) < 1e-12) {
+      if (ray.a[axis] < 0.0 || ray.a[axis] > size[axis]) return false;
+      continue;
+    }
+    float t0 = (0.0 - ray.a[axis]) / ray.d[axis], t1 = (size[axis] - ray.a[axis]) / ray.d[axis];
+    s0 = max(s0, min(t0, t1));
+    s1 = min(s1, max(t0, t1));
+  }
+  return s0 <= s1;
+}
+
+ivec2 texelAt(vec2 p) { return clamp(ivec2(floor(p)), ivec2(0), ivec2(frame.sizes.zw) - 1); }
+
+vec2 fetchLayers(ivec2 texel) {
+  gFetches += 2u;
+  return vec2(texelFetch(nearLayer, texel, 0).r, texelFetch(farLayer, texel, 0).r);
+}
+vec4 fetchNBuffer(ivec2 texel, int level) {
+  gFetches += 1u;
+  return texelFetch(nbufferLevels, ivec3(texel, level), 0);
+}
