@@ -11,6 +11,7 @@
 #include "hash_batch.h"
 #include "hash_command.h"
 #include "scene_builtin.h"
+#include "support/command.h"
 #include "support/gl_test.h"
 #include "support/md5_reference.h"
 
@@ -55,12 +56,13 @@ TEST(Md5Reference, Md5Rand64IsMd5OfTheSeedBytes) {
 
 // The first outputs of the thesis hash for the linear seeds the thesis tested (§3.1), key 0.
 // Computed once with md5ref::md5Rand16 (the table transcription of Appendix A) and pasted;
+// a separate line-by-line Python transcription of the listing gave the same words, and
 // HashGpu.ThesisHashLiteralsOnTheGpu checks the same constants against the shader.
 const glm::uvec4 kMd5Rand16Linear[4] = {
-    {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u},
-    {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u},
-    {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u},
-    {0x00000000u, 0x00000000u, 0x00000000u, 0x00000000u},
+    {0xfc6c0fb3u, 0xfd47b408u, 0x04f5305du, 0xef967456u},  // seed (1, 0, 0, 0)
+    {0x5c632b5au, 0x0a73181eu, 0x249c8849u, 0xe8c6c1b1u},  // seed (2, 0, 0, 0)
+    {0x5db2b7c1u, 0x6ab811c6u, 0xf543b9a2u, 0xb2c7c5fcu},  // seed (3, 0, 0, 0)
+    {0x81b2ca1du, 0x4cd7ca1fu, 0x3527af34u, 0x189e03adu},  // seed (4, 0, 0, 0)
 };
 
 TEST(Md5Reference, ThesisHashLiterals) {
@@ -203,12 +205,28 @@ TEST(HashCommand, BadOptionsAreRejectedNamingTheValidHashes) {
   EXPECT_EQ(checkHashOptions(options), "");
 }
 
+// The wired subcommand: the first two hashes of the stream are the literals above, as
+// little-endian bytes on stdout; a bad name exits 2 listing the valid ones.
+TEST(HashCommand, CliWritesLittleEndianWordsAndRejectsUnknownHashes) {
+  const auto result = runPenumbra("hash --hash md5_16 --count 2");
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::string expected;
+  for (int i = 0; i < 2; ++i)
+    for (int w = 0; w < 4; ++w)
+      for (int byte = 0; byte < 4; ++byte) expected += char(kMd5Rand16Linear[i][w] >> (8 * byte));
+  EXPECT_EQ(result.output, expected);  // stdout and stderr together: nothing else printed
+
+  const auto bad = runPenumbra("hash --hash sha1 --count 2");
+  EXPECT_EQ(bad.exitCode, 2);
+  for (const char* name : kHashKindNames) EXPECT_NE(bad.output.find(name), std::string::npos) << bad.output;
+}
+
 // The stage: every pixel's first light sample is toUnitSquare(hash((x, y, 0, 0), key).xy),
 // finite and in [0,1); ~10^5 samples average near 1/2 (standard error 0.29 / sqrt(10^5)
 // ~ 0.001); a new frame key changes (almost) every pixel.
 TEST(HashStage, SamplesAreTheHashOfThePixelInTheUnitSquare) {
   const int width = 320, height = 320;
-  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=64"}, width, height);
+  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=128"}, width, height);
   for (HashKind kind : kAllKinds) {
     const std::string name = kHashKindNames[int(kind)];
     ASSERT_EQ(run.pipeline->set(std::string("hash.function=") + name), "");

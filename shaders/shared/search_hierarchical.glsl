@@ -48,6 +48,10 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
   vec2 extent = abs(ray.d) * (sEnd - sStart);
   int level = clamp(int(ceil(log2(max(extent.x, extent.y) + 2.0))), 0, topLevel);
   float s = sStart;
+  // The ray's depth at s, carried rather than recomputed: after advancing to the crossing
+  // with zNearMin it is exactly zNearMin, which rayLsDepth(s) might miss by a rounding step
+  // (and so miss a zero-thickness sheet, near == far).
+  float depthAtS = rayLsDepth(ray, s);
   ivec2 cell = texelAt(rayPoint(ray, s));
   for (int iteration = 0; iteration < trace.limits.x; ++iteration) {
     gIterations += 1u;
@@ -57,7 +61,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
     if (layers == 1) bounds.z = 1.0;  // one layer: everything behind the near layer is solid
     bvec2 exitAxes;
     float sExit = min(windowExit(ray, window, exitAxes), sEnd);
-    float depthIn = rayLsDepth(ray, s), depthOut = rayLsDepth(ray, sExit);
+    float depthIn = depthAtS, depthOut = rayLsDepth(ray, sExit);
     bool mayHit = depthOut >= bounds.x && depthIn <= bounds.z;
     if (mayHit && level == 0) {
       bool hit = !threeLayers;
@@ -75,6 +79,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
       float sBefore = s;
       if (depthIn < bounds.x) {
         s = clamp(raySAtLsDepth(ray, bounds.x), s, sExit);
+        depthAtS = bounds.x;
         ivec2 moved = texelAt(rayPoint(ray, s));
         cell = clamp(moved, window.xy, window.zw);
       }
@@ -100,6 +105,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
       return false;  // left the map: nothing beyond
     }
     s = sExit;
+    depthAtS = depthOut;
     cell = next;
     level = min(level + 1, topLevel);
   }

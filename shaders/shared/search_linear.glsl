@@ -3,9 +3,12 @@
 //   one layer:   a sample behind the near layer is a hit (§3.2; aliases, cannot refine);
 //   two layers:  a sample between near and far is a hit (§3.3);
 //   three layers: ... unless the eye sees that point (§3.4).
-// With binary refinement (linear_binary), a transition *to* an in-front-of state or *from*
-// a behind state between two samples may hide a crossing of the solid: bisect there
-// `trace.limits.y` times; if no hit is found, go on linearly from the farther sample (§3.3).
+// With binary refinement (linear_binary), a state change between two samples that may hide
+// a crossing of the solid is bisected `trace.limits.y` times; if no hit is found, the
+// search goes on linearly from the farther sample (§3.3). The thesis names transitions *to*
+// an in-front state or *from* a behind state, walking from the receiver towards the light;
+// we walk from the light (depth increasing), so the same transitions read backwards: *from*
+// in front, or *to* behind.
 
 struct LayerState { bool inFront, behind; };  // both: near > far (e.g. empty texel)
 
@@ -14,7 +17,7 @@ LayerState layerState(vec2 layers, float depth) {
 }
 bool isInside(LayerState state) { return !state.inFront && !state.behind; }
 bool isSuspicious(LayerState from, LayerState to) {
-  return (to.inFront && !from.inFront) || (from.behind && !to.behind);
+  return (from.inFront && !to.inFront) || (to.behind && !from.behind);
 }
 
 // Whether the sample at s blocks the ray, and its state.

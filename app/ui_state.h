@@ -1,0 +1,98 @@
+// The window's model: scene, pipeline, frame, the two views, the pick, and the actions the
+// panels and `--script` share (select, set, pick, load scene). No ImGui here, so every
+// action a click performs can also be performed by a script line.
+#pragma once
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frame.h"
+#include "pipeline.h"
+#include "scene.h"
+#include "texture_view.h"
+#include "ui_trace_panel.h"
+#include "ui_view_settings.h"
+#include "ui_view_transform.h"
+
+// One texture view of the centre area.
+struct ViewPanel {
+  std::string output;         // "stage.output" shown
+  bool locked = false;        // a locked view ignores selections in the pipeline panel
+  ViewSettings settings;
+  std::string settingsFor;    // the output `settings` were initialised from
+  ViewTransform transform;
+  bool fitPending = true;     // fit on the next draw (new output, new size, "Fit")
+  bool autofitPending = false;
+  glm::vec2 regionSize{0, 0};  // the image region drawn last frame (screen pixels)
+  TextureView renderer;
+};
+
+// Eye image size: follows the view (one texel per screen pixel) or fixed.
+struct EyeSize {
+  bool fitView = true;
+  int width = 640, height = 480;
+};
+
+class UiState {
+public:
+  UiState();  // records the declared parameter defaults (for export names)
+
+  // 1. Scene and pipeline. Frame refers to `scene`, which is replaced in place.
+  std::string sceneSource = "cube";
+  Scene scene;
+  Pipeline pipeline;
+  std::unique_ptr<GpuScene> gpuScene;
+  std::unique_ptr<Frame> frame;
+  EyeSize eye;
+  std::string renderer;  // GL renderer string, for run.json
+  std::map<std::string, double> parameterDefaults;  // "stage.key" -> declared default
+
+  // 2. Views, selection, pick.
+  ViewPanel views[2];
+  int activeView = 0;
+  bool twoViews = false;
+  std::string selectedStage;
+  std::optional<glm::ivec2> pick;  // texel picked, in a texture of size `pickSpace`
+  glm::ivec2 pickSpace{0, 0};
+  int selectedRay = 0;
+  std::vector<ViewOverlayRect> overlayRects;  // drawn by views of matching size
+
+  // 3. Run control and messages.
+  bool dirty = true;           // the pipeline must run (parameters, camera, light, size...)
+  bool runEveryFrame = false;  // for timing: ignore `dirty`
+  bool previewing = false;     // camera moving: eye at half resolution
+  std::string status;          // the status line: what happened last
+  std::string shaderLog;       // last failed hot reload
+  bool showHelp = false, showShaderLog = false;
+  std::string screenshotRequest;  // saved at the end of this frame (script, key)
+
+  // 4. Timing: recent pipeline runs and frame intervals.
+  std::deque<std::vector<StageTime>> recentTimes;
+  std::deque<double> frameSeconds;
+  int pipelineRuns = 0;
+
+  // Actions. Each returns "" or a message naming what is valid.
+  std::string loadScene(const std::string& source);  // keeps the old scene on failure
+  std::string selectOutput(const std::string& stageDotOutput);  // into the active view
+  std::string selectStage(const std::string& stage);  // and its first output
+  std::string setParameter(const std::string& stageDotKey, const std::string& value);
+  void setPick(glm::ivec2 texel, glm::ivec2 space);
+  void movePick(glm::ivec2 delta);
+  bool reloadShaders();  // ShaderProgram::reloadAll; keeps the last good programs on error
+
+  // The view a pipeline-panel selection goes to: the active one unless locked.
+  ViewPanel* selectionTarget();
+  const Output* outputOf(const std::string& stageDotOutput) const;
+  std::vector<std::string> outputKeys() const;  // every declared output, in pipeline order
+
+  // Runs the pipeline if dirty (or runEveryFrame) at the eye size for `viewRegion`.
+  // Returns true if it ran.
+  bool runIfNeeded(glm::ivec2 viewRegion);
+  double medianStageMs(const std::string& stage) const;
+  double medianPipelineMs() const;
+  double framesPerSecond() const;
+  void recordFrameInterval(double seconds);
+};

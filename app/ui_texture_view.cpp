@@ -1,0 +1,201 @@
+#include "ui_texture_view.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include "ui_camera.h"
+#include "ui_state.h"
+#include "ui_view_toolbar.h"
+
+namespace {
+
+glm::vec2 toGlm(ImVec2 v) { return {v.x, v.y}; }
+ImVec2 toIm(glm::vec2 v) { return {v.x, v.y}; }
+
+// Screen rectangle of the inclusive texel window [lo, hi].
+void texelRect(const ViewTransform& t, glm::ivec2 lo, glm::ivec2 hi, glm::vec2 origin,
+               glm::vec2 size, ImVec2& topLeft, ImVec2& bottomRight) {
+  topLeft = toIm(t.screenFromTexel({float(lo.x), float(hi.y + 1)}, origin, size));
+  bottomRight = toIm(t.screenFromTexel({float(hi.x + 1), float(lo.y)}, origin, size));
+}
+
+// 1. Settings follow the output; the transform follows the texture's size.
+void prepareView(UiState& state, ViewPanel& view, const GlTexture& texture,
+                 glm::vec2 regionSize, glm::ivec2& lastSize) {
+  if (view.settingsFor != view.output) {
+    if (const Output* output = state.outputOf(view.output))
+      view.settings = defaultViewSettings(*output, texture.channelCount());
+    view.settingsFor = view.output;
+    view.fitPending = true;
+  }
+  const glm::ivec2 size{texture.width(), texture.height()};
+  if (view.fitPending || lastSize.x == 0) {
+    view.transform.fit(glm::vec2(size), regionSize);
+    view.fitPending = false;
+  } else if (size != lastSize) {  // same picture at another resolution (preview, resize)
+    const float ratio = float(size.x) / float(lastSize.x);
+    view.transform.zoom /= ratio;
+    view.transform.center *= glm::vec2(size) / glm::vec2(lastSize);
+  }
+  lastSize = size;
+  if (view.autofitPending) {
+    autofitView(view, texture);
+    view.autofitPending = false;
+  }
+}
+
+// 2. Image, texel grid, overlay rectangles, pick marker, all clipped to the region.
+void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& display,
+               glm::vec2 origin, glm::vec2 regionSize) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ViewTransform& t = view.transform;
+  const glm::ivec2 size{display.width(), display.height()};
+  draw->PushClipRect(toIm(origin), toIm(origin + regionSize), true);
+  draw->AddRectFilled(toIm(origin), toIm(origin + regionSize), IM_COL32(24, 24, 28, 255));
+  ImVec2 topLeft, bottomRight;
+  texelRect(t, {0, 0}, size - 1, origin, regionSize, topLeft, bottomRight);
+  // GL row 0 is the bottom row: v = 1 at the top of the screen.
+  draw->AddImage(reinterpret_cast<ImTextureID>(std::uintptr_t(display.id())), topLeft,
+                 bottomRight, {0, 1}, {1, 0});
+  if (t.zoom >= kGridZoom) {
+    glm::ivec2 lo, hi;
+    t.visibleTexels(regionSize, size, lo, hi);
+    const ImU32 grid = IM_COL32(128, 128, 128, 90);
+    for (int x = lo.x; x <= hi.x; ++x)
+      draw->AddLine(toIm(t.screenFromTexel({float(x), float(lo.y)}, origin, regionSize)),
+                    toIm(t.screenFromTexel({float(x), float(hi.y)}, origin, regionSize)), grid);
+    for (int y = lo.y; y <= hi.y; ++y)
+      draw->AddLine(toIm(t.screenFromTexel({float(lo.x), float(y)}, origin, regionSize)),
+                    toIm(t.screenFromTexel({float(hi.x), float(y)}, origin, regionSize)), grid);
+  }
+  for (const ViewOverlayRect& rect : state.overlayRects)
+    if (rect.space == size) {
+      texelRect(t, rect.lo, rect.hi, origin, regionSize, topLeft, bottomRight);
+      draw->AddRect(topLeft, bottomRight, rect.color, 0, 0, 1.5f);
+    }
+  if (state.pick && state.pickSpace == size) {
+    texelRect(t, *state.pick, *state.pick, origin, regionSize, topLeft, bottomRight);
+    const ImVec2 centre{0.5f * (topLeft.x + bottomRight.x), 0.5f * (topLeft.y + bottomRight.y)};
+    const float arm = std::max(6.0f, 0.5f * (bottomRight.x - topLeft.x) + 4);
+    draw->AddRect(topLeft, bottomRight, IM_COL32(255, 255, 0, 255));
+    draw->AddLine({centre.x - arm - 6, centre.y}, {centre.x - arm, centre.y}, IM_COL32(255, 255, 0, 255), 2);
+    draw->AddLine({centre.x + arm, centre.y}, {centre.x + arm + 6, centre.y}, IM_COL32(255, 255, 0, 255), 2);
+    draw->AddLine({centre.x, centre.y - arm - 6}, {centre.x, centre.y - arm}, IM_COL32(255, 255, 0, 255), 2);
+    draw->AddLine({centre.x, centre.y + arm}, {centre.x, centre.y + arm + 6}, IM_COL32(255, 255, 0, 255), 2);
+  }
+  draw->PopClipRect();
+}
+
+// 3. Mouse over the image region (an invisible button owns it).
+bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 origin,
+                 glm::vec2 regionSize) {
+  ImGuiIO& io = ImGui::GetIO();
+  const bool hovered = ImGui::IsItemHovered();
+  const glm::vec2 mouse = toGlm(io.MousePos);
+  bool movingCamera = false;
+  if (hovered && io.MouseWheel != 0) {
+    if (io.KeyCtrl) {
+      dollyCamera(state.scene.camera, std::pow(0.9f, io.MouseWheel));
+      state.dirty = true;
+    } else {
+      view.transform.zoomAbout(std::pow(1.25f, io.MouseWheel), mouse, origin, regionSize);
+    }
+  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+    view.transform.pan(toGlm(io.MouseDelta));
+  if (ImGui::IsItemDeactivated() && !ImGui::IsMouseDragPastThreshold(ImGuiMouseButton_Left) &&
+      hovered)
+    state.setPick(view.transform.texelAt(mouse, origin, regionSize), size);
+  const glm::vec2 delta = toGlm(io.MouseDelta);
+  const bool rightDrag = ImGui::IsItemActive() || hovered;
+  if (rightDrag && ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+    movingCamera = true;
+    if (io.KeyShift) panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
+    else orbitCamera(state.scene.camera, -delta.x * 0.01f, -delta.y * 0.01f);
+    if (delta != glm::vec2(0)) state.dirty = true;
+  }
+  if (rightDrag && ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
+    movingCamera = true;
+    panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
+    if (delta != glm::vec2(0)) state.dirty = true;
+  }
+  return movingCamera;
+}
+
+// 4. The readout line: hovered texel (else the pick) with its raw values.
+void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& texture,
+                 std::optional<glm::ivec2> hover) {
+  const glm::ivec2 size{texture.width(), texture.height()};
+  std::optional<glm::ivec2> at = hover;
+  const char* what = "hover";
+  if (!at && state.pick && state.pickSpace == size) {
+    at = state.pick;
+    what = "pick";
+  }
+  if (!at || at->x < 0 || at->y < 0 || at->x >= size.x || at->y >= size.y) {
+    ImGui::TextDisabled("%dx%d%s  click: pick, drag: pan, wheel: zoom, right drag: orbit", size.x,
+                        size.y, texture.isArray() ? " (array)" : "");
+    return;
+  }
+  const std::array<float, 4> texel = readTexel(texture, at->x, at->y, view.settings.layer);
+  const Output* output = state.outputOf(view.output);
+  std::string text;
+  char value[64];
+  for (int c = 0; c < texture.channelCount(); ++c) {
+    const std::string name =
+        output && size_t(c) < output->channels.size() ? output->channels[size_t(c)] : "RGBA"s.substr(size_t(c), 1);
+    std::snprintf(value, sizeof value, "%s%s=%.6g", c ? "  " : "", name.c_str(), texel[size_t(c)]);
+    text += value;
+  }
+  ImGui::Text("%s (%d, %d): %s", what, at->x, at->y, text.c_str());
+}
+
+}  // namespace
+
+// 5. Child window: toolbar, image region, readout.
+bool drawTextureView(UiState& state, int index, ImVec2 size) {
+  using namespace std::string_literals;
+  ViewPanel& view = state.views[index];
+  static glm::ivec2 lastSizes[2];
+  const bool active = state.activeView == index && state.twoViews;
+  if (active) ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(230, 180, 60, 255));
+  ImGui::BeginChild(index == 0 ? "view_A" : "view_B", size, true,
+                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  if (active) ImGui::PopStyleColor();
+  if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) &&
+      (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)))
+    state.activeView = index;
+  if (state.twoViews) {
+    ImGui::TextColored(active ? ImVec4(0.9f, 0.7f, 0.25f, 1) : ImVec4(0.6f, 0.6f, 0.6f, 1), "%s",
+                       index == 0 ? "A" : "B");
+    ImGui::SameLine();
+  }
+  const GlTexture* texture =
+      state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+  drawViewToolbar(state, view, texture);
+  const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const glm::vec2 regionSize{std::max(avail.x, 16.0f), std::max(avail.y - readoutHeight, 16.0f)};
+  view.regionSize = regionSize;
+  bool movingCamera = false;
+  if (!texture) {
+    ImGui::Dummy(toIm(regionSize));
+    ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
+  } else {
+    prepareView(state, view, *texture, regionSize, lastSizes[index]);
+    const glm::vec2 origin = toGlm(ImGui::GetCursorScreenPos());
+    ImGui::InvisibleButton("image", toIm(regionSize),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
+    const glm::ivec2 textureSize{texture->width(), texture->height()};
+    movingCamera = handleMouse(state, view, textureSize, origin, regionSize);
+    std::optional<glm::ivec2> hover;
+    if (ImGui::IsItemHovered())
+      hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);
+    drawImage(state, view, view.renderer.render(*texture, view.settings), origin, regionSize);
+    drawReadout(state, view, *texture, hover);
+  }
+  ImGui::EndChild();
+  return movingCamera;
+}

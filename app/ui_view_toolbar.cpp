@@ -1,0 +1,123 @@
+#include "ui_view_toolbar.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui_export.h"
+#include "ui_state.h"
+#include "ui_widgets.h"
+
+// 1. Autofit reads back only the visible rectangle.
+void autofitView(ViewPanel& view, const GlTexture& texture) {
+  glm::ivec2 lo, hi;
+  view.transform.visibleTexels(view.regionSize, {texture.width(), texture.height()}, lo, hi);
+  const std::vector<float> values =
+      readRegion(texture, lo.x, lo.y, hi.x - lo.x, hi.y - lo.y, view.settings.layer);
+  float low = 0, high = 1;
+  if (!finiteRange(values, texture.channelCount(), view.settings, low, high)) return;
+  if (high - low < 1e-12f * std::max(1.0f, std::abs(low))) {  // constant: centre it
+    low -= 0.5f;
+    high += 0.5f;
+  }
+  view.settings.black = low;
+  view.settings.white = high;
+}
+
+void resetView(UiState& state, ViewPanel& view, const GlTexture& texture) {
+  const Output* output = state.outputOf(view.output);
+  if (!output) return;
+  const int layer = view.settings.layer;
+  view.settings = defaultViewSettings(*output, texture.channelCount());
+  view.settings.layer = layer;
+}
+
+namespace {
+
+// 2. Line 1: what is shown (output, lock, channels, colormap, level).
+void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
+  ImGui::SetNextItemWidth(std::min(210.0f, ImGui::GetContentRegionAvail().x * 0.45f));
+  if (ImGui::BeginCombo("##output", view.output.c_str())) {
+    for (const std::string& key : state.outputKeys())
+      if (ImGui::Selectable(key.c_str(), key == view.output)) {
+        view.output = key;
+        view.fitPending = true;
+      }
+    ImGui::EndCombo();
+  }
+  sameLineIfFits(60);
+  ImGui::Checkbox("lock", &view.locked);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A locked view keeps its output when stages are selected on the left.");
+  if (!texture) return;
+  const char* names[4] = {"R", "G", "B", "A"};
+  for (int c = 0; c < std::min(texture->channelCount(), 4); ++c) {
+    sameLineIfFits(40);
+    bool on = view.settings.channels[size_t(c)];
+    if (ImGui::Checkbox(names[c], &on)) view.settings.channels[size_t(c)] = on;
+  }
+  const bool single = singleChannel(view.settings, texture->channelCount()) >= 0;
+  sameLineIfFits(120);
+  ImGui::SetNextItemWidth(110);
+  ImGui::BeginDisabled(!single);
+  int map = int(view.settings.colormap);
+  const auto maps = colormapNames();
+  if (ImGui::BeginCombo("##colormap", maps[size_t(map)].c_str())) {
+    for (int m = 0; m < int(maps.size()); ++m)
+      if (ImGui::Selectable(maps[size_t(m)].c_str(), m == map)) view.settings.colormap = Colormap(m);
+    ImGui::EndCombo();
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Colormap for a single channel (colour shows each channel in gray).");
+  if (texture->isArray()) {
+    sameLineIfFits(170);
+    ImGui::SetNextItemWidth(110);
+    ImGui::SliderInt("level", &view.settings.layer, 0, texture->layers() - 1);
+    helpMarker("Array layer: for the N-buffer, level n holds min/max over 2^n x 2^n texels.");
+  }
+}
+
+// 3. Line 2: the value range, overlay, zoom, exports.
+void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture) {
+  ViewSettings& s = view.settings;
+  const float speed = std::max(1e-6f, std::abs(s.white - s.black) * 0.005f);
+  ImGui::SetNextItemWidth(80);
+  ImGui::DragFloat("##black", &s.black, speed, 0, 0, "%.4g");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Black point: drag, or double-click to type.");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  ImGui::DragFloat("##white", &s.white, speed, 0, 0, "%.4g");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("White point: drag, or double-click to type.");
+  sameLineIfFits(60);
+  if (ImGui::Button("Autofit")) autofitView(view, texture);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Black/white = min/max of the visible texels (A)");
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) resetView(state, view, texture);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The stage's declared range and colormap (R)");
+  sameLineIfFits(90);
+  ImGui::Checkbox("NaN/Inf/-", &s.overlay);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Overlay: NaN magenta, Inf green, negative blue (shown channels).");
+  sameLineIfFits(140);
+  if (ImGui::Button("Fit")) view.fitPending = true;
+  ImGui::SameLine();
+  if (ImGui::Button("1:1")) view.transform.oneToOne();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%.0f%%", view.transform.zoom * 100);
+  sameLineIfFits(90);
+  if (ImGui::Button("PNG")) state.status = exportViewFiles(state, view, "", ExportKind::Png);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Export this view as displayed (PNG)");
+  ImGui::SameLine();
+  if (ImGui::Button("EXR")) state.status = exportViewFiles(state, view, "", ExportKind::Exr);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Export this view's raw values (EXR)");
+}
+
+}  // namespace
+
+// 4. Both lines; the second only once the output has a texture.
+void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture) {
+  drawSourceControls(state, view, texture);
+  if (texture) drawRangeControls(state, view, *texture);
+}
