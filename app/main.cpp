@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_stages.h"
 #include "export_command.h"
 #include "hash_command.h"
 #include "trace_command.h"
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--width", window.width, "window width")->check(CLI::Range(320, 8192));
   app.add_option("--height", window.height, "window height")->check(CLI::Range(240, 8192));
+  app.add_option("--config", window.config, "settings JSON to start from (saved by the window)");
+  app.add_option("--script", window.script, "JSON list of UI actions to run, then exit");
 
   ExportOptions exporting;
   CLI::App* exportCommand = app.add_subcommand("export", "run the pipeline headless and write "
@@ -58,8 +61,22 @@ int main(int argc, char** argv) {
                                                      "on the inputs 1, 2, ... (dieharder -g 200)");
   hashCommand->add_option("--hash", hashing.hash, "md5_16, md5_64 or pcg3d")->capture_default_str();
   hashCommand->add_option("--count", hashing.count, "number of hashes (16 bytes each)")
-      ->capture_default_str();
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(4294967295u)))->capture_default_str();
   hashCommand->add_option("--key", hashing.key, "key XORed into every seed")->capture_default_str();
+
+  BenchStagesOptions benching;
+  CLI::App* benchStagesCommand = app.add_subcommand(
+      "bench-stages", "per-stage milliseconds, fetches per ray and classification savings on "
+                      "cube and engine (writes a Markdown table)");
+  benchStagesCommand->add_option("--out", benching.out, "Markdown file")->capture_default_str();
+  benchStagesCommand->add_option("--frames", benching.frames, "timed frames per configuration")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  benchStagesCommand->add_option("--scenes", benching.scenes, "comma-separated scenes")
+      ->capture_default_str();
+  benchStagesCommand->add_option("--width", benching.width)->check(CLI::Range(16, 4096));
+  benchStagesCommand->add_option("--height", benching.height)->check(CLI::Range(16, 4096));
+  benchStagesCommand->add_option("--map", benching.mapSize, "shadow-map size")
+      ->check(CLI::Range(128, 2048));
 
   try {
     app.parse(argc, argv);
@@ -74,6 +91,7 @@ int main(int argc, char** argv) {
 
   if (*exportCommand) return runExport(exporting);
   if (*traceCommand) return runTraceCommand(tracing);
+  if (*benchStagesCommand) return runBenchStages(benching);
   if (*hashCommand) return runHashCommand(hashing);
   return runWindow(window);
 }

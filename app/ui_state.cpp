@@ -40,10 +40,18 @@ std::string UiState::loadScene(const std::string& source) {
   } catch (const std::exception& error) {
     return error.what();
   }
+  adoptScene(std::move(loaded), source);
+  for (const std::string& warning : warnings) status += "; warning: " + warning;
+  return "";
+}
+
+void UiState::adoptScene(Scene loaded, const std::string& source) {
   frame.reset();
   gpuScene.reset();
   scene = std::move(loaded);
   sceneSource = source;
+  initialCamera = scene.camera;
+  initialLight = scene.light;
   gpuScene = std::make_unique<GpuScene>(scene);
   frame = std::make_unique<Frame>(scene, *gpuScene, pipeline);
   frame->eyeWidth = eye.width;
@@ -52,8 +60,6 @@ std::string UiState::loadScene(const std::string& source) {
   for (ViewPanel& view : views) view.fitPending = true;
   dirty = true;
   status = "scene '" + scene.name + "' (" + std::to_string(scene.triangleCount()) + " triangles)";
-  for (const std::string& warning : warnings) status += "; warning: " + warning;
-  return "";
 }
 
 // 2. Selection: the active view takes it unless locked, then the other one.
@@ -109,7 +115,7 @@ std::string UiState::selectStage(const std::string& stageName) {
 std::string UiState::setParameter(const std::string& stageDotKey, const std::string& value) {
   try {
     if (std::string problem = pipeline.param(stageDotKey).set(value); !problem.empty())
-      return problem;
+      return stageDotKey + ": " + problem;
   } catch (const std::out_of_range& error) {
     return error.what();
   }
@@ -147,6 +153,7 @@ bool UiState::reloadShaders() {
 // 5. Runs only when something changed; a stage that throws is reported, not fatal.
 bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
   if (!frame) return false;
+  if (eye.fitView && (viewRegion.x <= 0 || viewRegion.y <= 0)) return false;  // no layout yet
   glm::ivec2 size = eye.fitView ? glm::max(viewRegion, glm::ivec2(64))
                                 : glm::ivec2(eye.width, eye.height);
   if (previewing) size = glm::max(size / 2, glm::ivec2(32));

@@ -27,6 +27,7 @@ struct ViewPanel {
   bool fitPending = true;     // fit on the next draw (new output, new size, "Fit")
   bool autofitPending = false;
   glm::vec2 regionSize{0, 0};  // the image region drawn last frame (screen pixels)
+  glm::ivec2 lastTextureSize{0, 0};  // to keep the picture in place when the size changes
   TextureView renderer;
 };
 
@@ -47,6 +48,8 @@ public:
   std::unique_ptr<GpuScene> gpuScene;
   std::unique_ptr<Frame> frame;
   EyeSize eye;
+  Camera initialCamera;     // as the scene file placed them ("Reset camera / light")
+  AreaLight initialLight;
   std::string renderer;  // GL renderer string, for run.json
   std::map<std::string, double> parameterDefaults;  // "stage.key" -> declared default
 
@@ -55,10 +58,10 @@ public:
   int activeView = 0;
   bool twoViews = false;
   std::string selectedStage;
-  std::optional<glm::ivec2> pick;  // texel picked, in a texture of size `pickSpace`
+  std::optional<glm::ivec2> pick;  // GL texel (row 0 at the bottom) in a texture of `pickSpace`
   glm::ivec2 pickSpace{0, 0};
   int selectedRay = 0;
-  std::vector<ViewOverlayRect> overlayRects;  // drawn by views of matching size
+  std::vector<ViewOverlayShape> overlays;  // drawn by views of matching size (ray trace)
 
   // 3. Run control and messages.
   bool dirty = true;           // the pipeline must run (parameters, camera, light, size...)
@@ -76,6 +79,7 @@ public:
 
   // Actions. Each returns "" or a message naming what is valid.
   std::string loadScene(const std::string& source);  // keeps the old scene on failure
+  void adoptScene(Scene loaded, const std::string& source);  // GpuScene and Frame rebuilt
   std::string selectOutput(const std::string& stageDotOutput);  // into the active view
   std::string selectStage(const std::string& stage);  // and its first output
   std::string setParameter(const std::string& stageDotKey, const std::string& value);

@@ -20,16 +20,24 @@ void texelRect(const ViewTransform& t, glm::ivec2 lo, glm::ivec2 hi, glm::vec2 o
   bottomRight = toIm(t.screenFromTexel({float(hi.x + 1), float(lo.y)}, origin, size));
 }
 
-// 1. Settings follow the output; the transform follows the texture's size.
-void prepareView(UiState& state, ViewPanel& view, const GlTexture& texture,
-                 glm::vec2 regionSize, glm::ivec2& lastSize) {
+// 1a. Settings follow the output (before the toolbar draws them).
+void syncSettings(UiState& state, ViewPanel& view, const GlTexture& texture) {
   if (view.settingsFor != view.output) {
     if (const Output* output = state.outputOf(view.output))
       view.settings = defaultViewSettings(*output, texture.channelCount());
     view.settingsFor = view.output;
     view.fitPending = true;
   }
+  if (view.autofitPending) {
+    autofitView(view, texture);
+    view.autofitPending = false;
+  }
+}
+
+// 1b. The transform follows the texture's size.
+void placeImage(ViewPanel& view, const GlTexture& texture, glm::vec2 regionSize) {
   const glm::ivec2 size{texture.width(), texture.height()};
+  glm::ivec2& lastSize = view.lastTextureSize;
   if (view.fitPending || lastSize.x == 0) {
     view.transform.fit(glm::vec2(size), regionSize);
     view.fitPending = false;
@@ -39,10 +47,6 @@ void prepareView(UiState& state, ViewPanel& view, const GlTexture& texture,
     view.transform.center *= glm::vec2(size) / glm::vec2(lastSize);
   }
   lastSize = size;
-  if (view.autofitPending) {
-    autofitView(view, texture);
-    view.autofitPending = false;
-  }
 }
 
 // 2. Image, texel grid, overlay rectangles, pick marker, all clipped to the region.
@@ -69,11 +73,14 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
       draw->AddLine(toIm(t.screenFromTexel({float(lo.x), float(y)}, origin, regionSize)),
                     toIm(t.screenFromTexel({float(hi.x), float(y)}, origin, regionSize)), grid);
   }
-  for (const ViewOverlayRect& rect : state.overlayRects)
-    if (rect.space == size) {
-      texelRect(t, rect.lo, rect.hi, origin, regionSize, topLeft, bottomRight);
-      draw->AddRect(topLeft, bottomRight, rect.color, 0, 0, 1.5f);
-    }
+  for (const ViewOverlayShape& shape : state.overlays) {
+    if (shape.space != size) continue;
+    const ImVec2 a = toIm(t.screenFromTexel(shape.a, origin, regionSize));
+    const ImVec2 b = toIm(t.screenFromTexel(shape.b, origin, regionSize));
+    if (shape.line) draw->AddLine(a, b, shape.color, 2);
+    else draw->AddRect({std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)},
+                       shape.color, 0, 0, 1.5f);
+  }
   if (state.pick && state.pickSpace == size) {
     texelRect(t, *state.pick, *state.pick, origin, regionSize, topLeft, bottomRight);
     const ImVec2 centre{0.5f * (topLeft.x + bottomRight.x), 0.5f * (topLeft.y + bottomRight.y)};
@@ -104,18 +111,18 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
     view.transform.pan(toGlm(io.MouseDelta));
-  if (ImGui::IsItemDeactivated() && !ImGui::IsMouseDragPastThreshold(ImGuiMouseButton_Left) &&
-      hovered)
+  if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+      io.MouseDragMaxDistanceSqr[0] < io.MouseDragThreshold * io.MouseDragThreshold && hovered)
     state.setPick(view.transform.texelAt(mouse, origin, regionSize), size);
   const glm::vec2 delta = toGlm(io.MouseDelta);
-  const bool rightDrag = ImGui::IsItemActive() || hovered;
-  if (rightDrag && ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+  const bool pressedHere = ImGui::IsItemActive();
+  if (pressedHere && ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
     movingCamera = true;
     if (io.KeyShift) panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
     else orbitCamera(state.scene.camera, -delta.x * 0.01f, -delta.y * 0.01f);
     if (delta != glm::vec2(0)) state.dirty = true;
   }
-  if (rightDrag && ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
+  if (pressedHere && ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
     movingCamera = true;
     panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
     if (delta != glm::vec2(0)) state.dirty = true;
@@ -144,20 +151,20 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
   char value[64];
   for (int c = 0; c < texture.channelCount(); ++c) {
     const std::string name =
-        output && size_t(c) < output->channels.size() ? output->channels[size_t(c)] : "RGBA"s.substr(size_t(c), 1);
+        output && size_t(c) < output->channels.size() ? output->channels[size_t(c)]
+                                                       : std::string(1, "RGBA"[c]);
     std::snprintf(value, sizeof value, "%s%s=%.6g", c ? "  " : "", name.c_str(), texel[size_t(c)]);
     text += value;
   }
-  ImGui::Text("%s (%d, %d): %s", what, at->x, at->y, text.c_str());
+  // Image coordinates (row 0 at the top, as the PNGs and `penumbra trace --pixel`).
+  ImGui::Text("%s (%d, %d): %s", what, at->x, size.y - 1 - at->y, text.c_str());
 }
 
 }  // namespace
 
 // 5. Child window: toolbar, image region, readout.
 bool drawTextureView(UiState& state, int index, ImVec2 size) {
-  using namespace std::string_literals;
   ViewPanel& view = state.views[index];
-  static glm::ivec2 lastSizes[2];
   const bool active = state.activeView == index && state.twoViews;
   if (active) ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(230, 180, 60, 255));
   ImGui::BeginChild(index == 0 ? "view_A" : "view_B", size, true,
@@ -173,6 +180,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   }
   const GlTexture* texture =
       state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+  if (texture) syncSettings(state, view, *texture);
   drawViewToolbar(state, view, texture);
   const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -183,7 +191,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     ImGui::Dummy(toIm(regionSize));
     ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
   } else {
-    prepareView(state, view, *texture, regionSize, lastSizes[index]);
+    placeImage(view, *texture, regionSize);
     const glm::vec2 origin = toGlm(ImGui::GetCursorScreenPos());
     ImGui::InvisibleButton("image", toIm(regionSize),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |

@@ -1,16 +1,17 @@
 // HOOK: the per-ray march trace panel (issue 4, "Stage-specific views").
 //
-// The trace stage records every step of one ray; this panel draws those steps without
-// knowing the search: a table, a plot of ray depth against step with each visited
-// neighbourhood's [zNearMin, zFarMax] band, and rectangles over views of the N-buffer.
-// To connect it, the trace stage's owner converts its step records to RayStepRecord and
-// installs a source once (e.g. next to makeStages()):
+// The trace stage records every step of one pixel's rays; this panel draws those steps
+// without knowing the search: a table, a plot of ray depth against step with each visited
+// neighbourhood's [zNearMin, zFarMax] band, and the visited windows as rectangles (plus the
+// ray's projected path) over views of light-map size (the layers, the N-buffer levels).
+// The steps come from rayTraceSource(); app/ui_trace_source.cpp installs the one that reads
+// Frame::traceSteps (recorded for trace.record_x / record_y, which the window sets from the
+// pick). Another search can install its own:
 //
 //     rayTraceSource() = [](const Frame& frame, glm::ivec2 pixel, int ray) {
-//       return convert(recordSteps(frame, pixel, ray));  // -> std::vector<RayStepRecord>
+//       return RayTraceInfo{...};  // steps converted to RayStepRecord
 //     };
 //
-// Until then the panel says that no trace source is installed.
 #pragma once
 #include <functional>
 #include <string>
@@ -22,11 +23,12 @@ struct Frame;
 
 // One step of one ray's march through the N-buffer (thesis §3.6-3.7), in light space.
 struct RayStepRecord {
-  int level = 0;                   // N-buffer level of the visited neighbourhood
-  glm::ivec2 windowLo{0}, windowHi{0};  // its level-0 texel window, inclusive
+  int level = 0;                   // N-buffer level of the visited neighbourhood (-1: none)
+  glm::ivec2 windowLo{0}, windowHi{0};  // its level-0 texel window (GL texels), inclusive
   float rayDepthEnter = 0, rayDepthExit = 0;  // ray's lsDepth over the step's span
-  float zNearMin = 0, zNearMax = 0, zFarMax = 0;  // the neighbourhood's depths (lsDepth)
-  std::string decision;            // "skip", "descend", "hit", "refine", "sample"...
+  float zNearMin = 0, zFarMax = 0;  // the neighbourhood's depth band (lsDepth)
+  glm::vec2 texelPoint{-1};        // the ray's projection at the step's end (level-0 texels)
+  std::string decision;            // "descend", "advance", "hit", "sample", "refine"...
 };
 
 struct RayTraceInfo {
@@ -38,14 +40,19 @@ struct RayTraceInfo {
 using RayTraceSource = std::function<RayTraceInfo(const Frame&, glm::ivec2 pixel, int ray)>;
 RayTraceSource& rayTraceSource();  // empty until the trace stage installs one
 
-// A rectangle over views whose texture has size `space` (texel coordinates, inclusive).
-struct ViewOverlayRect {
-  glm::ivec2 space{0}, lo{0}, hi{0};
+// A shape over views whose texture has size `space`, in continuous texel coordinates
+// (texel (i, j) covers [i, i+1] x [j, j+1], GL rows): a rectangle with corners a, b, or a
+// line from a to b.
+struct ViewOverlayShape {
+  glm::ivec2 space{0};
+  glm::vec2 a{0}, b{0};
   unsigned color = 0xff00ffff;  // ImGui ABGR
+  bool line = false;
 };
 
-// Draws the panel for `steps`; fills `overlay` with the visited windows, coloured by level.
+// Draws the panel for `trace`; fills `overlay` with the visited windows (coloured by level)
+// and the ray's projected path.
 void drawRayTracePanel(const RayTraceInfo& trace, glm::ivec2 lightMapSize,
-                       std::vector<ViewOverlayRect>& overlay);
+                       std::vector<ViewOverlayShape>& overlay);
 // The colour of N-buffer level `level` in plots and rectangles (ImGui ABGR).
 unsigned levelColor(int level);

@@ -11,8 +11,9 @@
 
 // 1. Autofit reads back only the visible rectangle.
 void autofitView(ViewPanel& view, const GlTexture& texture) {
-  glm::ivec2 lo, hi;
-  view.transform.visibleTexels(view.regionSize, {texture.width(), texture.height()}, lo, hi);
+  glm::ivec2 lo{0, 0}, hi{texture.width(), texture.height()};  // about to fit: everything
+  if (!view.fitPending)
+    view.transform.visibleTexels(view.regionSize, {texture.width(), texture.height()}, lo, hi);
   const std::vector<float> values =
       readRegion(texture, lo.x, lo.y, hi.x - lo.x, hi.y - lo.y, view.settings.layer);
   float low = 0, high = 1;
@@ -37,7 +38,7 @@ namespace {
 
 // 2. Line 1: what is shown (output, lock, channels, colormap, level).
 void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
-  ImGui::SetNextItemWidth(std::min(210.0f, ImGui::GetContentRegionAvail().x * 0.45f));
+  ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - 170, 120.0f, 210.0f));
   if (ImGui::BeginCombo("##output", view.output.c_str())) {
     for (const std::string& key : state.outputKeys())
       if (ImGui::Selectable(key.c_str(), key == view.output)) {
@@ -51,15 +52,23 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A locked view keeps its output when stages are selected on the left.");
   if (!texture) return;
+  // Channel toggles as small buttons, lit when on.
   const char* names[4] = {"R", "G", "B", "A"};
+  const ImVec4 lit[4] = {{0.75f, 0.2f, 0.2f, 1}, {0.2f, 0.6f, 0.25f, 1}, {0.25f, 0.35f, 0.8f, 1},
+                         {0.55f, 0.55f, 0.55f, 1}};
   for (int c = 0; c < std::min(texture->channelCount(), 4); ++c) {
-    sameLineIfFits(40);
-    bool on = view.settings.channels[size_t(c)];
-    if (ImGui::Checkbox(names[c], &on)) view.settings.channels[size_t(c)] = on;
+    if (c == 0) sameLineIfFits(26.0f * float(std::min(texture->channelCount(), 4)));
+    else ImGui::SameLine(0, 2);
+    const bool on = view.settings.channels[size_t(c)];
+    ImGui::PushStyleColor(ImGuiCol_Button, on ? lit[c] : ImVec4(0.2f, 0.2f, 0.22f, 1));
+    if (ImGui::Button(names[c], {22, 0})) view.settings.channels[size_t(c)] = !on;
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Channel %s on/off. One channel alone: shown through the colormap.", names[c]);
   }
   const bool single = singleChannel(view.settings, texture->channelCount()) >= 0;
-  sameLineIfFits(120);
-  ImGui::SetNextItemWidth(110);
+  sameLineIfFits(100);
+  ImGui::SetNextItemWidth(100);
   ImGui::BeginDisabled(!single);
   int map = int(view.settings.colormap);
   const auto maps = colormapNames();
@@ -96,8 +105,8 @@ void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture
   ImGui::SameLine();
   if (ImGui::Button("Reset")) resetView(state, view, texture);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The stage's declared range and colormap (R)");
-  sameLineIfFits(90);
-  ImGui::Checkbox("NaN/Inf/-", &s.overlay);
+  sameLineIfFits(60);
+  ImGui::Checkbox("NaN", &s.overlay);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Overlay: NaN magenta, Inf green, negative blue (shown channels).");
   sameLineIfFits(140);

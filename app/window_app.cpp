@@ -8,60 +8,41 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 
 #include "gl_context.h"
 #include "image_export.h"
-#include "pipeline.h"
 #include "scene_builtin.h"
-#include "texture_view.h"
+#include "ui_export.h"
+#include "ui_help.h"
+#include "ui_inspector.h"
+#include "ui_pipeline_panel.h"
+#include "ui_scene_panel.h"
+#include "ui_script.h"
+#include "ui_settings.h"
+#include "ui_state.h"
+#include "ui_texture_view.h"
+#include "ui_trace_source.h"
+#include "ui_view_toolbar.h"
 
 namespace {
 
-void helpMarker(const std::string& text) {
-  ImGui::SameLine();
-  ImGui::TextDisabled("(?)");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
-}
+constexpr ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+    ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-// Draws a parameter from its declaration; returns true when it changed.
-bool drawParam(Param& param) {
-  bool changed = false;
-  const char* label = param.key.c_str();
-  switch (param.type) {
-    case Param::Type::Bool: {
-      bool value = param.asBool();
-      if ((changed = ImGui::Checkbox(label, &value))) param.value = value;
-      break;
-    }
-    case Param::Type::Int: {
-      int value = param.asInt();
-      if ((changed = ImGui::SliderInt(label, &value, int(param.min), int(param.max))))
-        param.value = value;
-      break;
-    }
-    case Param::Type::Float: {
-      float value = param.asFloat();
-      if ((changed = ImGui::SliderFloat(label, &value, float(param.min), float(param.max))))
-        param.value = value;
-      break;
-    }
-    case Param::Type::Enum: {
-      int value = param.asInt();
-      if (ImGui::BeginCombo(label, param.asEnum().c_str())) {
-        for (size_t i = 0; i < param.options.size(); ++i)
-          if (ImGui::Selectable(param.options[i].c_str(), value == int(i))) {
-            param.value = double(i);
-            changed = true;
-          }
-        ImGui::EndCombo();
-      }
-      break;
-    }
-  }
-  helpMarker(param.doc + "\nRange: " + param.rangeText());
-  return changed;
+// 1. Fixed layout: panels scale with the window, within limits.
+struct Layout {
+  float width, height, left, right, status;
+  float centerWidth() const { return width - left - right; }
+  float panelHeight() const { return height - status; }
+};
+
+Layout layoutFor(float width, float height) {
+  return {width, height, std::clamp(width * 0.27f, 220.0f, 360.0f),
+          std::clamp(width * 0.23f, 200.0f, 330.0f), ImGui::GetFrameHeight() + 6};
 }
 
 void saveScreenshot(GLFWwindow* window, const std::string& path) {
@@ -77,26 +58,154 @@ void saveScreenshot(GLFWwindow* window, const std::string& path) {
   writePng(path, flipped, width, height);
 }
 
-}  // namespace
+// 2. Keyboard shortcuts (listed by ui_help.cpp); none while a text field has the keyboard.
+void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  bool question = false;
+  for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
+  if (ImGui::IsKeyPressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F5)) state.reloadShaders();
+  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  if (ImGui::IsKeyPressed(GLFW_KEY_F12))
+    state.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
+  if (io.KeyCtrl) {
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false))
+      state.status = saveSettingsFile(state, "penumbra_settings.json");
+    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.status = exportAllStages(state, "");
+    return;
+  }
+  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false) && state.twoViews) state.activeView = 1 - state.activeView;
+  if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) {
+    state.twoViews = !state.twoViews;
+    if (!state.twoViews) state.activeView = 0;
+  }
+  ViewPanel& view = state.views[state.activeView];
+  const GlTexture* texture =
+      state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) view.fitPending = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) view.transform.oneToOne();
+  if (ImGui::IsKeyPressed(GLFW_KEY_A, false) && texture) autofitView(view, *texture);
+  if (ImGui::IsKeyPressed(GLFW_KEY_R, false) && texture) resetView(state, view, *texture);
+  const int step = io.KeyShift ? 10 : 1;
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) state.movePick({-step, 0});
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) state.movePick({step, 0});
+  if (ImGui::IsKeyPressed(GLFW_KEY_UP)) state.movePick({0, step});  // GL: y grows upwards
+  if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) state.movePick({0, -step});
+}
 
-int runWindow(const WindowOptions& options) {
+// 3. The status line: what happened last, and how fast things are.
+void drawStatusLine(const UiState& state, const Layout& layout) {
+  ImGui::SetNextWindowPos({0, layout.panelHeight()});
+  ImGui::SetNextWindowSize({layout.width, layout.status});
+  ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoScrollbar);
+  char speed[200];
+  const double pipelineMs = state.medianPipelineMs();
+  std::snprintf(speed, sizeof speed, "eye %dx%d | pipeline %.1f ms (%.1f/s) | UI %.0f fps | %s%s",
+                state.frame ? state.frame->eyeWidth : 0, state.frame ? state.frame->eyeHeight : 0,
+                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.framesPerSecond(),
+                state.runEveryFrame ? "runs every frame" : "runs on change",
+                state.previewing ? " | PREVIEW (half resolution while the camera moves)" : "");
+  const float speedWidth = ImGui::CalcTextSize(speed).x;
+  ImGui::PushClipRect(ImGui::GetCursorScreenPos(),
+                      {layout.width - speedWidth - 20, layout.height}, true);
+  ImGui::TextUnformatted(state.status.empty() ? "F1: help" : state.status.c_str());
+  ImGui::PopClipRect();
+  ImGui::SameLine(layout.width - speedWidth - 10);
+  ImGui::TextUnformatted(speed);
+  ImGui::End();
+}
+
+// 4. One UI frame: left, centre, right, status line, floating windows.
+bool drawUi(UiState& state, const Layout& layout) {
+  ImGui::SetNextWindowPos({0, 0});
+  ImGui::SetNextWindowSize({layout.left, layout.panelHeight()});
+  ImGui::Begin("Pipeline (thesis Algorithm 1)", nullptr, kPanelFlags);
+  drawScenePanel(state);
+  drawPipelinePanel(state);
+  ImGui::End();
+
+  ImGui::SetNextWindowPos({layout.left, 0});
+  ImGui::SetNextWindowSize({layout.centerWidth(), layout.panelHeight()});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {4, 4});
+  ImGui::Begin("##views", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
+                                       ImGuiWindowFlags_NoScrollbar);
+  ImGui::PopStyleVar();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  bool movingCamera = false;
+  if (state.twoViews) {
+    const float half = (avail.x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+    movingCamera |= drawTextureView(state, 0, {half, avail.y});
+    ImGui::SameLine();
+    movingCamera |= drawTextureView(state, 1, {half, avail.y});
+  } else {
+    movingCamera |= drawTextureView(state, 0, avail);
+  }
+  ImGui::End();
+
+  ImGui::SetNextWindowPos({layout.width - layout.right, 0});
+  ImGui::SetNextWindowSize({layout.right, layout.panelHeight()});
+  ImGui::Begin("Inspector", nullptr, kPanelFlags);
+  drawInspector(state);
+  ImGui::End();
+
+  drawStatusLine(state, layout);
+  drawHelpWindow(state);
+  drawShaderLogWindow(state);
+  return movingCamera;
+}
+
+// 5. What can be checked before a window opens: scene, --set, script.
+int checkOptions(const WindowOptions& options, Scene& scene, std::vector<ScriptAction>& script) {
   std::vector<std::string> warnings;
-  Scene scene;
   try {
     scene = loadScene(options.scene, warnings);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "penumbra: %s\n", error.what());
     return 2;
   }
-  std::unique_ptr<GlContext> context;  // declared first: GL objects die before it
-  Pipeline pipeline;
+  Pipeline check;
   for (const std::string& assignment : options.sets)
-    if (std::string problem = pipeline.set(assignment); !problem.empty()) {
+    if (std::string problem = check.set(assignment); !problem.empty()) {
       std::fprintf(stderr, "penumbra: --set %s\n", problem.c_str());
       return 2;
     }
+  if (!options.script.empty())
+    if (std::string problem = parseScriptFile(options.script, script); !problem.empty()) {
+      std::fprintf(stderr, "penumbra: --script %s\n", problem.c_str());
+      return 2;
+    }
+  return 0;
+}
+
+// 6. State after the context exists: scene, --config, then --set, then the final image.
+int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
+  state.adoptScene(std::move(scene), options.scene);
+  if (!options.config.empty()) {
+    bool ok = false;
+    const std::string message = loadSettingsFile(state, options.config, ok);
+    if (!ok) {
+      std::fprintf(stderr, "penumbra: --config %s\n", message.c_str());
+      return 2;
+    }
+    state.status = message;
+  }
+  for (const std::string& assignment : options.sets) state.pipeline.set(assignment);
+  if (state.outputOf("composite.color")) state.selectOutput("composite.color");
+  else state.selectStage(state.pipeline.stages().back()->name());
+  return 0;
+}
+
+}  // namespace
+
+// 7. Setup, the frame loop, teardown.
+int runWindow(const WindowOptions& options) {
+  Scene scene;
+  std::vector<ScriptAction> actions;
+  if (int status = checkOptions(options, scene, actions)) return status;
   std::string error;
-  context = GlContext::createWindow(options.width, options.height, "penumbra", error);
+  std::unique_ptr<GlContext> context = GlContext::createWindow(options.width, options.height, "penumbra", error);
   if (!context) {
     std::fprintf(stderr, "penumbra: %s\nWithout a display, run: penumbra export --scene %s --out out\n",
                  error.c_str(), options.scene.c_str());
@@ -111,64 +220,45 @@ int runWindow(const WindowOptions& options) {
 
   int result = 0;
   try {
-    GpuScene gpuScene(scene);
-    Frame frame(scene, gpuScene, pipeline);
-    TextureView view;
-    std::string selected = "composite.color";
-    int framesRendered = 0;
-    while (!glfwWindowShouldClose(window)) {
-      glfwPollEvents();
+    auto state = std::make_unique<UiState>();  // GL objects: destroyed before the context
+    state->renderer = context->renderer();
+    installFrameTraceSource();
+    result = prepareState(*state, options, std::move(scene));
+    std::unique_ptr<ScriptRunner> runner;
+    if (!options.script.empty()) runner = std::make_unique<ScriptRunner>(std::move(actions));
+    int framesRendered = 0, screenshotCount = 0;
+    auto last = std::chrono::steady_clock::now();
+    while (result == 0 && !glfwWindowShouldClose(window)) {
+      // 7a. Events: wait when idle, so an idle window costs no CPU.
+      const bool busy = runner || !options.screenshot.empty() || state->dirty || state->runEveryFrame;
+      if (busy) glfwPollEvents();
+      else glfwWaitEventsTimeout(0.1);
+      const auto now = std::chrono::steady_clock::now();
+      state->recordFrameInterval(std::chrono::duration<double>(now - last).count());
+      last = now;
+      // 7b. Script actions, once the first run and the layout have settled.
+      if (runner && framesRendered >= 2 && state->pipelineRuns > 0) {
+        const ScriptRunner::Step step = runner->step(*state);
+        if (step == ScriptRunner::Step::Failed) {
+          std::fprintf(stderr, "penumbra: %s\n", runner->error().c_str());
+          result = 2;
+          break;
+        }
+        if (step == ScriptRunner::Step::Done) break;
+      }
+      // 7c. The pipeline, only when something changed.
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
-      const float panelWidth = 340.0f;
-      frame.eyeWidth = std::max(64, int(width - panelWidth));
-      frame.eyeHeight = std::max(64, height);
-      pipeline.run(frame);
-
+      recordPickedPixel(*state);
+      state->runIfNeeded(glm::ivec2(state->views[0].regionSize));
+      // 7d. The UI.
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      ImGui::SetNextWindowPos({0, 0});
-      ImGui::SetNextWindowSize({panelWidth, float(height)});
-      ImGui::Begin("Pipeline", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-      ImGui::TextWrapped("Scene '%s', %zu triangles", scene.name.c_str(), scene.triangleCount());
-      for (const auto& stage : pipeline.stages()) {
-        const auto& times = pipeline.lastTimes();
-        double ms = 0;
-        for (const StageTime& time : times)
-          if (time.stage == stage->name()) ms = time.milliseconds;
-        if (ImGui::CollapsingHeader((stage->name() + "  (" + std::to_string(int(ms + 0.5)) +
-                                     " ms)###" + stage->name()).c_str(),
-                                    ImGuiTreeNodeFlags_DefaultOpen)) {
-          ImGui::TextWrapped("%s  [thesis %s]", stage->summary().c_str(),
-                             stage->thesisSection().c_str());
-          for (const Output& output : stage->outputs()) {
-            const std::string key = stage->name() + "." + output.name;
-            if (ImGui::RadioButton(key.c_str(), selected == key)) selected = key;
-            helpMarker(output.doc);
-          }
-          ImGui::PushID(stage->name().c_str());
-          for (Param& param : stage->params()) drawParam(param);
-          ImGui::PopID();
-        }
-      }
-      ImGui::End();
-
-      ImGui::SetNextWindowPos({panelWidth, 0});
-      ImGui::SetNextWindowSize({float(width) - panelWidth, float(height)});
-      ImGui::Begin("View", nullptr,
-                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoTitleBar);
-      if (frame.has(selected)) {
-        const size_t dot = selected.find('.');
-        const Output& output = pipeline.stage(selected.substr(0, dot)).output(selected.substr(dot + 1));
-        const GlTexture& shown = view.render(frame.input(selected), output.display);
-        const ImVec2 avail = ImGui::GetContentRegionAvail();
-        const float scale = std::min(avail.x / shown.width(), avail.y / shown.height());
-        ImGui::Image(reinterpret_cast<ImTextureID>(std::uintptr_t(shown.id())),
-                     {shown.width() * scale, shown.height() * scale}, {0, 1}, {1, 0});
-      }
-      ImGui::End();
-
+      handleShortcuts(*state, window, screenshotCount);
+      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y));
+      if (state->previewing && !moving) state->dirty = true;  // full resolution again
+      state->previewing = moving;
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, width, height);
@@ -176,10 +266,16 @@ int runWindow(const WindowOptions& options) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++framesRendered;
-      if (!options.screenshot.empty() && framesRendered >= options.frames) {
+      // 7e. Screenshots: requested (script, F12), or --screenshot after --frames.
+      if (!state->screenshotRequest.empty()) {
+        saveScreenshot(window, state->screenshotRequest);
+        std::printf("penumbra: wrote %s\n", state->screenshotRequest.c_str());
+        state->status = "screenshot " + state->screenshotRequest;
+        state->screenshotRequest.clear();
+      }
+      if (!runner && !options.screenshot.empty() && framesRendered >= options.frames) {
         saveScreenshot(window, options.screenshot);
-        std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(),
-                    framesRendered);
+        std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(), framesRendered);
         break;
       }
       glfwSwapBuffers(window);

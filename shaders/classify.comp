@@ -1,9 +1,13 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): per eye pixel, bounds on the
 // occluder depths that any ray from the light to the receiver can meet, refined by
 // iterating Eq 3.3 over the N-buffer, and the class they imply:
-//   lit      receiver depth (minus the Eq 3.2 bias) <= zNearMin: nothing can block any ray;
-//   umbra    receiver depth (minus the bias) >= zNearMax: every ray ends behind the near
-//            layer (valid for a single-layer height field; off with three layers, §3.6);
+//   lit      receiver depth <= zNearMin: nothing can block any ray. No bias is subtracted:
+//            a ray's end moves towards the light by the trace's bias along the *ray*, which
+//            may be almost parallel to the map, so the receiver's own depth is the only
+//            bound on the deepest end point that holds for every ray;
+//   umbra    receiver depth minus the largest bias any ray gets (trace.bias + Eq 3.2 with
+//            n.l at its clamp) >= zNearMax: every ray ends behind the near layer (valid for
+//            a single-layer height field; off with three layers, §3.6);
 //   penumbra otherwise; outside: the receiver is not in the light's frustum.
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
@@ -21,7 +25,7 @@ layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
 };
 layout(location = 1) uniform int uIterations;
 layout(location = 2) uniform bool uUmbraTest;
-layout(location = 3) uniform float uMinCosine;
+layout(location = 3) uniform vec3 uTraceBias;  // trace.bias, adaptive (0/1), min cosine
 
 shared uint groupCounts[CLASSIFY_CLASS_COUNT];
 
@@ -39,8 +43,10 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
     zRange.w = isinf(receiverLsDepth) || isnan(receiverLsDepth) ? 0.0 : receiverLsDepth;
     return CLASS_OUTSIDE;
   }
-  float bias = adaptiveBias(map.z, wsNormal, -frame.wsLightForward.xyz, uMinCosine);
-  float endLsDepth = zToLsDepth(map.z - bias);  // where the rays end (shortened by Eq 3.2)
+  float largestBias = uTraceBias.x;
+  if (uTraceBias.y != 0.0) largestBias += adaptiveBias(map.z, vec3(0.0), vec3(0.0), uTraceBias.z);
+  float endLsDepth = receiverLsDepth;                         // the deepest any ray can end
+  float shallowestEnd = zToLsDepth(map.z - largestBias);      // the shallowest
   for (int i = 0; i < uIterations && endLsDepth > bounds.x; ++i) {
     ivec4 rect = reachableTexels(map.xy, map.z, lsDepthToZ(bounds.x), size.xy);
     vec3 refined = nbufferBoundsOverRect(nbufferLevels, rect.xy, rect.zw);
@@ -50,7 +56,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   }
   zRange.xyz = bounds;
   if (endLsDepth <= bounds.x) return CLASS_LIT;
-  if (uUmbraTest && endLsDepth >= bounds.y) return CLASS_UMBRA;
+  if (uUmbraTest && shallowestEnd >= bounds.y) return CLASS_UMBRA;
   return CLASS_PENUMBRA;
 }
 

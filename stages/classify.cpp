@@ -40,8 +40,6 @@ public:
         Param::boolean("umbra", "Classify umbra (receiver behind zNearMax). Valid for a "
                                 "single depth layer; always off when trace.layers is three "
                                 "(§3.6).", true),
-        Param::real("min_cosine", "Lower clamp of n.l in the Eq 3.2 bias that shortens the "
-                                  "rays at the receiver.", 0.1, 0.001, 1),
     };
   }
   std::string name() const override { return "classify"; }
@@ -68,7 +66,11 @@ public:
     glBindImageTexture(1, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glUniform1i(1, param("iterations").asInt());
     glUniform1i(2, param("umbra").asBool() && !threeLayers(frame));
-    glUniform1f(3, param("min_cosine").asFloat());
+    // The rays' bias is the trace's (one declaration): classification must bound it.
+    const Pipeline& pipeline = frame.pipeline;
+    glUniform3f(3, pipeline.param("trace.bias").asFloat(),
+                pipeline.param("trace.adaptive_bias").asBool() ? 1.0f : 0.0f,
+                pipeline.param("trace.min_cosine").asFloat());
     dispatchRows(w, h);
 
     gpu::ClassifyCounts counts{};

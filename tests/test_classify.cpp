@@ -101,6 +101,7 @@ public:
   }
 
   int width() const { return width_; }
+  int height() const { return height_; }
 
 private:
   LightFrame light_;
@@ -210,22 +211,201 @@ Scene stackedPlates() {
     glm::mat4 place = glm::translate(glm::mat4(1), {0.5f * (x0 + x1), height, 0});
     return makeQuad(1.0f, glm::scale(place, {x1 - x0, 1, 3}));
   };
-  scene.objects.push_back({"upper plate", plate(-3.0f, 0.2f, 2.0f), {0.3f, 0.5f, 0.9f}, false});
-  scene.objects.push_back({"lower plate", plate(0.35f, 3.0f, 0.5f), {0.9f, 0.5f, 0.3f}, false});
+  scene.objects.push_back({"upper plate", plate(-3.0f, 0.0f, 2.0f), {0.3f, 0.5f, 0.9f}, false});
+  scene.objects.push_back({"lower plate", plate(0.0f, 3.0f, 0.5f), {0.9f, 0.5f, 0.3f}, false});
   scene.camera = {{0, 1.2f, 5}, {0, 0.2f, 0}, {0, 1, 0}, 45};
   return scene;
 }
 
 }  // namespace
 
-TEST(Classify, Scratch) {
-  for (const char* name : {"cube", "spheres", "plate", "stacked"}) {
-    PipelineRun run(std::string(name) == "stacked" ? stackedPlates() : makeBuiltinScene(name), {}, 256, 256);
-    const Findings f = checkClassification(run, 0.1f);
-    std::printf("%s: lit %d umbra %d penumbra %d outside %d bg %d | litViol %d (%s) umbra1 %d "
-                "umbra2 %d (%s) rays %ld/%ld\n",
-                name, f.lit, f.umbra, f.penumbra, f.outside, f.background, f.litViolations,
-                f.firstLitViolation.c_str(), f.umbraOneLayerMisses, f.umbraTwoLayerMisses,
-                f.firstUmbraMiss.c_str(), f.umbraRaysMissingTwoLayer, f.umbraRays);
+namespace {
+
+// The conservativeness checks on one scene at the default 512 x 512 map.
+void checkScene(const std::string& name) {
+  PipelineRun run(makeBuiltinScene(name), {}, 256, 256);
+  const Findings found = checkClassification(run, 0.1f);
+  std::printf("[ %s ] lit %d, penumbra %d, umbra %d, outside %d, background %d; umbra pixels "
+              "with a ray that misses both layers' slabs: %d (%ld of %ld rays)\n",
+              name.c_str(), found.lit, found.penumbra, found.umbra, found.outside,
+              found.background, found.umbraTwoLayerMisses, found.umbraRaysMissingTwoLayer,
+              found.umbraRays);
+  testing::Test::RecordProperty("umbraPixels", found.umbra);
+  testing::Test::RecordProperty("umbraPixelsMissedTwoLayers", found.umbraTwoLayerMisses);
+  // "Lit" must be exact: no ray from the light grid meets an occluder (§3.6, first rule).
+  EXPECT_EQ(found.litViolations, 0) << "first: " << found.firstLitViolation;
+  // "Umbra" is exact for the thesis's derivation, a single layer (behind near is solid).
+  EXPECT_EQ(found.umbraOneLayerMisses, 0);
+  // Classification does its job: most receivers need no rays, some do.
+  EXPECT_GT(found.lit, found.penumbra) << name;
+  EXPECT_GT(found.penumbra, 100) << name;
+
+  // A lit pixel is lit in the hard shadow too: the ray through the light's center is one of
+  // its rays, and hard_shadow shortens it by more (a constant bias on top of Eq 3.2).
+  const auto mask = run.read("classify.mask");
+  const auto hard = run.read("hard_shadow.visibility");
+  int litButHardShadowed = 0;
+  for (size_t i = 0; i < mask.size(); ++i)
+    litButHardShadowed += int(mask[i]) == kClassLit && hard[i] < 0.5f;
+  EXPECT_EQ(litButHardShadowed, 0);
+}
+
+std::vector<int> classesOf(PipelineRun& run, int iterations) {
+  EXPECT_EQ(run.pipeline->set("classify.iterations=" + std::to_string(iterations)), "");
+  run.run();
+  std::vector<int> classes;
+  for (float value : run.read("classify.mask")) classes.push_back(int(value));
+  return classes;
+}
+
+}  // namespace
+
+TEST(Classify, LitIsConservativeCube) { checkScene("cube"); }
+TEST(Classify, LitIsConservativeSpheres) { checkScene("spheres"); }
+TEST(Classify, LitIsConservativePlate) { checkScene("plate"); }
+
+// Thesis §3.6 derives "z >= zNearMax: fully shadowed" for one depth layer. With two layers
+// (solid only between near and far) it can fail where a nearer occluder's image abuts a
+// farther one's in the map with no texel in common: here an upper plate (y = 2, x < 0) and
+// a lower one (y = 0.5, x > 0). Every texel of the region holds an occluder nearer than the
+// receiver, so the rule says umbra, yet rays from the light's +x side to ground points at
+// x slightly below 0 cross x = 0 between the plates' heights: in front of the lower plate's
+// texels, then behind the upper plate's. This documents the caveat with numbers; the trace
+// stage, not classify, decides those pixels when the umbra rule is off.
+TEST(Classify, TwoLayerUmbraRuleMissesRaysBetweenAbuttingOccluders) {
+  PipelineRun run(stackedPlates(), {}, 128, 128);
+  const Findings found = checkClassification(run, 0.1f);
+  std::printf("[ stacked plates ] umbra %d pixels, %d with rays that miss both plates in the "
+              "two-layer model (%ld of %ld rays); lit %d, penumbra %d\n",
+              found.umbra, found.umbraTwoLayerMisses, found.umbraRaysMissingTwoLayer,
+              found.umbraRays, found.lit, found.penumbra);
+  if (!found.firstUmbraMiss.empty()) std::printf("  e.g. %s\n", found.firstUmbraMiss.c_str());
+  RecordProperty("umbraPixels", found.umbra);
+  RecordProperty("umbraPixelsMissedTwoLayers", found.umbraTwoLayerMisses);
+  EXPECT_EQ(found.litViolations, 0) << "first: " << found.firstLitViolation;
+  EXPECT_EQ(found.umbraOneLayerMisses, 0);
+  EXPECT_GT(found.umbra, 1000);
+  EXPECT_GT(found.umbraTwoLayerMisses, 0) << "the two-layer caveat no longer shows: was the "
+                                             "umbra rule made two-layer safe?";
+}
+
+// Every pixel gets exactly one class; the counters are the mask's histogram; the bounds are
+// finite and ordered; outside and background follow the geometry; the mask and zRange agree.
+TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
+  const int width = 200, height = 150;  // not square: catches swapped axes
+  PipelineRun run(makeBuiltinScene("spheres"), {"light_layers.resolution=256"}, width, height);
+  const auto mask = run.read("classify.mask");
+  const auto zRange = run.read("classify.zRange");
+  const auto positions = run.read("gbuffer.wsPosition");
+  const auto normals = run.read("gbuffer.wsNormal");
+  const LightLayersOnCpu layers(run);
+  const LightFrame& light = run.frame->light;
+  const double tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
+  int histogram[5] = {0, 0, 0, 0, 0};
+  for (size_t i = 0; i < mask.size(); ++i) {
+    ASSERT_EQ(mask[i], std::round(mask[i])) << i;
+    const int pixelClass = int(mask[i]);
+    ASSERT_GE(pixelClass, 0);
+    ASSERT_LE(pixelClass, 4);
+    ++histogram[pixelClass];
+    const float* bounds = &zRange[i * 4];
+    for (int c = 0; c < 4; ++c) ASSERT_TRUE(std::isfinite(bounds[c])) << i;
+    EXPECT_EQ(pixelClass == kClassBackground, positions[i * 4 + 3] == 0) << i;
+    if (pixelClass == kClassBackground) continue;
+    const glm::dvec3 receiver{positions[i * 4], positions[i * 4 + 1], positions[i * 4 + 2]};
+    const glm::dvec3 map = layers.toMap(receiver);
+    const double u = map.x / layers.width(), v = map.y / layers.height();
+    const double margin = 1e-4;
+    const bool clearlyInside = u > margin && u < 1 - margin && v > margin && v < 1 - margin &&
+                               map.z > layers.zNear() * (1 + margin);
+    const bool clearlyOutside = u < -margin || u > 1 + margin || v < -margin || v > 1 + margin;
+    if (clearlyInside) {
+      EXPECT_NE(pixelClass, kClassOutside) << i;
+    }
+    if (clearlyOutside) {
+      EXPECT_EQ(pixelClass, kClassOutside) << i;
+    }
+    if (pixelClass == kClassOutside) continue;
+    // zRange: zNearMin <= zNearMax, both in [0, 1]; w is the receiver's linear light depth.
+    EXPECT_LE(bounds[0], bounds[1]) << i;
+    EXPECT_GE(bounds[0], 0.0f);
+    EXPECT_LE(bounds[1], 1.0f);
+    const double lsDepth = (map.z - light.zNear) / (light.zFar - light.zNear);
+    EXPECT_NEAR(bounds[3], lsDepth, 1e-5) << i;
+    // Lit exactly when the biased end of the rays is not behind zNearMin.
+    const glm::dvec3 normal{normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]};
+    const double cosine = std::max(glm::dot(normal, -glm::dvec3(light.forward)), 0.1);
+    const double zEnd = map.z - std::sqrt(2.0) * map.z * tanHalfFov / (layers.width() * cosine);
+    const double endLsDepth = (zEnd - light.zNear) / (light.zFar - light.zNear);
+    if (pixelClass == kClassLit) {
+      EXPECT_LE(endLsDepth, bounds[0] + 1e-5) << i;
+    } else {
+      EXPECT_GT(endLsDepth, bounds[0] - 1e-5) << i;
+    }
+    if (pixelClass == kClassUmbra) {
+      EXPECT_GE(endLsDepth, bounds[1] - 1e-5) << i;
+    }
+  }
+  const auto& counters = run.frame->counters;
+  EXPECT_EQ(counters.at("classify.lit"), histogram[kClassLit]);
+  EXPECT_EQ(counters.at("classify.penumbra"), histogram[kClassPenumbra]);
+  EXPECT_EQ(counters.at("classify.umbra"), histogram[kClassUmbra]);
+  EXPECT_EQ(counters.at("classify.outside"), histogram[kClassOutside]);
+  EXPECT_EQ(counters.at("classify.lit") + counters.at("classify.penumbra") +
+                counters.at("classify.umbra") + counters.at("classify.outside") +
+                histogram[kClassBackground],
+            double(width * height));
+  EXPECT_GT(histogram[kClassOutside], 0);  // the ground reaches past the light's frustum
+}
+
+// Each iteration (Eq 3.3) only tightens the bounds: pixels move out of penumbra, never in.
+// With no iteration the bounds are the whole map's, the coarsest N-buffer level.
+TEST(Classify, MoreIterationsOnlyMovePixelsOutOfPenumbra) {
+  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=256"}, 160, 160);
+  std::vector<std::vector<int>> byIterations;
+  for (int iterations = 0; iterations <= 4; ++iterations)
+    byIterations.push_back(classesOf(run, iterations));
+  std::vector<int> litCounts;
+  for (int k = 0; k <= 4; ++k) {
+    litCounts.push_back(int(std::count(byIterations[k].begin(), byIterations[k].end(), kClassLit)));
+    if (k == 0) continue;
+    int changedOtherwise = 0;
+    for (size_t i = 0; i < byIterations[k].size(); ++i) {
+      const int before = byIterations[k - 1][i], after = byIterations[k][i];
+      changedOtherwise += before != after && before != kClassPenumbra;
+    }
+    EXPECT_EQ(changedOtherwise, 0) << "iterations " << k - 1 << " -> " << k;
+  }
+  std::printf("lit pixels with 0..4 iterations: %d %d %d %d %d\n", litCounts[0], litCounts[1],
+              litCounts[2], litCounts[3], litCounts[4]);
+  EXPECT_GT(litCounts[2], litCounts[0] + 1000);  // refinement makes a real difference
+
+  // Iterations 0: the whole-map bounds at every receiver in the map.
+  classesOf(run, 0);
+  const auto zRange = run.read("classify.zRange");
+  const auto mask = run.read("classify.mask");
+  const auto nearLayer = run.read("light_layers.near");
+  const float nearMin = *std::min_element(nearLayer.begin(), nearLayer.end());
+  const float nearMax = *std::max_element(nearLayer.begin(), nearLayer.end());
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (int(mask[i]) != kClassBackground && int(mask[i]) != kClassOutside) {
+      ASSERT_EQ(zRange[i * 4], nearMin) << i;
+      ASSERT_EQ(zRange[i * 4 + 1], nearMax) << i;
+    }
+}
+
+// §3.6: the umbra rule is invalid with three layers; the stage also has a switch for it.
+TEST(Classify, NoUmbraWithThreeLayersOrWhenSwitchedOff) {
+  PipelineRun run(makeBuiltinScene("plate"), {"light_layers.resolution=256"}, 128, 128);
+  const double lit = run.frame->counters.at("classify.lit");
+  const double penumbra = run.frame->counters.at("classify.penumbra");
+  const double umbra = run.frame->counters.at("classify.umbra");
+  ASSERT_GT(umbra, 100);
+  for (const char* assignment : {"classify.umbra=false", "trace.layers=three"}) {
+    PipelineRun changed(makeBuiltinScene("plate"),
+                        {"light_layers.resolution=256", std::string(assignment)}, 128, 128);
+    EXPECT_EQ(changed.frame->counters.at("classify.umbra"), 0) << assignment;
+    EXPECT_EQ(changed.frame->counters.at("classify.lit"), lit) << assignment;
+    EXPECT_EQ(changed.frame->counters.at("classify.penumbra"), penumbra + umbra) << assignment;
   }
 }

@@ -47,7 +47,8 @@ TEST(Md5Reference, Rfc1321TestSuite) {
 // md5rand64 is MD5 of the 16 little-endian seed bytes. Expected words from Python's hashlib:
 // struct.unpack('<4I', hashlib.md5(struct.pack('<4I', *seed)).digest()).
 TEST(Md5Reference, Md5Rand64IsMd5OfTheSeedBytes) {
-  EXPECT_EQ(md5ref::md5Rand64({1, 0, 0, 0}, 0), glm::uvec4(0xff336907u, 0x11d10499u, 0x2c6e890du, 0xe5395e52u));
+  EXPECT_EQ(md5ref::md5Rand64({1, 0, 0, 0}, 0),
+            glm::uvec4(0xff336907u, 0x11d10499u, 0x2c6e890du, 0xe5395e52u));
   // The key is XORed into every word: seed ^ key = (0xdeadbeef, 0x01234567, 0x89abcdef, ~0).
   const std::uint32_t key = 0x5a5a5a5au;
   EXPECT_EQ(md5ref::md5Rand64({0xdeadbeefu ^ key, 0x01234567u ^ key, 0x89abcdefu ^ key, ~key}, key),
@@ -67,7 +68,8 @@ const glm::uvec4 kMd5Rand16Linear[4] = {
 
 TEST(Md5Reference, ThesisHashLiterals) {
   for (std::uint32_t i = 1; i <= 4; ++i)
-    EXPECT_EQ(hex(md5ref::md5Rand16({i, 0, 0, 0}, 0)), hex(kMd5Rand16Linear[i - 1])) << "seed " << i;
+    EXPECT_EQ(hex(md5ref::md5Rand16({i, 0, 0, 0}, 0)), hex(kMd5Rand16Linear[i - 1]))
+        << "seed " << i;
 }
 
 TEST(HashGpu, ThesisHashLiteralsOnTheGpu) {
@@ -75,7 +77,8 @@ TEST(HashGpu, ThesisHashLiteralsOnTheGpu) {
   GpuHashBatch batch;
   std::vector<glm::uvec4> hashes(4);
   batch.hashLinear(1, 4, 0, HashKind::Md5_16, hashes.data());
-  for (int i = 0; i < 4; ++i) EXPECT_EQ(hex(hashes[i]), hex(kMd5Rand16Linear[i])) << "seed " << i + 1;
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ(hex(hashes[i]), hex(kMd5Rand16Linear[i])) << "seed " << i + 1;
 }
 
 // 10^6 inputs per hash, in 100 batches of 10^4, each batch with its own random key: half
@@ -194,7 +197,8 @@ TEST(HashCommand, BadOptionsAreRejectedNamingTheValidHashes) {
   options.hash = "sha1";
   const std::string problem = checkHashOptions(options);
   EXPECT_NE(problem.find("sha1"), std::string::npos) << problem;
-  for (const char* name : kHashKindNames) EXPECT_NE(problem.find(name), std::string::npos) << problem;
+  for (const char* name : kHashKindNames)
+    EXPECT_NE(problem.find(name), std::string::npos) << problem;
   EXPECT_EQ(runHashCommand(options), 2);
   options.hash = "md5_16";
   options.count = 0;
@@ -218,7 +222,8 @@ TEST(HashCommand, CliWritesLittleEndianWordsAndRejectsUnknownHashes) {
 
   const auto bad = runPenumbra("hash --hash sha1 --count 2");
   EXPECT_EQ(bad.exitCode, 2);
-  for (const char* name : kHashKindNames) EXPECT_NE(bad.output.find(name), std::string::npos) << bad.output;
+  for (const char* name : kHashKindNames)
+    EXPECT_NE(bad.output.find(name), std::string::npos) << bad.output;
 }
 
 // The stage: every pixel's first light sample is toUnitSquare(hash((x, y, 0, 0), key).xy),

@@ -84,12 +84,13 @@ void hitInterval(const RayDepth& depth, const TexelSpan& span, double lo, double
 // One and two layers differ only in the solid interval of a texel.
 template <class Solid>
 OracleHit trace(const LayerMaps& maps, const OracleRay& ray, float zNear, float zFar,
-                Solid solid) {
+                Solid solid, std::vector<OccludedPiece>* pieces = nullptr) {
   const RayDepth depth(ray, zNear, zFar);
   const std::vector<TexelSpan> spans = texelSpans(ray, {0, 0}, {maps.width, maps.height});
   OracleHit hit;
   hit.texelsOnRay = int(spans.size());
-  for (const TexelSpan& span : spans) {
+  for (size_t index = 0; index < spans.size(); ++index) {
+    const TexelSpan& span = spans[index];
     if (!hit.occluded) ++hit.texelsVisited;
     double lo, hi;
     solid(span.texel, lo, hi);
@@ -101,6 +102,7 @@ OracleHit trace(const LayerMaps& maps, const OracleRay& ray, float zNear, float 
     }
     double sBegin, sEnd;
     hitInterval(depth, span, lo, hi, sBegin, sEnd);
+    if (pieces) pieces->push_back({span.texel, int(index), sBegin, sEnd});
     if (!hit.occluded) {
       hit.occluded = true;
       hit.s = sBegin, hit.sFirstHitEnd = sEnd, hit.texel = span.texel;
@@ -144,12 +146,14 @@ Verdict classify(const LayerMaps& maps, const OracleRay& ray, float zNear, float
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 
-  // Does the ray, inside the box, reach lsDepth in the closed [lo, hi]?
-  auto reaches = [&](glm::dvec2 boxLo, glm::dvec2 boxHi, double lo, double hi) {
+  // Inside the box the ray's depth runs over [dMin, dMax]; moved by up to `shift` at each end
+  // (continuously, monotone), does it still meet [lo, hi] (shift = +dd: always; shift = -dd:
+  // possibly)? A crossing of a sheet (lo == hi) deep enough is thus a sure hit.
+  auto reaches = [&](glm::dvec2 boxLo, glm::dvec2 boxHi, double lo, double hi, double shift) {
     double s0, s1;
-    if (lo > hi || !clipToBox(ray, boxLo, boxHi, s0, s1)) return false;
+    if (!clipToBox(ray, boxLo, boxHi, s0, s1)) return false;
     const double d0 = depth.at(s0), d1 = depth.at(s1);
-    return std::max(std::min(d0, d1), lo) <= std::min(std::max(d0, d1), hi);
+    return std::min(d0, d1) + shift <= hi && std::max(d0, d1) - shift >= lo;
   };
   bool possible = false;
   for (int index : candidates) {
@@ -158,8 +162,8 @@ Verdict classify(const LayerMaps& maps, const OracleRay& ray, float zNear, float
     solid(t, lo, hi);
     if (lo > hi) continue;
     const glm::dvec2 corner(t);
-    if (reaches(corner + e, corner + 1.0 - e, lo + dd, hi - dd)) return Verdict::Occluded;
-    possible = possible || reaches(corner - e, corner + 1.0 + e, lo - dd, hi + dd);
+    if (reaches(corner + e, corner + 1.0 - e, lo, hi, dd)) return Verdict::Occluded;
+    possible = possible || reaches(corner - e, corner + 1.0 + e, lo, hi, -dd);
   }
   return possible ? Verdict::Ambiguous : Verdict::Clear;
 }
@@ -253,6 +257,12 @@ std::vector<TexelSpan> texelSpans(const OracleRay& ray, glm::ivec2 lo, glm::ivec
 
 OracleHit traceTwoLayers(const LayerMaps& maps, const OracleRay& ray, float zNear, float zFar) {
   return trace(maps, ray, zNear, zFar, twoLayerSolid(maps));
+}
+std::vector<OccludedPiece> occludedPieces(const LayerMaps& maps, const OracleRay& ray, float zNear,
+                                          float zFar) {
+  std::vector<OccludedPiece> pieces;
+  trace(maps, ray, zNear, zFar, twoLayerSolid(maps), &pieces);
+  return pieces;
 }
 OracleHit traceOneLayer(const LayerMaps& maps, const OracleRay& ray, float zNear, float zFar) {
   return trace(maps, ray, zNear, zFar, oneLayerSolid(maps));

@@ -21,8 +21,11 @@
 //   in the map. near > far (cleared near = 1 / far = 0, or a "both" texel) holds nothing.
 // - One layer (§3.2): occluded iff some s has lsDepth(s) >= near[T] (T in the map).
 // - Three layers (§3.4): a point between near and far occludes only if the eye cannot see it.
-//   Not exact: each texel's s-interval is sampled at its owned ends and `interiorSamples`
-//   evenly spaced interior points (a continuous answer would need the eye buffer's geometry).
+//   Not exact: within each texel, the exact piece of the ray inside [near, far] (see
+//   occludedPieces) is sampled at its two ends and `interiorSamples` evenly spaced interior
+//   points (a continuous answer would need the eye buffer's geometry). So a sheet crossing
+//   (a one-point piece) is still tested, and with an eye that sees nothing the answer is
+//   exactly the two-layer one.
 //
 // FLOATING POINT: inputs are float, all work is double. Boundary crossings are
 // s_k = (k - A) / (B - A) per axis, always by that one expression, so equal crossings (corner
@@ -101,11 +104,24 @@ struct OracleHit {
 OracleHit traceTwoLayers(const LayerMaps& maps, const OracleRay& ray, float zNear, float zFar);
 OracleHit traceOneLayer(const LayerMaps& maps, const OracleRay& ray, float zNear, float zFar);
 
-// Error-tolerant verdict, for comparing an implementation whose ray positions may be off by
-// up to `texels` (max norm, < 0.5) and its ray depths by up to `lsDepth`: Occluded if the ray
-// is occluded even with every texel shrunk by `texels` and every [near, far] by `lsDepth` on
-// each side; Clear if it is clear even with texels grown and intervals widened by as much;
-// otherwise Ambiguous (the implementation may answer either way). Closed boxes throughout.
+// Two layers, every piece: for each visited texel where the ray meets [near, far], the s-interval
+// inside it where lsDepth is in [near, far] (the closure; s0 == s1 when the ray touches a
+// sheet near == far or a corner point). spanIndex counts in-map texels along the ray from 0.
+struct OccludedPiece {
+  glm::ivec2 texel;
+  int spanIndex;
+  double s0, s1;
+};
+std::vector<OccludedPiece> occludedPieces(const LayerMaps& maps, const OracleRay& ray, float zNear,
+                                          float zFar);
+
+// Error-tolerant verdict, for comparing an exact traversal computed with small errors: its ray
+// points off by up to `texels` (max norm, < 0.5) and its ray depth, still continuous and
+// monotone in s, off by up to `lsDepth`. Occluded: some texel, shrunk by `texels`, holds a
+// piece of the ray whose depth range [dMin, dMax] satisfies dMin + lsDepth <= far and
+// dMax - lsDepth >= near (every such implementation sees a hit; a sheet near == far crossed
+// with margin counts). Clear: no texel grown by `texels` holds a piece with
+// dMin - lsDepth <= far and dMax + lsDepth >= near. Otherwise Ambiguous. Closed boxes.
 enum class Verdict { Clear, Occluded, Ambiguous };
 struct Tolerance {
   double texels = 1e-3, lsDepth = 1e-5;

@@ -55,34 +55,26 @@ OracleRay makeRay(const LightFrame& frame, const AreaLight& light, int mapW, int
 OracleHit traceThreeLayers(const LayerMaps& maps, const OracleRay& ray, const LightFrame& frame,
                            const EyeVisibility& visibleFromEye, int interiorSamples) {
   const RayDepth depth(ray, frame.zNear, frame.zFar);
-  const std::vector<TexelSpan> spans = texelSpans(ray, {0, 0}, {maps.width, maps.height});
   OracleHit hit;
-  hit.texelsOnRay = int(spans.size());
-  std::vector<double> samples;
-  for (const TexelSpan& span : spans) {
-    if (!hit.occluded) ++hit.texelsVisited;
-    const double lo = maps.nearAt(span.texel), hi = maps.farAt(span.texel);
-    if (lo > hi || hit.occluded) continue;
-    // Owned ends plus evenly spaced interior points (a point span is its one point).
-    samples.clear();
-    if (span.owns0) samples.push_back(span.s0);
-    for (int k = 1; k <= interiorSamples && span.s1 > span.s0; ++k)
-      samples.push_back(span.s0 + (span.s1 - span.s0) * k / (interiorSamples + 1));
-    if (span.owns1 && span.s1 > span.s0) samples.push_back(span.s1);
-    for (double s : samples) {
-      const double d = depth.at(s);
-      if (d < lo || d > hi) continue;
+  hit.texelsOnRay = int(texelSpans(ray, {0, 0}, {maps.width, maps.height}).size());
+  hit.texelsVisited = hit.texelsOnRay;
+  for (const OccludedPiece& piece : occludedPieces(maps, ray, frame.zNear, frame.zFar)) {
+    // Samples of the part of the ray inside [near, far]: its ends and interior points.
+    const int last = piece.s1 > piece.s0 ? interiorSamples + 1 : 0;
+    for (int k = 0; k <= last; ++k) {
+      const double s = k == last ? piece.s1 : piece.s0 + (piece.s1 - piece.s0) * k / (interiorSamples + 1);
       const glm::dvec3 ws =
           worldFromLightMap(frame, maps.width, maps.height, rayPoint(ray, s), depth.zAt(s));
-      if (visibleFromEye(ws)) continue;  // §3.4: seen by the eye, so empty space
+      if (visibleFromEye(ws)) continue;  // §3.4: the eye sees this point, so it is empty space
       hit.occluded = true;
       hit.s = hit.sFirstHitEnd = s;
-      hit.texel = span.texel;
+      hit.texel = piece.texel;
+      hit.texelsVisited = piece.spanIndex + 1;
       hit.clearance = 0;
-      break;
+      return hit;  // sampled: hitLength stays 0
     }
   }
-  return hit;  // sampled: hitLength stays 0, clearance is not measured
+  return hit;  // clearance is not measured for three layers
 }
 
 float denseVisibility(const LightFrame& frame, const AreaLight& light, int mapW, int mapH,

@@ -15,7 +15,8 @@ std::uint32_t rotl(std::uint32_t x, int s) { return (x << s) | (x >> (32 - s)); 
 const std::array<std::uint32_t, 65>& sineTable() {
   static const std::array<std::uint32_t, 65> table = [] {
     std::array<std::uint32_t, 65> t{};
-    for (int i = 1; i <= 64; ++i) t[i] = std::uint32_t(std::floor(4294967296.0 * std::fabs(std::sin(double(i)))));
+    for (int i = 1; i <= 64; ++i)
+      t[i] = std::uint32_t(std::floor(4294967296.0 * std::fabs(std::sin(double(i)))));
     return t;
   }();
   return table;
@@ -37,7 +38,7 @@ void processBlock(std::uint32_t state[4], const std::uint8_t* block) {
   std::uint32_t a = state[0], b = state[1], c = state[2], d = state[3];
   auto step = [&](auto fn, std::uint32_t& p, std::uint32_t q, std::uint32_t r, std::uint32_t s,
                   int k, int shift, int i) { p = q + rotl(p + fn(q, r, s) + X[k] + T[i], shift); };
-  // Round 1.
+  // Per round: (k, s, i) of each step, as listed in the RFC.
   const int r1[16][3] = {{0, 7, 1},   {1, 12, 2},  {2, 17, 3},  {3, 22, 4},
                          {4, 7, 5},   {5, 12, 6},  {6, 17, 7},  {7, 22, 8},
                          {8, 7, 9},   {9, 12, 10}, {10, 17, 11}, {11, 22, 12},
@@ -85,7 +86,8 @@ Digest md5(const void* data, size_t size) {
   for (int j = 0; j < 8; ++j) message.push_back(std::uint8_t(bits >> (8 * j)));
   // §3.3: A = 01 23 45 67, B = 89 ab cd ef, C = fe dc ba 98, D = 76 54 32 10 (low byte first).
   std::uint32_t state[4] = {0x67452301u, 0xefcdab89u, 0x98badcfeu, 0x10325476u};
-  for (size_t offset = 0; offset < message.size(); offset += 64) processBlock(state, &message[offset]);
+  for (size_t offset = 0; offset < message.size(); offset += 64)
+    processBlock(state, &message[offset]);
   Digest digest;
   for (int w = 0; w < 4; ++w)
     for (int j = 0; j < 4; ++j) digest[4 * w + j] = std::uint8_t(state[w] >> (8 * j));

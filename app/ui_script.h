@@ -1,0 +1,55 @@
+// `penumbra --script FILE`: a JSON list of UI actions run in order, then the window exits
+// (for tests, reports and lesson figures). Each action is an object with one key:
+//
+//   {"select_stage": "hard_shadow"}          {"select_output": "light_layers.near"}
+//   {"set": {"hard_shadow.bias": 0.01}}      {"pick": [x, y]}   (active view; row 0 at top)
+//   {"select_ray": 3}                        {"wait": 2}        (frames)
+//   {"export_view": "dir" | "f.png" | "f.exr"}   {"export_all": "dir"}
+//   {"screenshot": "f.png"}                  {"view": 0 | 1}    (active view; 1 opens B)
+//   {"two_views": true}   {"lock": true}     {"eye_size": [640, 480] | "fit"}
+//   {"scene": "plate"}    {"colormap": "perceptual"}   {"channels": "G"}   {"level": 2}
+//   {"range": [0, 1] | "autofit" | "reset"}  {"overlay": true}   {"zoom": 4 | "fit" | "1:1"}
+//   {"camera_orbit": [yaw, pitch] (degrees)} {"camera_dolly": 0.8}
+//   {"settings": {...settings JSON...}}      {"load_settings": "f.json"}
+//   {"save_settings": "f.json"}              {"reload_shaders": true}   {"help": true}
+//   {"run_every_frame": true}                {"print_timing": "label"}  (stdout)
+//   {"print_pick": "label"}  (stdout: the pick's values in every output of its size, and
+//                             the number of steps the ray trace panel shows)
+//
+// The whole file is checked before the window opens (names, argument types); actions that
+// fail while running (an unknown output, a value out of range) stop the script. Either way
+// the message names the action and what is valid, and penumbra exits with status 2.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+class UiState;
+
+struct ScriptAction {
+  size_t index;  // 1-based position in the file, for messages
+  std::string name;
+  nlohmann::json argument;
+};
+
+// 1. Reads and checks a script file; "" or the message.
+std::string parseScriptFile(const std::string& path, std::vector<ScriptAction>& actions);
+std::string parseScriptJson(const nlohmann::json& root, std::vector<ScriptAction>& actions);
+
+// 2. Runs actions frame by frame.
+class ScriptRunner {
+public:
+  enum class Step { Running, Done, Failed };
+  explicit ScriptRunner(std::vector<ScriptAction> actions) : actions_(std::move(actions)) {}
+  // Runs actions until one needs frames to pass (wait, screenshot) or the list ends.
+  Step step(UiState& state);
+  const std::string& error() const { return error_; }
+
+private:
+  std::string run(UiState& state, const ScriptAction& action);  // "" or the problem
+  std::vector<ScriptAction> actions_;
+  size_t next_ = 0;
+  int waitFrames_ = 0;
+  std::string pendingScreenshot_;  // taken one frame later: new windows size themselves first
+  std::string error_;
+};
