@@ -37,7 +37,9 @@ std::string Pipeline::set(const std::string& assignment) {
   if (equals == std::string::npos)
     return "'" + assignment + "' is not of the form stage.key=value";
   try {
-    return param(assignment.substr(0, equals)).set(assignment.substr(equals + 1));
+    const std::string key = assignment.substr(0, equals);
+    const std::string problem = param(key).set(assignment.substr(equals + 1));
+    return problem.empty() ? "" : key + ": " + problem;
   } catch (const std::out_of_range& error) {
     return error.what();
   }

@@ -135,7 +135,21 @@ void drawRayTrace(UiState& state) {
   glm::ivec2 lightMap{0};
   if (state.frame->has("light_layers.near"))
     lightMap = {state.frame->input("light_layers.near").width(), state.frame->input("light_layers.near").height()};
-  drawRayTracePanel(trace, lightMap, state.overlays);
+  ImGui::Checkbox("own window", &state.traceWindow);
+  if (!state.traceWindow) {
+    drawRayTracePanel(trace, lightMap, state.overlays);
+    return;
+  }
+  // A larger, movable window for the step table.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({display.x * 0.28f, display.y * 0.5f}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({display.x * 0.4f, display.y * 0.46f}, ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Ray trace of the picked pixel", &state.traceWindow)) {
+    ImGui::SetNextItemWidth(200);
+    ImGui::SliderInt("ray##window", &state.selectedRay, 0, std::max(trace.raysPerPixel - 1, 0));
+    drawRayTracePanel(trace, lightMap, state.overlays);
+  }
+  ImGui::End();
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 
 #include "ui_camera.h"
 #include "ui_export.h"
@@ -59,7 +60,8 @@ const std::map<std::string, Check>& actionChecks() {
        }},
       {"settings", kObject}, {"load_settings", kString}, {"save_settings", kString},
       {"reload_shaders", kBool}, {"help", kBool}, {"run_every_frame", kBool},
-      {"print_timing", kString}, {"print_pick", kString}};
+      {"print_timing", kString}, {"print_pick", kString}, {"camera_moving", kBool},
+      {"trace_window", kBool}, {"mouse", kPair}};
   return checks;
 }
 
@@ -129,7 +131,10 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
       return Step::Running;
     }
     if (action.name == "screenshot") return Step::Running;
-    if (state.dirty) return Step::Running;  // the next action sees the re-run pipeline
+    // The next action sees the re-run pipeline and the new layout.
+    static const std::set<std::string> layoutChanging = {
+        "select_output", "select_stage", "two_views", "view", "help", "trace_window", "camera_moving"};
+    if (state.dirty || layoutChanging.count(action.name)) return Step::Running;
   }
   return Step::Done;
 }
@@ -255,7 +260,10 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   if (name == "overlay") { view.settings.overlay = a.get<bool>(); return ""; }
   if (name == "zoom") {
     if (a == "fit") view.fitPending = true;
-    else if (a == "1:1") view.transform.oneToOne();
+    else if (a == "1:1") {
+      view.transform.oneToOne();
+      view.fitted = false;
+    }
     else {
       // Settle a pending fit first, then zoom about the pick if it lies in this texture.
       const GlTexture* texture = activeTexture(state);
@@ -265,15 +273,18 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
         view.lastTextureSize = {texture->width(), texture->height()};
       }
       view.transform.zoom = std::clamp(a.get<float>(), kMinZoom, kMaxZoom);
+      view.fitted = false;
       // Centre on what matters in this texture: the ray's visited windows, else the pick.
       const glm::ivec2 size = texture ? glm::ivec2(texture->width(), texture->height()) : glm::ivec2(0);
       if (texture && state.pick && state.pickSpace == size)
         view.transform.center = glm::vec2(*state.pick) + 0.5f;
+      glm::vec2 lo{1e30f}, hi{-1e30f};
       for (const ViewOverlayShape& shape : state.overlays)
         if (shape.space == size && !shape.line) {
-          view.transform.center = 0.5f * (shape.a + shape.b);
-          break;
+          lo = glm::min(lo, glm::min(shape.a, shape.b));
+          hi = glm::max(hi, glm::max(shape.a, shape.b));
         }
+      if (lo.x <= hi.x) view.transform.center = 0.5f * (lo + hi);
     }
     return "";
   }
@@ -298,5 +309,8 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   if (name == "run_every_frame") { state.runEveryFrame = a.get<bool>(); return ""; }
   if (name == "print_timing") { printTiming(state, a.get<std::string>()); return ""; }
   if (name == "print_pick") { printPick(state, a.get<std::string>()); return ""; }
+  if (name == "camera_moving") { state.scriptMovesCamera = a.get<bool>(); return ""; }
+  if (name == "trace_window") { state.traceWindow = a.get<bool>(); return ""; }
+  if (name == "mouse") { state.cursorRequest = glm::vec2(a[0].get<float>(), a[1].get<float>()); return ""; }
   return "not implemented";
 }

@@ -15,6 +15,9 @@
 //   {"run_every_frame": true}                {"print_timing": "label"}  (stdout)
 //   {"print_pick": "label"}  (stdout: the pick's values in every output of its size, and
 //                             the number of steps the ray trace panel shows)
+//   {"camera_moving": true}  (as while dragging the camera: the preview resolution)
+//   {"trace_window": true}   (the ray trace panel in its own large window)
+//   {"mouse": [x, y]}        (moves the mouse there, window pixels: hover readouts)
 //
 // The whole file is checked before the window opens (names, argument types); actions that
 // fail while running (an unknown output, a value out of range) stop the script. Either way

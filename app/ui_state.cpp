@@ -1,6 +1,7 @@
 #include "ui_state.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "scene_builtin.h"
@@ -10,6 +11,7 @@ namespace {
 
 constexpr size_t kTimingHistory = 15;  // pipeline runs in the median
 constexpr size_t kFrameHistory = 30;   // UI frames in the fps readout
+constexpr double kPreviewMs = 80;      // target time of a run while the camera moves
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0;
@@ -156,10 +158,15 @@ bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
   if (eye.fitView && (viewRegion.x <= 0 || viewRegion.y <= 0)) return false;  // no layout yet
   glm::ivec2 size = eye.fitView ? glm::max(viewRegion, glm::ivec2(64))
                                 : glm::ivec2(eye.width, eye.height);
-  if (previewing) size = glm::max(size / 2, glm::ivec2(32));
+  if (eye.fitView && size != requestedEye) {  // resizing: wait until the size holds
+    requestedEye = size;
+    return false;
+  }
+  if (previewing) size = glm::max(size / previewDivisor, glm::ivec2(32));
   if (size.x != frame->eyeWidth || size.y != frame->eyeHeight) {
     frame->eyeWidth = size.x;
     frame->eyeHeight = size.y;
+    recentTimes.clear();  // medians compare runs of one size
     dirty = true;
   }
   if (!dirty && !runEveryFrame) return false;
@@ -171,9 +178,21 @@ bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
     return false;
   }
   ++pipelineRuns;
+  if (!previewing) {
+    fullResolutionMs = 0;
+    for (const StageTime& time : pipeline.lastTimes()) fullResolutionMs += time.milliseconds;
+  }
   recentTimes.push_back(pipeline.lastTimes());
   if (recentTimes.size() > kTimingHistory) recentTimes.pop_front();
   return true;
+}
+
+// A preview only where the full run is slow: 1/d resolution costs about 1/d^2.
+void UiState::setCameraMoving(bool moving) {
+  if (moving && !previewing)
+    previewDivisor = std::clamp(int(std::ceil(std::sqrt(fullResolutionMs / kPreviewMs))), 1, 4);
+  if (!moving && previewing && previewDivisor > 1) dirty = true;  // full resolution again
+  previewing = moving;
 }
 
 // 6. Medians over recent runs (DESIGN.md §7: median of N frames).

@@ -25,8 +25,10 @@ struct ViewPanel {
   std::string settingsFor;    // the output `settings` were initialised from
   ViewTransform transform;
   bool fitPending = true;     // fit on the next draw (new output, new size, "Fit")
+  bool fitted = false;        // still as fitted (no zoom / pan since): refit on resize
   bool autofitPending = false;
   glm::vec2 regionSize{0, 0};  // the image region drawn last frame (screen pixels)
+  glm::vec2 eyeRegion{0, 0};   // the view's area less a fixed toolbar reserve: "fit view" eye
   glm::ivec2 lastTextureSize{0, 0};  // to keep the picture in place when the size changes
   TextureView renderer;
 };
@@ -66,16 +68,22 @@ public:
   // 3. Run control and messages.
   bool dirty = true;           // the pipeline must run (parameters, camera, light, size...)
   bool runEveryFrame = false;  // for timing: ignore `dirty`
-  bool previewing = false;     // camera moving: eye at half resolution
+  bool previewing = false;     // camera moving: eye at 1/previewDivisor resolution
+  int previewDivisor = 1;      // chosen so a preview run takes about kPreviewMs
+  double fullResolutionMs = 0;  // the last run at full resolution
+  bool scriptMovesCamera = false;  // a script's "camera_moving": as if the mouse dragged
   std::string status;          // the status line: what happened last
   std::string shaderLog;       // last failed hot reload
   bool showHelp = false, showShaderLog = false;
+  bool traceWindow = false;    // the ray trace panel in its own window instead of the inspector
   std::string screenshotRequest;  // saved at the end of this frame (script, key)
+  std::optional<glm::vec2> cursorRequest;  // script: move the mouse here (window pixels)
 
   // 4. Timing: recent pipeline runs and frame intervals.
   std::deque<std::vector<StageTime>> recentTimes;
   std::deque<double> frameSeconds;
   int pipelineRuns = 0;
+  glm::ivec2 requestedEye{0, 0};  // "fit view": runs once the layout holds for a frame
 
   // Actions. Each returns "" or a message naming what is valid.
   std::string loadScene(const std::string& source);  // keeps the old scene on failure
@@ -95,6 +103,8 @@ public:
   // Runs the pipeline if dirty (or runEveryFrame) at the eye size for `viewRegion`.
   // Returns true if it ran.
   bool runIfNeeded(glm::ivec2 viewRegion);
+  // Called each frame with whether the mouse moves the camera: starts / ends the preview.
+  void setCameraMoving(bool moving);
   double medianStageMs(const std::string& stage) const;
   double medianPipelineMs() const;
   double framesPerSecond() const;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ui_camera.h"
+#include "ui_nbuffer_hover.h"
 #include "ui_state.h"
 #include "ui_view_toolbar.h"
 
@@ -38,9 +39,10 @@ void syncSettings(UiState& state, ViewPanel& view, const GlTexture& texture) {
 void placeImage(ViewPanel& view, const GlTexture& texture, glm::vec2 regionSize) {
   const glm::ivec2 size{texture.width(), texture.height()};
   glm::ivec2& lastSize = view.lastTextureSize;
-  if (view.fitPending || lastSize.x == 0) {
+  if (view.fitPending || lastSize.x == 0 || (view.fitted && (size != lastSize || regionSize != view.regionSize))) {
     view.transform.fit(glm::vec2(size), regionSize);
     view.fitPending = false;
+    view.fitted = true;
   } else if (size != lastSize) {  // same picture at another resolution (preview, resize)
     const float ratio = float(size.x) / float(lastSize.x);
     view.transform.zoom /= ratio;
@@ -51,7 +53,7 @@ void placeImage(ViewPanel& view, const GlTexture& texture, glm::vec2 regionSize)
 
 // 2. Image, texel grid, overlay rectangles, pick marker, all clipped to the region.
 void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& display,
-               glm::vec2 origin, glm::vec2 regionSize) {
+               glm::vec2 origin, glm::vec2 regionSize, std::optional<glm::ivec2> hover) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ViewTransform& t = view.transform;
   const glm::ivec2 size{display.width(), display.height()};
@@ -81,6 +83,14 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
     else draw->AddRect({std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)},
                        shape.color, 0, 0, 1.5f);
   }
+  // N-buffer: the level-0 window the hovered texel of this level summarises.
+  if (hover && view.output == kNBufferOutput && view.settings.layer > 0 && hover->x >= 0 &&
+      hover->y >= 0 && hover->x < size.x && hover->y < size.y) {
+    glm::ivec2 lo, hi;
+    nbufferWindow(view.settings.layer, *hover, size, lo, hi);
+    texelRect(t, lo, hi, origin, regionSize, topLeft, bottomRight);
+    draw->AddRect(topLeft, bottomRight, IM_COL32(0, 230, 255, 255), 0, 0, 2);
+  }
   if (state.pick && state.pickSpace == size) {
     texelRect(t, *state.pick, *state.pick, origin, regionSize, topLeft, bottomRight);
     const ImVec2 centre{0.5f * (topLeft.x + bottomRight.x), 0.5f * (topLeft.y + bottomRight.y)};
@@ -107,10 +117,13 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
       state.dirty = true;
     } else {
       view.transform.zoomAbout(std::pow(1.25f, io.MouseWheel), mouse, origin, regionSize);
+      view.fitted = false;
     }
   }
-  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
     view.transform.pan(toGlm(io.MouseDelta));
+    view.fitted = false;
+  }
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       io.MouseDragMaxDistanceSqr[0] < io.MouseDragThreshold * io.MouseDragThreshold && hovered)
     state.setPick(view.transform.texelAt(mouse, origin, regionSize), size);
@@ -173,6 +186,13 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) &&
       (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)))
     state.activeView = index;
+  // The eye size for "fit view" depends on the view's size only, not on how the toolbar of
+  // the current output wraps, so choosing another output never re-runs the pipeline. The
+  // reserve is the toolbar's widest case (about 1150 pixels of controls) plus the readout.
+  const ImVec2 whole = ImGui::GetContentRegionAvail();
+  const float toolbarLines = std::max(2.0f, std::ceil(1150.0f / std::max(whole.x, 1.0f)));
+  view.eyeRegion = {whole.x, whole.y - toolbarLines * ImGui::GetFrameHeightWithSpacing() -
+                                 ImGui::GetTextLineHeightWithSpacing()};
   if (state.twoViews) {
     ImGui::TextColored(active ? ImVec4(0.9f, 0.7f, 0.25f, 1) : ImVec4(0.6f, 0.6f, 0.6f, 1), "%s",
                        index == 0 ? "A" : "B");
@@ -185,13 +205,14 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const glm::vec2 regionSize{std::max(avail.x, 16.0f), std::max(avail.y - readoutHeight, 16.0f)};
-  view.regionSize = regionSize;
   bool movingCamera = false;
   if (!texture) {
+    view.regionSize = regionSize;
     ImGui::Dummy(toIm(regionSize));
     ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
   } else {
     placeImage(view, *texture, regionSize);
+    view.regionSize = regionSize;
     const glm::vec2 origin = toGlm(ImGui::GetCursorScreenPos());
     ImGui::InvisibleButton("image", toIm(regionSize),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
@@ -201,7 +222,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     std::optional<glm::ivec2> hover;
     if (ImGui::IsItemHovered())
       hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);
-    drawImage(state, view, view.renderer.render(*texture, view.settings), origin, regionSize);
+    drawImage(state, view, view.renderer.render(*texture, view.settings), origin, regionSize, hover);
     drawReadout(state, view, *texture, hover);
   }
   ImGui::EndChild();

@@ -112,7 +112,10 @@ void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture
   sameLineIfFits(140);
   if (ImGui::Button("Fit")) view.fitPending = true;
   ImGui::SameLine();
-  if (ImGui::Button("1:1")) view.transform.oneToOne();
+  if (ImGui::Button("1:1")) {
+    view.transform.oneToOne();
+    view.fitted = false;
+  }
   ImGui::SameLine();
   ImGui::TextDisabled("%.0f%%", view.transform.zoom * 100);
   sameLineIfFits(90);

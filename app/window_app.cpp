@@ -84,7 +84,10 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   const GlTexture* texture =
       state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) view.fitPending = true;
-  if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) view.transform.oneToOne();
+  if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) {
+    view.transform.oneToOne();
+    view.fitted = false;
+  }
   if (ImGui::IsKeyPressed(GLFW_KEY_A, false) && texture) autofitView(view, *texture);
   if (ImGui::IsKeyPressed(GLFW_KEY_R, false) && texture) resetView(state, view, *texture);
   const int step = io.KeyShift ? 10 : 1;
@@ -106,7 +109,10 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
                 state.frame ? state.frame->eyeWidth : 0, state.frame ? state.frame->eyeHeight : 0,
                 pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.framesPerSecond(),
                 state.runEveryFrame ? "runs every frame" : "runs on change",
-                state.previewing ? " | PREVIEW (half resolution while the camera moves)" : "");
+                state.previewing && state.previewDivisor > 1
+                    ? (" | PREVIEW at 1/" + std::to_string(state.previewDivisor) +
+                       " resolution while the camera moves").c_str()
+                    : "");
   const float speedWidth = ImGui::CalcTextSize(speed).x;
   ImGui::PushClipRect(ImGui::GetCursorScreenPos(),
                       {layout.width - speedWidth - 20, layout.height}, true);
@@ -227,6 +233,7 @@ int runWindow(const WindowOptions& options) {
     std::unique_ptr<ScriptRunner> runner;
     if (!options.script.empty()) runner = std::make_unique<ScriptRunner>(std::move(actions));
     int framesRendered = 0, screenshotCount = 0;
+    bool draggingSlider = false;
     auto last = std::chrono::steady_clock::now();
     while (result == 0 && !glfwWindowShouldClose(window)) {
       // 7a. Events: wait when idle, so an idle window costs no CPU.
@@ -246,19 +253,26 @@ int runWindow(const WindowOptions& options) {
         }
         if (step == ScriptRunner::Step::Done) break;
       }
+      if (state->cursorRequest) {  // a script's "mouse": as if the user moved it there
+        glfwSetCursorPos(window, state->cursorRequest->x, state->cursorRequest->y);
+        state->cursorRequest.reset();
+      }
       // 7c. The pipeline, only when something changed.
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
       recordPickedPixel(*state);
-      state->runIfNeeded(glm::ivec2(state->views[0].regionSize));
+      state->runIfNeeded(glm::ivec2(state->views[0].eyeRegion));
       // 7d. The UI.
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       handleShortcuts(*state, window, screenshotCount);
+      const bool wasDirty = state->dirty;
       const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y));
-      if (state->previewing && !moving) state->dirty = true;  // full resolution again
-      state->previewing = moving;
+      // A slider dragged since its press counts as moving too: preview until released.
+      if (!ImGui::IsAnyItemActive()) draggingSlider = false;
+      else if (!wasDirty && state->dirty) draggingSlider = true;
+      state->setCameraMoving(moving || draggingSlider || state->scriptMovesCamera);
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, width, height);

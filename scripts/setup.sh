@@ -6,6 +6,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev nlohmann-json3-dev
   libopenimageio-dev openimageio-tools libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
   xvfb xauth libcli11-dev googletest libgtest-dev assimp-testmodels
+  libembree-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -37,9 +37,11 @@ public:
                                      "region of the map the rays can cross to the part "
                                      "beyond the current zNearMin (§3.6; two usually suffice).",
                        2, 0, 4),
-        Param::boolean("umbra", "Classify umbra (receiver behind zNearMax). Valid for a "
-                                "single depth layer; always off when trace.layers is three "
-                                "(§3.6).", true),
+        Param::boolean("umbra", "Classify umbra (receiver behind zNearMax), as the thesis "
+                                "does (§3.6). Exact for a single depth layer; with two layers "
+                                "a ray can slip between occluders whose map images touch "
+                                "(measured: tests/test_classify.cpp, stacked plates), so it "
+                                "is a heuristic there; always off with three layers.", true),
     };
   }
   std::string name() const override { return "classify"; }

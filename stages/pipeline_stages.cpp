@@ -12,6 +12,8 @@ std::unique_ptr<Stage> makeClassifyStage();
 std::unique_ptr<Stage> makeHardShadowStage();
 std::unique_ptr<Stage> makeTraceStage();
 std::unique_ptr<Stage> makeFilterStage();
+std::unique_ptr<Stage> makeReferenceStage();
+std::unique_ptr<Stage> makeErrorStage();
 std::unique_ptr<Stage> makeCompositeStage();
 
 std::vector<std::unique_ptr<Stage>> makeStages() {
@@ -24,6 +26,8 @@ std::vector<std::unique_ptr<Stage>> makeStages() {
   stages.push_back(makeHardShadowStage());
   stages.push_back(makeTraceStage());
   stages.push_back(makeFilterStage());
+  stages.push_back(makeReferenceStage());  // ground truth (off by default; DESIGN.md §7)
+  stages.push_back(makeErrorStage());
   stages.push_back(makeCompositeStage());
   return stages;
 }

@@ -1,126 +1,39 @@
 // Oracles for stage `classify` (thesis §3.6, Eq 3.3). Independent of the shader's region
 // formula and of the N-buffer: rays from a dense grid of points on the light (in world
-// space) to each receiver are walked texel by texel through the light layers.
-//
-// Why a texel walk: the layers are piecewise constant per texel, and along a ray 1/z is
-// linear in the projected position (perspective), so an exact 2D grid traversal (DDA) gives
-// every texel the ray's projection crosses together with the exact depth interval the ray
-// spans inside it; a hit test per texel is then exact for that ray, with no sampling gaps.
-// The light grid (32 x 32 points, corners included) is a finite sample of the rays: it can
-// find a non-conservative "lit" wherever the blocked part of the light is wider than a
-// grid cell, which is what the test asserts cannot happen.
+// space) to each receiver are walked texel by texel through the light layers
+// (classify_ray_walk.h, exact per ray). The light grid (32 x 32 points, corners included)
+// is a finite sample of the rays: it finds a non-conservative "lit" wherever the blocked
+// part of the light is wider than a grid cell, which the tests assert cannot happen.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
-#include <set>
-
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "classify_ray_walk.h"
 #include "mesh_builders.h"
 #include "scene_builtin.h"
+#include "shared/classes.h"
 #include "support/gl_test.h"
 
 namespace {
 
-constexpr int kClassBackground = 0, kClassLit = 1, kClassPenumbra = 2, kClassUmbra = 3,
-              kClassOutside = 4;
+constexpr int kClassBackground = CLASS_BACKGROUND, kClassLit = CLASS_LIT,
+              kClassPenumbra = CLASS_PENUMBRA, kClassUmbra = CLASS_UMBRA,
+              kClassOutside = CLASS_OUTSIDE;
 
-// The frame's light layers and light frame, in linear depth z along the light axis.
-class LightLayersOnCpu {
-public:
-  explicit LightLayersOnCpu(const PipelineRun& run)
-      : light_(run.frame->light), nearLs_(run.read("light_layers.near")),
-        farLs_(run.read("light_layers.far")) {
-    const GlTexture& layer = run.frame->input("light_layers.near");
-    width_ = layer.width();
-    height_ = layer.height();
-    double minNear = 1, maxFar = 0;
-    for (size_t i = 0; i < nearLs_.size(); ++i)
-      if (nearLs_[i] <= farLs_[i]) {  // an occupied texel (empty ones are near 1, far 0)
-        minNear = std::min(minNear, double(nearLs_[i]));
-        maxFar = std::max(maxFar, double(farLs_[i]));
-      }
-    occluderZMin_ = toZ(minNear);
-    occluderZMax_ = toZ(maxFar);
-  }
-
-  double toZ(double lsDepth) const { return light_.zNear + lsDepth * (light_.zFar - light_.zNear); }
-  double zNear() const { return light_.zNear; }
-  double occluderZMin() const { return occluderZMin_; }
-  double occluderZMax() const { return occluderZMax_; }
-
-  // World -> (texel coordinates x, y in [0, W] x [0, H], z along the light axis), from the
-  // light's view matrix and half-angles (the map spans x/z in [-tan, tan]).
-  glm::dvec3 toMap(const glm::dvec3& ws) const {
-    const glm::dvec4 view = glm::dmat4(light_.lightViewFromWorld) * glm::dvec4(ws, 1.0);
-    const double z = -view.z;
-    return {(0.5 + 0.5 * view.x / (z * light_.tanHalfFovX)) * width_,
-            (0.5 + 0.5 * view.y / (z * light_.tanHalfFovY)) * height_, z};
-  }
-
-  // Walks the segment from the light point to the receiver, restricted to depths
-  // [zFrom, zTo], texel by texel: visit(nearZ, farZ, occupied, zIn, zOut) per texel
-  // crossed; stops early when visit returns true. Returns whether it stopped early.
-  template <class Visit>
-  bool walk(const glm::dvec3& wsLight, const glm::dvec3& wsReceiver, double zFrom, double zTo,
-            Visit visit) const {
-    const glm::dvec3 a = toMap(wsLight), b = toMap(wsReceiver);
-    const double invA = 1.0 / a.z, invB = 1.0 / b.z;
-    auto sAt = [&](double z) { return std::clamp((invA - 1.0 / z) / (invA - invB), 0.0, 1.0); };
-    auto zAt = [&](double s) { return 1.0 / ((1.0 - s) * invA + s * invB); };
-    const double s0 = sAt(zFrom), s1 = sAt(zTo);
-    if (!(s0 < s1)) return false;
-    const glm::dvec2 p0 = glm::dvec2(a) + s0 * glm::dvec2(b - a);
-    const glm::dvec2 p1 = glm::dvec2(a) + s1 * glm::dvec2(b - a);
-    // Amanatides-Woo traversal in texel units; t in [0, 1] runs from p0 to p1.
-    int ix = int(std::floor(p0.x)), iy = int(std::floor(p0.y));
-    const glm::dvec2 d = p1 - p0;
-    const int stepX = d.x > 0 ? 1 : -1, stepY = d.y > 0 ? 1 : -1;
-    const double inf = std::numeric_limits<double>::infinity();
-    double tMaxX = d.x > 0 ? (ix + 1 - p0.x) / d.x : d.x < 0 ? (p0.x - ix) / -d.x : inf;
-    double tMaxY = d.y > 0 ? (iy + 1 - p0.y) / d.y : d.y < 0 ? (p0.y - iy) / -d.y : inf;
-    const double tDeltaX = d.x != 0 ? 1.0 / std::fabs(d.x) : inf;
-    const double tDeltaY = d.y != 0 ? 1.0 / std::fabs(d.y) : inf;
-    double t = 0;
-    for (int guard = 0; guard < 4 * (width_ + height_) + 8; ++guard) {
-      const double tNext = std::min({tMaxX, tMaxY, 1.0});
-      const int x = std::clamp(ix, 0, width_ - 1), y = std::clamp(iy, 0, height_ - 1);
-      const size_t i = size_t(y) * width_ + x;
-      if (visit(toZ(nearLs_[i]), toZ(farLs_[i]), nearLs_[i] <= farLs_[i],
-                zAt(s0 + t * (s1 - s0)), zAt(s0 + tNext * (s1 - s0))))
-        return true;
-      if (tNext >= 1.0) return false;
-      if (tMaxX <= tMaxY) { ix += stepX; tMaxX += tDeltaX; }
-      else { iy += stepY; tMaxY += tDeltaY; }
-      t = tNext;
-    }
-    ADD_FAILURE() << "texel walk did not terminate";
-    return false;
-  }
-
-  int width() const { return width_; }
-  int height() const { return height_; }
-
-private:
-  LightFrame light_;
-  std::vector<float> nearLs_, farLs_;
-  int width_ = 0, height_ = 0;
-  double occluderZMin_ = 0, occluderZMax_ = 0;
-};
-
-// World-space points of the light rectangle on an n x n grid, corners included.
-std::vector<glm::dvec3> lightGrid(const Scene& scene, const LightFrame& light, int n) {
-  std::vector<glm::dvec3> points;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double a = 2.0 * i / (n - 1) - 1, b = 2.0 * j / (n - 1) - 1;
-      points.push_back(glm::dvec3(scene.light.center) +
-                       a * 0.5 * scene.light.width * glm::dvec3(light.right) +
-                       b * 0.5 * scene.light.height * glm::dvec3(light.up));
-    }
-  return points;
+// The largest bias any of the trace's rays gets at a receiver at light depth z: trace.bias
+// plus Eq 3.2 with n.l at its clamp. A ray's end moves towards the light by its bias along
+// the ray, so its depth lies in [z - largestBias, z].
+double largestTraceBias(const PipelineRun& run, double z) {
+  const Pipeline& pipeline = *run.pipeline;
+  const LightFrame& light = run.frame->light;
+  double bias = pipeline.param("trace.bias").asFloat();
+  if (pipeline.param("trace.adaptive_bias").asBool())
+    bias += std::sqrt(2.0) * z * std::max(light.tanHalfFovX, light.tanHalfFovY) /
+            (run.frame->uniforms.sizes.z * double(pipeline.param("trace.min_cosine").asFloat()));
+  return bias;
 }
 
 struct Findings {
@@ -133,14 +46,12 @@ struct Findings {
 };
 
 // Checks every lit and umbra pixel of the run with 32 x 32 rays each.
-Findings checkClassification(const PipelineRun& run, float minCosine) {
+Findings checkClassification(const PipelineRun& run) {
   const LightLayersOnCpu layers(run);
   const auto mask = run.read("classify.mask");
   const auto positions = run.read("gbuffer.wsPosition");
-  const auto normals = run.read("gbuffer.wsNormal");
   const LightFrame& light = run.frame->light;
   const auto grid = lightGrid(run.scene, light, 32);
-  const double tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
   const double tolerance = 1e-5 * (light.zFar - light.zNear);  // float rounding on the GPU
   Findings found;
   for (size_t i = 0; i < mask.size(); ++i) {
@@ -149,18 +60,17 @@ Findings checkClassification(const PipelineRun& run, float minCosine) {
     if (pixelClass == kClassOutside) { ++found.outside; continue; }
     if (pixelClass == kClassPenumbra) { ++found.penumbra; continue; }
     const glm::dvec3 receiver{positions[i * 4], positions[i * 4 + 1], positions[i * 4 + 2]};
-    const glm::dvec3 normal{normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]};
-    // The rays end short of the receiver by the Eq 3.2 bias (thesis §3), as in the stage.
+    // The trace's rays end between these depths (shortened by the bias, thesis §3): "lit"
+    // must hold for the longest ray, "umbra" for the shortest.
     const double z = layers.toMap(receiver).z;
-    const double cosine = std::max(glm::dot(normal, -glm::dvec3(light.forward)), double(minCosine));
-    const double zEnd = z - std::sqrt(2.0) * z * tanHalfFov / (layers.width() * cosine);
+    const double deepestEnd = z, shallowestEnd = z - largestTraceBias(run, z);
     const std::string where = "pixel (" + std::to_string(i % run.frame->eyeWidth) + ", " +
                               std::to_string(i / run.frame->eyeWidth) + ")";
     if (pixelClass == kClassLit) {
       ++found.lit;
       // Only depths where some occluder exists can block: [min near, max far] over the map.
       const double from = std::max(layers.zNear(), layers.occluderZMin() - tolerance);
-      const double to = std::min(zEnd, layers.occluderZMax() + tolerance);
+      const double to = std::min(deepestEnd, layers.occluderZMax() + tolerance);
       for (const glm::dvec3& wsLight : grid) {
         const bool blocked = layers.walk(
             wsLight, receiver, from, to,
@@ -178,7 +88,7 @@ Findings checkClassification(const PipelineRun& run, float minCosine) {
       int twoLayerMisses = 0;
       for (const glm::dvec3& wsLight : grid) {
         bool oneLayerHit = false, twoLayerHit = false;
-        layers.walk(wsLight, receiver, layers.zNear(), zEnd,
+        layers.walk(wsLight, receiver, layers.zNear(), shallowestEnd,
                     [&](double nearZ, double farZ, bool occupied, double zIn, double zOut) {
                       // One layer (§3.2): anything behind the near layer is solid.
                       oneLayerHit = oneLayerHit || zOut >= nearZ - tolerance;
@@ -201,8 +111,9 @@ Findings checkClassification(const PipelineRun& run, float minCosine) {
   return found;
 }
 
-// Two zero-thickness plates at different heights whose shadow-map images overlap, with a
-// gap between them that rays from one side of the light pass through (see the test).
+// Two zero-thickness plates at different heights whose shadow-map images abut (both inner
+// edges project to the map's center line), with a gap between them in space that rays from
+// one side of the light pass through (see the test).
 Scene stackedPlates() {
   Scene scene = makeBuiltinScene("plate");
   scene.name = "stacked plates";
@@ -224,7 +135,7 @@ namespace {
 // The conservativeness checks on one scene at the default 512 x 512 map.
 void checkScene(const std::string& name) {
   PipelineRun run(makeBuiltinScene(name), {}, 256, 256);
-  const Findings found = checkClassification(run, 0.1f);
+  const Findings found = checkClassification(run);
   std::printf("[ %s ] lit %d, penumbra %d, umbra %d, outside %d, background %d; umbra pixels "
               "with a ray that misses both layers' slabs: %d (%ld of %ld rays)\n",
               name.c_str(), found.lit, found.penumbra, found.umbra, found.outside,
@@ -241,7 +152,7 @@ void checkScene(const std::string& name) {
   EXPECT_GT(found.penumbra, 100) << name;
 
   // A lit pixel is lit in the hard shadow too: the ray through the light's center is one of
-  // its rays, and hard_shadow shortens it by more (a constant bias on top of Eq 3.2).
+  // its rays, and hard_shadow shortens it (classify's lit test does not).
   const auto mask = run.read("classify.mask");
   const auto hard = run.read("hard_shadow.visibility");
   int litButHardShadowed = 0;
@@ -274,7 +185,7 @@ TEST(Classify, LitIsConservativePlate) { checkScene("plate"); }
 // stage, not classify, decides those pixels when the umbra rule is off.
 TEST(Classify, TwoLayerUmbraRuleMissesRaysBetweenAbuttingOccluders) {
   PipelineRun run(stackedPlates(), {}, 128, 128);
-  const Findings found = checkClassification(run, 0.1f);
+  const Findings found = checkClassification(run);
   std::printf("[ stacked plates ] umbra %d pixels, %d with rays that miss both plates in the "
               "two-layer model (%ld of %ld rays); lit %d, penumbra %d\n",
               found.umbra, found.umbraTwoLayerMisses, found.umbraRaysMissingTwoLayer,
@@ -297,10 +208,8 @@ TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
   const auto mask = run.read("classify.mask");
   const auto zRange = run.read("classify.zRange");
   const auto positions = run.read("gbuffer.wsPosition");
-  const auto normals = run.read("gbuffer.wsNormal");
   const LightLayersOnCpu layers(run);
   const LightFrame& light = run.frame->light;
-  const double tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
   int histogram[5] = {0, 0, 0, 0, 0};
   for (size_t i = 0; i < mask.size(); ++i) {
     ASSERT_EQ(mask[i], std::round(mask[i])) << i;
@@ -332,18 +241,16 @@ TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
     EXPECT_LE(bounds[1], 1.0f);
     const double lsDepth = (map.z - light.zNear) / (light.zFar - light.zNear);
     EXPECT_NEAR(bounds[3], lsDepth, 1e-5) << i;
-    // Lit exactly when the biased end of the rays is not behind zNearMin.
-    const glm::dvec3 normal{normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]};
-    const double cosine = std::max(glm::dot(normal, -glm::dvec3(light.forward)), 0.1);
-    const double zEnd = map.z - std::sqrt(2.0) * map.z * tanHalfFov / (layers.width() * cosine);
-    const double endLsDepth = (zEnd - light.zNear) / (light.zFar - light.zNear);
+    // Lit exactly when the receiver is not behind zNearMin; umbra only when even the
+    // shortest ray ends behind zNearMax.
     if (pixelClass == kClassLit) {
-      EXPECT_LE(endLsDepth, bounds[0] + 1e-5) << i;
+      EXPECT_LE(lsDepth, bounds[0] + 1e-5) << i;
     } else {
-      EXPECT_GT(endLsDepth, bounds[0] - 1e-5) << i;
+      EXPECT_GT(lsDepth, bounds[0] - 1e-5) << i;
     }
     if (pixelClass == kClassUmbra) {
-      EXPECT_GE(endLsDepth, bounds[1] - 1e-5) << i;
+      const double shallowestEnd = map.z - largestTraceBias(run, map.z);
+      EXPECT_GE((shallowestEnd - light.zNear) / (light.zFar - light.zNear), bounds[1] - 1e-5) << i;
     }
   }
   const auto& counters = run.frame->counters;

@@ -156,6 +156,10 @@ TEST(TraceOracle, LinearSearchAgreementAgainstStepSize) {
         const Agreement result = compare(set, search, 2, step, false);
         std::printf(" %8.4f%%", 100.0 * result.agree / result.rays);
         total += double(result.agree) / result.rays;
+        // On real scenes a quarter-texel step sees nearly every feature. (Random height
+        // fields hold zero-thickness sheets that a point sample almost never lands on.)
+        if (step == 0.25f && set.name.find("height field") == std::string::npos)
+          EXPECT_GE(double(result.agree) / result.rays, 0.99) << set.name;
       }
       std::printf("\n");
       total /= double(sets.size());
@@ -166,7 +170,5 @@ TEST(TraceOracle, LinearSearchAgreementAgainstStepSize) {
       else EXPECT_GE(total, linearAgreement[step] - 0.001) << "step " << step;
       previous = total;
     }
-    // At a quarter texel the samples see nearly every feature.
-    EXPECT_GE(previous, 0.99);
   }
 }

@@ -7,6 +7,7 @@
 #include "scene_builtin.h"
 #include "ui_camera.h"
 #include "ui_export.h"
+#include "ui_nbuffer_hover.h"
 #include "ui_script.h"
 #include "ui_settings.h"
 #include "ui_state.h"
@@ -156,4 +157,23 @@ TEST(WindowUnits, ExportNamesSaySceneOutputAndChangedParameters) {
   ASSERT_EQ(state.setParameter("light_layers.resolution", "256"), "");  // another stage's
   const std::string stem = exportStem(state, "hard_shadow.visibility", 0);
   EXPECT_EQ(stem, "cube_hard_shadow.visibility_bias-0.02");
+}
+
+TEST(WindowUnits, NBufferHoverWindowSpansTwoToTheLevelInsideTheMap) {
+  for (int size : {5, 64, 100})
+    for (int level = 0; (1 << level) <= 2 * size; ++level)
+      for (int x = 0; x < size; ++x) {
+        const glm::ivec2 w = nbufferWindow1D(level, x, size);
+        EXPECT_GE(w.x, 0);
+        EXPECT_LT(w.y, size);
+        EXPECT_EQ(w.y - w.x + 1, std::min(1 << level, size)) << size << " " << level << " " << x;
+        if ((1 << level) <= size) {  // the texel lies in its own window
+          EXPECT_LE(w.x, x);
+          EXPECT_GE(w.y, x);
+        }
+      }
+  glm::ivec2 lo, hi;
+  nbufferWindow(3, {10, 0}, {64, 64}, lo, hi);  // centred where it can, shifted at the edge
+  EXPECT_EQ(lo, glm::ivec2(6, 0));
+  EXPECT_EQ(hi, glm::ivec2(13, 7));
 }

@@ -26,6 +26,7 @@ ivec2 nbufferWindow1D(int level, int x, int size) {
 }
 
 // The level texel whose window starts at `lo` (clamped inward like the window itself).
+// On an axis shorter than 2^level every texel's window is the whole axis: stay in the map.
 int nbufferTexelForWindow(int level, int lo, int size) {
-  return clamp(lo, 0, max(size - (1 << level), 0)) + nbufferHalf(level);
+  return min(clamp(lo, 0, max(size - (1 << level), 0)) + nbufferHalf(level), size - 1);
 }

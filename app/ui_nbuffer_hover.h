@@ -1,0 +1,14 @@
+// N-buffer views (issue 4, "Stage-specific views"): the level-0 window that the hovered texel
+// of level n summarises, drawn as a rectangle. The window rule is the layout spec of
+// shaders/shared/nbuffer.glsl (nbufferWindow1D), restated here for the UI only.
+#pragma once
+#include <glm/glm.hpp>
+#include <string>
+
+// The output that holds the levels, one array layer per level.
+constexpr const char* kNBufferOutput = "nbuffer.levels";
+
+// Per axis: the inclusive window [lo, hi] of level `level` texel `x` on a map of `size`.
+glm::ivec2 nbufferWindow1D(int level, int x, int size);
+// The inclusive level-0 window of texel `texel` of level `level`.
+void nbufferWindow(int level, glm::ivec2 texel, glm::ivec2 size, glm::ivec2& lo, glm::ivec2& hi);
