@@ -14,6 +14,7 @@
 #include "classify_ray_walk.h"
 #include "mesh_builders.h"
 #include "scene_builtin.h"
+#include "scene_stress.h"
 #include "shared/classes.h"
 #include "support/gl_test.h"
 
@@ -314,5 +315,18 @@ TEST(Classify, NoUmbraWithThreeLayersOrWhenSwitchedOff) {
     EXPECT_EQ(changed.frame->counters.at("classify.umbra"), 0) << assignment;
     EXPECT_EQ(changed.frame->counters.at("classify.lit"), lit) << assignment;
     EXPECT_EQ(changed.frame->counters.at("classify.penumbra"), penumbra + umbra) << assignment;
+  }
+}
+
+// The numerically hard scenes (grazing light, contact, zero-thickness sheet, light touching
+// an occluder, far receiver, geometry outside the frustum): classification stays exact.
+TEST(Classify, LitIsConservativeOnStressScenes) {
+  for (const std::string& name : stressSceneNames()) {
+    PipelineRun run(makeStressScene(name), {"light_layers.resolution=256"}, 128, 128);
+    const Findings found = checkClassification(run);
+    std::printf("[ %s ] lit %d, penumbra %d, umbra %d, outside %d\n", name.c_str(), found.lit,
+                found.penumbra, found.umbra, found.outside);
+    EXPECT_EQ(found.litViolations, 0) << name << ", first: " << found.firstLitViolation;
+    EXPECT_EQ(found.umbraOneLayerMisses, 0) << name;
   }
 }

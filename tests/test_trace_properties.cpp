@@ -85,7 +85,7 @@ INSTANTIATE_TEST_SUITE_P(Searches, TraceRecords,
                          ::testing::Values("hierarchical", "linear_binary", "linear"));
 
 TEST(TraceStability, EveryOutputFiniteAndVisibilityInRangeOnEveryScene) {
-  std::vector<std::string> scenes = {"cube", "plate", "spheres"};
+  std::vector<std::string> scenes = {"cube", "plate", "spheres", "engine"};
   for (const std::string& stress : stressSceneNames()) scenes.push_back(stress);
   for (const std::string& name : scenes)
     for (const char* search : {"hierarchical", "linear_binary"})
