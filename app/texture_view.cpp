@@ -33,6 +33,19 @@ const GlTexture& TextureView::render(const GlTexture& source, const ViewSettings
   return display_;
 }
 
+const GlTexture& TextureView::render(const GlTexture& source, const ViewSettings& settings,
+                                     long generation) {
+  const ViewSettings& s = last_.settings;
+  const bool same = last_.source == source.id() && last_.generation == generation &&
+                    s.channels == settings.channels && s.black == settings.black &&
+                    s.white == settings.white && s.colormap == settings.colormap &&
+                    s.overlay == settings.overlay && s.layer == settings.layer &&
+                    display_.width() == source.width() && display_.height() == source.height();
+  if (same) return display_;
+  last_ = {source.id(), generation, settings};
+  return render(source, settings);
+}
+
 const GlTexture& TextureView::render(const GlTexture& source, const DisplayHint& hint) {
   Output output{"", "", source.internalFormat(), {}, hint};
   return render(source, defaultViewSettings(output, source.channelCount()));

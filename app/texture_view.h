@@ -14,6 +14,9 @@ class TextureView {
 public:
   // Maps layer `settings.layer` of `source`; returns the display texture (same size).
   const GlTexture& render(const GlTexture& source, const ViewSettings& settings);
+  // The same, skipped when source, settings and `generation` (bumped whenever the source's
+  // contents change: the pipeline's run count) are those of the last call.
+  const GlTexture& render(const GlTexture& source, const ViewSettings& settings, long generation);
   // The declared default mapping (layer 0), as `penumbra export` writes the PNG.
   const GlTexture& render(const GlTexture& source, const DisplayHint& hint);
 
@@ -25,6 +28,11 @@ private:
   ShaderProgram uintArray_{{{GL_COMPUTE_SHADER, "view.comp"}},
                            "#define SOURCE_UINT\n#define SOURCE_ARRAY\n"};
   GlTexture display_;
+  struct Key {
+    GLuint source = 0;
+    long generation = -1;
+    ViewSettings settings;
+  } last_;
 };
 
 // Raw values of one texel (x, y in GL order: row 0 at the bottom) of layer `layer`; the

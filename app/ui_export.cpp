@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 #include "export_command.h"
@@ -31,8 +32,11 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
   if (state.frame && state.frame->has(stageDotOutput) &&
       state.frame->input(stageDotOutput).isArray())
     stem += "_L" + std::to_string(layer);
-  if (state.frame)
-    stem += "_" + std::to_string(state.frame->eyeWidth) + "x" + std::to_string(state.frame->eyeHeight);
+  if (state.frame) {
+    char size[40];
+    std::snprintf(size, sizeof size, "_%dx%d", state.frame->eyeWidth, state.frame->eyeHeight);
+    stem += size;
+  }
   const std::string stageName = stageDotOutput.substr(0, stageDotOutput.find('.'));
   for (const auto& stage : state.pipeline.stages()) {
     if (stage->name() != stageName) continue;

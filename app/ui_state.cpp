@@ -94,8 +94,10 @@ std::string UiState::selectOutput(const std::string& stageDotOutput) {
   if (!target) return "both views are locked: unlock one to show " + stageDotOutput;
   target->output = stageDotOutput;
   if (frame && frame->has(stageDotOutput)) {
-    target->settings = defaultViewSettings(*declared, frame->input(stageDotOutput).channelCount());
+    const GlTexture& texture = frame->input(stageDotOutput);
+    target->settings = defaultViewSettings(*declared, texture.channelCount());
     target->settingsFor = stageDotOutput;
+    target->autofitPending = texture.isInteger() && target->settings.colormap != Colormap::Categorical;
   }
   target->fitPending = true;
   selectedStage = stageDotOutput.substr(0, stageDotOutput.find('.'));

@@ -28,6 +28,9 @@ void syncSettings(UiState& state, ViewPanel& view, const GlTexture& texture) {
       view.settings = defaultViewSettings(*output, texture.channelCount());
     view.settingsFor = view.output;
     view.fitPending = true;
+    // Integer data (counts, ids) rarely lies in [0, 1]: start from its actual range.
+    if (texture.isInteger() && view.settings.colormap != Colormap::Categorical)
+      view.autofitPending = true;
   }
   if (view.autofitPending) {
     autofitView(view, texture);
@@ -222,7 +225,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     std::optional<glm::ivec2> hover;
     if (ImGui::IsItemHovered())
       hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);
-    drawImage(state, view, view.renderer.render(*texture, view.settings), origin, regionSize, hover);
+    drawImage(state, view, view.renderer.render(*texture, view.settings, state.pipelineRuns), origin, regionSize, hover);
     drawReadout(state, view, *texture, hover);
   }
   ImGui::EndChild();

@@ -13,6 +13,7 @@
 #include "frame.h"
 #include "pipeline.h"
 #include "reference_cache.h"
+#include "reference_request.h"
 #include "reference_trace.h"
 
 ReferenceProgress& referenceStageProgress() {
@@ -73,7 +74,8 @@ public:
       frame.textures.erase(key);  // a stale truth must not be compared against
       return;
     }
-    ReferenceRequest request = makeRequest(frame);
+    ReferenceRequest request = makeReferenceRequest(
+        frame, param("samples").asInt(), param("sampling").asEnum() == "stratified");
     const std::string cacheKey = referenceCacheKey(frame.scene, request);
     frame.counters["reference.samples"] = double(request.samplesPerSide) * request.samplesPerSide;
     frame.counters["reference.seconds"] = 0;
@@ -108,24 +110,6 @@ private:
     std::atomic<bool> done{false};
     bool completed = false;  // not cancelled
   };
-
-  ReferenceRequest makeRequest(const Frame& frame) const {
-    ReferenceRequest request;
-    request.width = frame.eyeWidth;
-    request.height = frame.eyeHeight;
-    request.wsPosition = frame.input("gbuffer.wsPosition").readFloats();
-    request.wsNormal = frame.input("gbuffer.wsNormal").readFloats();
-    request.samplesPerSide = param("samples").asInt();
-    request.stratified = param("sampling").asEnum() == "stratified";
-    request.wsLightCenter = frame.scene.light.center;
-    request.wsLightRight = frame.light.right;  // orthonormal, as the trace's light samples
-    request.wsLightUp = frame.light.up;
-    request.halfWidth = 0.5f * frame.scene.light.width;
-    request.halfHeight = 0.5f * frame.scene.light.height;
-    const Bounds bounds = frame.scene.bounds();
-    request.epsilon = kRelativeEpsilon * (bounds.empty() ? 1.0f : glm::length(bounds.max - bounds.min));
-    return request;
-  }
 
   const ReferenceTracer& tracer(const Scene& scene) {
     const std::string key = occluderKey(scene);
@@ -169,7 +153,7 @@ private:
       });
       while (!workerDone) {
         bar.update();
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
       }
       worker.join();
       progress.running = false;

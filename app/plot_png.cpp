@@ -1,0 +1,166 @@
+#include "plot_png.h"
+
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "image_export.h"
+#include "plot_font.h"
+
+namespace {
+
+using Color = std::array<float, 3>;
+const Color kBlack{0, 0, 0}, kGrid{0.88f, 0.88f, 0.88f}, kFrontier{0.1f, 0.1f, 0.1f};
+// Colour-blind-safe series colours (Okabe-Ito), then greys.
+const Color kSeries[] = {{0.0f, 0.45f, 0.70f}, {0.90f, 0.62f, 0.0f}, {0.0f, 0.62f, 0.45f},
+                         {0.80f, 0.47f, 0.65f}, {0.84f, 0.37f, 0.0f}, {0.35f, 0.70f, 0.90f},
+                         {0.94f, 0.89f, 0.26f}, {0.4f, 0.4f, 0.4f}};
+
+std::string tickText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// "Nice" linear ticks (1, 2, 5 x 10^k) covering [0, top].
+std::vector<double> linearTicks(double top, double& axisTop) {
+  const double raw = top / 5, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double factor : {1.0, 2.0, 5.0, 10.0})
+    if (factor * magnitude >= raw) { step = factor * magnitude; break; }
+  axisTop = std::ceil(top / step) * step;
+  std::vector<double> ticks;
+  for (double t = 0; t <= axisTop * (1 + 1e-9); t += step) ticks.push_back(t);
+  return ticks;
+}
+
+// Log ticks at 1, 2, 5 x 10^k inside [low, high].
+std::vector<double> logTicks(double low, double high) {
+  std::vector<double> ticks;
+  for (int k = int(std::floor(std::log10(low))); k <= int(std::ceil(std::log10(high))); ++k)
+    for (double factor : {1.0, 2.0, 5.0}) {
+      const double t = factor * std::pow(10.0, k);
+      if (t >= low && t <= high) ticks.push_back(t);
+    }
+  return ticks;
+}
+
+void marker(OIIO::ImageBuf& image, int x, int y, int series, int radius) {
+  const Color& c = kSeries[size_t(series) % std::size(kSeries)];
+  const int shape = series / int(std::size(kSeries)) + series % 3;  // vary shape too
+  if (shape % 3 == 0) {
+    OIIO::ImageBufAlgo::render_box(image, x - radius, y - radius, x + radius, y + radius, c, true);
+  } else if (shape % 3 == 1) {  // diamond: filled rows
+    for (int dy = -radius - 1; dy <= radius + 1; ++dy) {
+      const int half = radius + 1 - std::abs(dy);
+      OIIO::ImageBufAlgo::render_line(image, x - half, y + dy, x + half, y + dy, c);
+    }
+  } else {  // triangle
+    for (int dy = -radius; dy <= radius; ++dy) {
+      const int half = (dy + radius + 1) / 2 + 1;
+      OIIO::ImageBufAlgo::render_line(image, x - half, y + dy, x + half, y + dy, c);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<bool> paretoFrontier(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<bool> frontier(x.size(), true);
+  for (size_t i = 0; i < x.size(); ++i)
+    for (size_t j = 0; j < x.size() && frontier[i]; ++j)
+      if (j != i && x[j] <= x[i] && y[j] <= y[i] && (x[j] < x[i] || y[j] < y[i]))
+        frontier[i] = false;
+  return frontier;
+}
+
+std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& spec) {
+  const int W = spec.width, H = spec.height;
+  const int left = 96, right = 28, top = 56, bottom = 78;
+  OIIO::ImageBuf image(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT));
+  const float white[3] = {1, 1, 1};
+  OIIO::ImageBufAlgo::fill(image, white);
+  const PlotText text(spec.forceBitmapFont);
+
+  // 1. Ranges (only finite points; log x needs positive values).
+  std::vector<const PlotPoint*> points;
+  for (const PlotPoint& p : spec.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0)) points.push_back(&p);
+  double xLow = 1, xHigh = 10, yHigh = 1;
+  if (!points.empty()) {
+    xLow = xHigh = points[0]->x;
+    yHigh = 0;
+    for (const PlotPoint* p : points) {
+      xLow = std::min(xLow, p->x);
+      xHigh = std::max(xHigh, p->x);
+      yHigh = std::max(yHigh, p->y);
+    }
+  }
+  if (spec.logX) { xLow /= 1.25; xHigh *= 1.25; }
+  else { const double pad = 0.05 * std::max(xHigh - xLow, 1e-9); xLow = std::max(0.0, xLow - pad); xHigh += pad; }
+  if (xHigh <= xLow) xHigh = xLow * 2 + 1;
+  double yTop = 1;
+  const std::vector<double> yTicks = linearTicks(std::max(yHigh * 1.08, 1e-6), yTop);
+  const int x0 = left, x1 = W - right, y0 = H - bottom, y1 = top;
+  auto px = [&](double x) {
+    const double t = spec.logX ? (std::log(x) - std::log(xLow)) / (std::log(xHigh) - std::log(xLow))
+                               : (x - xLow) / (xHigh - xLow);
+    return x0 + int(std::lround(t * (x1 - x0)));
+  };
+  auto py = [&](double y) { return y0 - int(std::lround(y / yTop * (y0 - y1))); };
+
+  // 2. Grid, axes, ticks, labels.
+  double xAxisTop = 0;
+  const std::vector<double> xTicks = spec.logX ? logTicks(xLow, xHigh) : linearTicks(xHigh, xAxisTop);
+  for (double t : xTicks) {
+    if (t < xLow || t > xHigh) continue;
+    OIIO::ImageBufAlgo::render_line(image, px(t), y0, px(t), y1, kGrid);
+    OIIO::ImageBufAlgo::render_line(image, px(t), y0, px(t), y0 + 5, kBlack);
+    text.draw(image, px(t), y0 + 8, tickText(t), 15, kBlack, TextAlign::Center);
+  }
+  for (double t : yTicks) {
+    OIIO::ImageBufAlgo::render_line(image, x0, py(t), x1, py(t), kGrid);
+    OIIO::ImageBufAlgo::render_line(image, x0 - 5, py(t), x0, py(t), kBlack);
+    text.draw(image, x0 - 8, py(t) - 8, tickText(t), 15, kBlack, TextAlign::Right);
+  }
+  OIIO::ImageBufAlgo::render_box(image, x0, y1, x1, y0, kBlack);
+  text.draw(image, (x0 + x1) / 2, H - 34, spec.xLabel, 17, kBlack, TextAlign::Center);
+  text.draw(image, 12, (y0 + y1) / 2, spec.yLabel, 17, kBlack, TextAlign::Center, /*vertical=*/true);
+  text.draw(image, W / 2, 14, spec.title, 19, kBlack, TextAlign::Center);
+
+  // 3. The frontier (sorted by x), then every marker, then the frontier's rings and labels.
+  std::vector<const PlotPoint*> frontier;
+  for (const PlotPoint* p : points) if (p->frontier) frontier.push_back(p);
+  std::sort(frontier.begin(), frontier.end(), [](auto a, auto b) { return a->x < b->x; });
+  for (size_t i = 1; i < frontier.size(); ++i)
+    OIIO::ImageBufAlgo::render_line(image, px(frontier[i - 1]->x), py(frontier[i - 1]->y),
+                                    px(frontier[i]->x), py(frontier[i]->y), kFrontier);
+  for (const PlotPoint* p : points) marker(image, px(p->x), py(p->y), p->series, 4);
+  int labelRow = 0;
+  for (const PlotPoint* p : frontier) {
+    OIIO::ImageBufAlgo::render_box(image, px(p->x) - 8, py(p->y) - 8, px(p->x) + 8, py(p->y) + 8, kFrontier);
+    const bool leftSide = px(p->x) > (x0 + x1) / 2;
+    text.draw(image, px(p->x) + (leftSide ? -12 : 12), py(p->y) - 20 + (labelRow++ % 2) * 24, p->label,
+              13, kFrontier, leftSide ? TextAlign::Right : TextAlign::Left);
+  }
+
+  // 4. Legend (top right inside the plot), with the frontier's sample.
+  int ly = y1 + 10;
+  const int lx = x1 - 250;
+  for (size_t s = 0; s < spec.seriesNames.size(); ++s, ly += 20) {
+    marker(image, lx + 8, ly + 8, int(s), 4);
+    text.draw(image, lx + 22, ly, spec.seriesNames[s], 14, kBlack);
+  }
+  OIIO::ImageBufAlgo::render_line(image, lx, ly + 8, lx + 16, ly + 8, kFrontier);
+  OIIO::ImageBufAlgo::render_box(image, lx + 2, ly + 2, lx + 14, ly + 14, kFrontier);
+  text.draw(image, lx + 22, ly, "Pareto frontier", 14, kBlack);
+
+  // 5. To 8-bit RGB, top row first (ImageBuf order), written atomically.
+  std::vector<std::uint8_t> rgb(size_t(W) * H * 3);
+  image.get_pixels(OIIO::ROI(0, W, 0, H, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, rgb.data());
+  writePng(path, rgb, W, H);
+  return text.usesFont() ? "font " + text.fontName() : "built-in bitmap font (no font found)";
+}
