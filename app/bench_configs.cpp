@@ -235,6 +235,7 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
     for (int map : {128, 192, 256, 384, 512, 768, 1024})
       for (BenchConfig& config : attyMethods(map)) maps.push_back(std::move(config));
     setups.push_back(makeSetup(scene, w, h, maps, "map", 0));
+    setups.back().label = scene.name + " " + std::to_string(w) + "x" + std::to_string(h) + " map sweep";
     const BenchSetup base = makeSetup(scene, w, h, attyMethods(128));
     for (const char* v : {"0.05", "0.25", "0.5", "1", "1.5", "2"})
       setups.push_back(withAxis(base, "scene.light_scale", v));
@@ -261,15 +262,26 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
         for (const std::string& value : values) expanded.push_back(withAxis(setup, key, value));
       setups = std::move(expanded);
     } else {
+      const std::string stage = key.substr(0, key.find('.'));
       for (BenchSetup& setup : setups) {
         std::vector<BenchConfig> expanded;
-        for (const BenchConfig& config : setup.configs)
+        for (const BenchConfig& config : setup.configs) {
+          // A parameter of a stage the method does not use (trace.rays for the hard shadow)
+          // would only repeat the same measurement.
+          const bool unused = config.method == "hard_shadow"
+                                  ? (stage == "trace" || stage == "filter" || stage == "nbuffer" || stage == "classify")
+                                  : stage == "hard_shadow";
+          if (unused) {
+            expanded.push_back(config);
+            continue;
+          }
           for (const std::string& value : values) {
             BenchConfig swept = config;
             swept.sets.push_back(key + "=" + value);
             swept.label += " " + key + "=" + value;
             expanded.push_back(std::move(swept));
           }
+        }
         setup.configs = std::move(expanded);
       }
     }

@@ -33,6 +33,14 @@ std::string firstLine(const std::string& path, const std::string& prefix = "") {
   return "unknown";
 }
 
+// "0.52 0.61 0.70": the 1, 5 and 15 minute load averages.
+std::string loadAverage() {
+  const std::string line = firstLine("/proc/loadavg");
+  size_t end = 0;
+  for (int field = 0; field < 3 && end != std::string::npos; ++field) end = line.find(' ', end + 1);
+  return line.substr(0, end);
+}
+
 // Every parameter back to its declared default between configurations.
 struct Defaults {
   std::vector<std::pair<Param*, double>> values;
@@ -116,7 +124,7 @@ int runBench(const BenchOptions& options) {
   info.cpu = firstLine("/proc/cpuinfo", "model name") + ", " +
              std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " threads" +
              (std::getenv("LP_NUM_THREADS") ? std::string(", LP_NUM_THREADS=") + std::getenv("LP_NUM_THREADS") : "");
-  info.loadBefore = firstLine("/proc/loadavg");
+  info.loadBefore = loadAverage();
   info.frames = options.frames;
   info.warmup = options.warmup;
   info.referenceSamples = options.referenceSamples;
@@ -132,6 +140,7 @@ int runBench(const BenchOptions& options) {
     std::printf("penumbra bench: %s, preset %s, %zu setup(s), %zu configuration(s), on %s\n",
                 scene.name.c_str(), info.preset.c_str(), setups.size(), configurationCount,
                 info.renderer.c_str());
+    std::fflush(stdout);
     double estimate = 0;
     int uncached = 0;
     for (const BenchSetup& setup : setups) {
@@ -154,6 +163,7 @@ int runBench(const BenchOptions& options) {
       std::printf("  reference %-40s ~%.1f s (%zu occluder triangles, %dx%d, %dx%d samples)\n",
                   setup.label.c_str(), seconds, tracer.occluderTriangles(), setup.width,
                   setup.height, options.referenceSamples, options.referenceSamples);
+      std::fflush(stdout);
     }
     if (estimate > options.timeLimit) {
       std::fprintf(stderr,
@@ -166,6 +176,7 @@ int runBench(const BenchOptions& options) {
     }
     std::printf("  references: %d to compute (~%.1f s), %zu cached\n", uncached, estimate,
                 setups.size() - size_t(uncached));
+    std::fflush(stdout);
 
     // 3. Every configuration: timed frames, then one frame against the reference.
     std::vector<BenchResult> results;
@@ -237,7 +248,7 @@ int runBench(const BenchOptions& options) {
     }
 
     // 4. The files.
-    info.loadAfter = firstLine("/proc/loadavg");
+    info.loadAfter = loadAverage();
     info.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     markParetoFrontiers(results);
     const auto written = writeBenchOutputs(options.out, info, setups, results);

@@ -71,10 +71,13 @@ int runBenchStages(const BenchStagesOptions& options) {
                                                     {"linear", 3, true}, {"linear_binary", 3, true},
                                                     {"hierarchical", 3, true}, {"hierarchical", 3, false}}) {
       Pipeline pipeline;
-      for (const std::string& assignment :
+      std::vector<std::string> assignments = options.sets;
+      for (const std::string& each :
            {"trace.search=" + config.search, "trace.rays=" + std::to_string(config.rays),
             std::string("trace.deferred=") + (config.deferred ? "true" : "false"),
             "light_layers.resolution=" + std::to_string(options.mapSize)})
+        assignments.push_back(each);
+      for (const std::string& assignment : assignments)
         if (std::string problem = pipeline.set(assignment); !problem.empty()) {
           std::fprintf(stderr, "penumbra bench-stages: %s\n", problem.c_str());
           return 2;

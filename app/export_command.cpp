@@ -4,9 +4,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "gl_context.h"
+#include "headless_session.h"
 #include "image_export.h"
-#include "scene_builtin.h"
 
 std::vector<std::string> exportFrame(const std::string& directory, const Frame& frame,
                                      const Pipeline& pipeline, const std::string& renderer) {
@@ -49,41 +48,18 @@ std::vector<std::string> exportFrame(const std::string& directory, const Frame& 
 }
 
 int runExport(const ExportOptions& options) {
-  std::vector<std::string> warnings;
-  Scene scene;
+  HeadlessSession session;
+  if (int status = session.open("export", options.scene, options.sets, options.width, options.height))
+    return status;
   try {
-    scene = loadScene(options.scene, warnings);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "penumbra export: %s\n", error.what());
-    return 2;
-  }
-  for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
-
-  std::unique_ptr<GlContext> context;  // declared first: GL objects die before it
-  Pipeline pipeline;
-  for (const std::string& assignment : options.sets)
-    if (std::string problem = pipeline.set(assignment); !problem.empty()) {
-      std::fprintf(stderr, "penumbra export: --set %s\n", problem.c_str());
-      return 2;
-    }
-
-  std::string error;
-  context = GlContext::createHeadless(error);
-  if (!context) {
-    std::fprintf(stderr, "penumbra export: %s\n", error.c_str());
-    return 1;
-  }
-  try {
-    GpuScene gpuScene(scene);
-    Frame frame(scene, gpuScene, pipeline);
-    frame.eyeWidth = options.width;
-    frame.eyeHeight = options.height;
+    Frame& frame = *session.frame;
     frame.frameKey = options.frameKey;
-    pipeline.run(frame);
-    const auto written = exportFrame(options.outDirectory, frame, pipeline, context->renderer());
-    std::printf("penumbra export: scene '%s' (%zu triangles) on %s\n", scene.name.c_str(),
-                scene.triangleCount(), context->renderer().c_str());
-    for (const StageTime& time : pipeline.lastTimes())
+    session.pipeline.run(frame);
+    const std::string renderer = session.context->renderer();
+    const auto written = exportFrame(options.outDirectory, frame, session.pipeline, renderer);
+    std::printf("penumbra export: scene '%s' (%zu triangles) on %s\n", session.scene.name.c_str(),
+                session.scene.triangleCount(), renderer.c_str());
+    for (const StageTime& time : session.pipeline.lastTimes())
       std::printf("  %-14s %8.2f ms\n", time.stage.c_str(), time.milliseconds);
     std::printf("wrote %zu files into %s\n", written.size(),
                 std::filesystem::absolute(options.outDirectory).c_str());

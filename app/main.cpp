@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_report.h"
 #include "bench_stages.h"
 #include "export_command.h"
 #include "hash_command.h"
@@ -77,6 +78,28 @@ int main(int argc, char** argv) {
   benchStagesCommand->add_option("--height", benching.height)->check(CLI::Range(16, 4096));
   benchStagesCommand->add_option("--map", benching.mapSize, "shadow-map size")
       ->check(CLI::Range(128, 2048));
+  benchStagesCommand->add_option("--set", benching.sets, "stage.key=value for every configuration");
+
+  BenchOptions report;
+  CLI::App* benchCommand = app.add_subcommand(
+      "bench", "speed against error: every configuration timed and compared with the exact "
+               "reference (writes results.csv, results.md, speed_vs_error.png)");
+  benchCommand->add_option("--scene", report.scene, "built-in scene or scene file")->capture_default_str();
+  benchCommand->add_option("--preset", report.preset, "default, minimal, thesis-table-4.1, atty-4.2");
+  benchCommand->add_option("--sweep", report.sweeps, "stage.key=v1,v2,... or scene.light_scale=, "
+                                                     "scene.lateral=, scene.vertical=, eye.size=WxH,...");
+  benchCommand->add_option("--set", report.sets, "stage.key=value for every configuration, repeatable");
+  benchCommand->add_option("--out", report.out, "output directory")->required();
+  benchCommand->add_option("--width", report.width, "eye width (default: the preset's)")->check(CLI::Range(16, 4096));
+  benchCommand->add_option("--height", report.height, "eye height (default: the preset's)")->check(CLI::Range(16, 4096));
+  benchCommand->add_option("--frames", report.frames, "timed frames per configuration")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  benchCommand->add_option("--warmup", report.warmup, "untimed frames first")
+      ->check(CLI::Range(0, 100))->capture_default_str();
+  benchCommand->add_option("--reference-samples", report.referenceSamples, "m: m x m light samples "
+                           "per pixel in the reference")->check(CLI::Range(1, 64))->capture_default_str();
+  benchCommand->add_option("--time-limit", report.timeLimit, "seconds of reference tracing allowed "
+                           "(estimated before starting)")->check(CLI::PositiveNumber)->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -92,6 +115,10 @@ int main(int argc, char** argv) {
   if (*exportCommand) return runExport(exporting);
   if (*traceCommand) return runTraceCommand(tracing);
   if (*benchStagesCommand) return runBenchStages(benching);
+  if (*benchCommand) {
+    for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
+    return runBench(report);
+  }
   if (*hashCommand) return runHashCommand(hashing);
   return runWindow(window);
 }

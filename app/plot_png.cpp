@@ -37,6 +37,17 @@ std::vector<double> linearTicks(double top, double& axisTop) {
   return ticks;
 }
 
+// Linear ticks at a 1, 2, 5 x 10^k step inside [low, high].
+std::vector<double> rangeTicks(double low, double high) {
+  double unused = 0;
+  const std::vector<double> fromZero = linearTicks(high - low, unused);
+  const double step = fromZero.size() > 1 ? fromZero[1] : 1;
+  std::vector<double> ticks;
+  for (double t = std::ceil(low / step) * step; t <= high + 1e-9 * step; t += step)
+    ticks.push_back(std::fabs(t) < 1e-12 * step ? 0.0 : t);
+  return ticks;
+}
+
 // Log ticks at 1, 2, 5 x 10^k inside [low, high].
 std::vector<double> logTicks(double low, double high) {
   std::vector<double> ticks;
@@ -78,17 +89,32 @@ std::vector<bool> paretoFrontier(const std::vector<double>& x, const std::vector
 }
 
 std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& spec) {
-  const int W = spec.width, H = spec.height;
-  const int left = 96, right = 28, top = 56, bottom = 78;
+  const PlotText text(spec.forceBitmapFont);
+
+  // 1. The points that can be drawn (finite; log x needs x > 0) and the frontier, numbered
+  //    left to right; the legend (series, then the frontier's list) sits right of the axes
+  //    so it never hides a point.
+  std::vector<const PlotPoint*> points, frontier;
+  for (const PlotPoint& p : spec.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0)) points.push_back(&p);
+  for (const PlotPoint* p : points) if (p->frontier) frontier.push_back(p);
+  std::sort(frontier.begin(), frontier.end(), [](auto a, auto b) { return a->x < b->x; });
+  std::vector<std::string> frontierLines;
+  for (size_t i = 0; i < frontier.size(); ++i) {
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, " (%.3g, %.3g)", frontier[i]->x, frontier[i]->y);
+    frontierLines.push_back(std::to_string(i + 1) + ". " + frontier[i]->label + numbers);
+  }
+  int legendWidth = text.width(spec.frontierCaption, 14) + 22;
+  for (const std::string& name : spec.seriesNames) legendWidth = std::max(legendWidth, 22 + text.width(name, 14));
+  for (const std::string& line : frontierLines) legendWidth = std::max(legendWidth, 4 + text.width(line, 13));
+  const int W = spec.width + legendWidth + 24, H = spec.height;
+  const int x0 = 96, x1 = spec.width - 24, y0 = H - 78, y1 = 56;
   OIIO::ImageBuf image(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::FLOAT));
   const float white[3] = {1, 1, 1};
   OIIO::ImageBufAlgo::fill(image, white);
-  const PlotText text(spec.forceBitmapFont);
 
-  // 1. Ranges (only finite points; log x needs positive values).
-  std::vector<const PlotPoint*> points;
-  for (const PlotPoint& p : spec.points)
-    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0)) points.push_back(&p);
+  // 2. Ranges and mappings.
   double xLow = 1, xHigh = 10, yHigh = 1;
   if (!points.empty()) {
     xLow = xHigh = points[0]->x;
@@ -100,11 +126,10 @@ std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& 
     }
   }
   if (spec.logX) { xLow /= 1.25; xHigh *= 1.25; }
-  else { const double pad = 0.05 * std::max(xHigh - xLow, 1e-9); xLow = std::max(0.0, xLow - pad); xHigh += pad; }
+  else { const double pad = 0.05 * std::max(xHigh - xLow, 1e-9); xLow -= pad; xHigh += pad; }
   if (xHigh <= xLow) xHigh = xLow * 2 + 1;
   double yTop = 1;
   const std::vector<double> yTicks = linearTicks(std::max(yHigh * 1.08, 1e-6), yTop);
-  const int x0 = left, x1 = W - right, y0 = H - bottom, y1 = top;
   auto px = [&](double x) {
     const double t = spec.logX ? (std::log(x) - std::log(xLow)) / (std::log(xHigh) - std::log(xLow))
                                : (x - xLow) / (xHigh - xLow);
@@ -112,9 +137,10 @@ std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& 
   };
   auto py = [&](double y) { return y0 - int(std::lround(y / yTop * (y0 - y1))); };
 
-  // 2. Grid, axes, ticks, labels.
-  double xAxisTop = 0;
-  const std::vector<double> xTicks = spec.logX ? logTicks(xLow, xHigh) : linearTicks(xHigh, xAxisTop);
+  // 3. Grid, axes, ticks, labels.
+  std::vector<double> xTicks;
+  if (spec.logX) xTicks = logTicks(xLow, xHigh);
+  else xTicks = rangeTicks(xLow, xHigh);
   for (double t : xTicks) {
     if (t < xLow || t > xHigh) continue;
     OIIO::ImageBufAlgo::render_line(image, px(t), y0, px(t), y1, kGrid);
@@ -131,34 +157,37 @@ std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& 
   text.draw(image, 12, (y0 + y1) / 2, spec.yLabel, 17, kBlack, TextAlign::Center, /*vertical=*/true);
   text.draw(image, W / 2, 14, spec.title, 19, kBlack, TextAlign::Center);
 
-  // 3. The frontier (sorted by x), then every marker, then the frontier's rings and labels.
-  std::vector<const PlotPoint*> frontier;
-  for (const PlotPoint* p : points) if (p->frontier) frontier.push_back(p);
-  std::sort(frontier.begin(), frontier.end(), [](auto a, auto b) { return a->x < b->x; });
+  // 4. The frontier's line, every marker, the frontier's rings and numbers.
   for (size_t i = 1; i < frontier.size(); ++i)
     OIIO::ImageBufAlgo::render_line(image, px(frontier[i - 1]->x), py(frontier[i - 1]->y),
                                     px(frontier[i]->x), py(frontier[i]->y), kFrontier);
   for (const PlotPoint* p : points) marker(image, px(p->x), py(p->y), p->series, 4);
-  int labelRow = 0;
-  for (const PlotPoint* p : frontier) {
-    OIIO::ImageBufAlgo::render_box(image, px(p->x) - 8, py(p->y) - 8, px(p->x) + 8, py(p->y) + 8, kFrontier);
-    const bool leftSide = px(p->x) > (x0 + x1) / 2;
-    text.draw(image, px(p->x) + (leftSide ? -12 : 12), py(p->y) - 20 + (labelRow++ % 2) * 24, p->label,
-              13, kFrontier, leftSide ? TextAlign::Right : TextAlign::Left);
+  for (size_t i = 0; i < frontier.size(); ++i) {
+    const int fx = px(frontier[i]->x), fy = py(frontier[i]->y);
+    OIIO::ImageBufAlgo::render_box(image, fx - 8, fy - 8, fx + 8, fy + 8, kFrontier);
+    text.draw(image, fx + 9, fy - 26, std::to_string(i + 1), 14, kFrontier);
   }
 
-  // 4. Legend (top right inside the plot), with the frontier's sample.
-  int ly = y1 + 10;
-  const int lx = x1 - 250;
+  // 5. The legend.
+  const int lx = x1 + 24;
+  int ly = y1;
   for (size_t s = 0; s < spec.seriesNames.size(); ++s, ly += 20) {
     marker(image, lx + 8, ly + 8, int(s), 4);
     text.draw(image, lx + 22, ly, spec.seriesNames[s], 14, kBlack);
   }
-  OIIO::ImageBufAlgo::render_line(image, lx, ly + 8, lx + 16, ly + 8, kFrontier);
-  OIIO::ImageBufAlgo::render_box(image, lx + 2, ly + 2, lx + 14, ly + 14, kFrontier);
-  text.draw(image, lx + 22, ly, "Pareto frontier", 14, kBlack);
+  if (!frontier.empty()) {
+    ly += 10;
+    OIIO::ImageBufAlgo::render_line(image, lx, ly + 8, lx + 16, ly + 8, kFrontier);
+    OIIO::ImageBufAlgo::render_box(image, lx + 2, ly + 2, lx + 14, ly + 14, kFrontier);
+    text.draw(image, lx + 22, ly, spec.frontierCaption, 14, kBlack);
+    ly += 22;
+    for (const std::string& line : frontierLines) {
+      text.draw(image, lx + 4, ly, line, 13, kFrontier);
+      ly += 17;
+    }
+  }
 
-  // 5. To 8-bit RGB, top row first (ImageBuf order), written atomically.
+  // 6. To 8-bit RGB, top row first (ImageBuf order), written atomically.
   std::vector<std::uint8_t> rgb(size_t(W) * H * 3);
   image.get_pixels(OIIO::ROI(0, W, 0, H, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, rgb.data());
   writePng(path, rgb, W, H);

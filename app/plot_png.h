@@ -18,6 +18,7 @@ struct PlotSpec {
   std::string title, xLabel, yLabel;
   std::vector<std::string> seriesNames;
   std::vector<PlotPoint> points;
+  std::string frontierCaption = "Pareto frontier (x, y):";
   bool logX = true;
   int width = 1000, height = 680;
   bool forceBitmapFont = false;  // tests

@@ -3,10 +3,8 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "gl_context.h"
+#include "headless_session.h"
 #include "image_export.h"
-#include "pipeline.h"
-#include "scene_builtin.h"
 
 const char* stepDecisionName(int decision) {
   static const char* names[] = {"descend", "advance", "ascend", "hit", "miss",
@@ -55,41 +53,19 @@ int runTraceCommand(const TraceOptions& options) {
                  options.pixel.c_str(), options.width, options.height);
     return 2;
   }
-  std::vector<std::string> warnings;
-  Scene scene;
-  try {
-    scene = loadScene(options.scene, warnings);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "penumbra trace: %s\n", error.what());
-    return 2;
-  }
-  std::unique_ptr<GlContext> context;
-  Pipeline pipeline;
   std::vector<std::string> sets = options.sets;
   sets.push_back("trace.record_x=" + std::to_string(x));
   sets.push_back("trace.record_y=" + std::to_string(y));
-  for (const std::string& assignment : sets)
-    if (std::string problem = pipeline.set(assignment); !problem.empty()) {
-      std::fprintf(stderr, "penumbra trace: --set %s\n", problem.c_str());
-      return 2;
-    }
-  std::string error;
-  context = GlContext::createHeadless(error);
-  if (!context) {
-    std::fprintf(stderr, "penumbra trace: %s\n", error.c_str());
-    return 1;
-  }
+  HeadlessSession session;
+  if (int status = session.open("trace", options.scene, sets, options.width, options.height))
+    return status;
   try {
-    GpuScene gpuScene(scene);
-    Frame frame(scene, gpuScene, pipeline);
-    frame.eyeWidth = options.width;
-    frame.eyeHeight = options.height;
-    pipeline.run(frame);
-    const std::string json = traceStepsJson(frame, x, y);
+    session.pipeline.run(*session.frame);
+    const std::string json = traceStepsJson(*session.frame, x, y);
     if (options.out.empty()) std::fputs(json.c_str(), stdout);
     else {
       writeTextFile(options.out, json);
-      std::printf("penumbra trace: %zu steps written to %s\n", frame.traceSteps.size(),
+      std::printf("penumbra trace: %zu steps written to %s\n", session.frame->traceSteps.size(),
                   options.out.c_str());
     }
   } catch (const std::exception& failure) {
