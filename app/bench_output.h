@@ -12,7 +12,7 @@
 struct BenchRunInfo {
   std::string scene, preset, commandLine, renderer, cpu, started;
   std::string loadBefore, loadAfter;  // /proc/loadavg: the cores are shared
-  int frames = 0, warmup = 0, referenceSamples = 0;
+  int frames = 0, warmup = 0, rounds = 1, referenceSamples = 0;
   double seconds = 0;
 };
 

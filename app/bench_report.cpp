@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "bench_configs.h"
@@ -69,6 +70,52 @@ std::string family(const BenchResult& r) {
   return name;
 }
 
+// The configuration's parameters and its error against the reference, on one frame (key
+// 0; the reference is computed on the first call of a setup, then comes from memory).
+BenchResult measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchConfig& config,
+                         const BenchOptions& options) {
+  BenchResult r;
+  r.setup = setup;
+  r.label = config.label;
+  r.method = config.method;
+  r.search = pipeline.param("trace.search").asEnum();
+  r.layers = pipeline.param("trace.layers").asEnum();
+  r.rays = pipeline.param("trace.rays").asInt();
+  r.map = pipeline.param("light_layers.resolution").asInt();
+  r.deferred = pipeline.param("trace.deferred").asBool();
+  r.filter = pipeline.param("filter.enabled").asBool();
+  r.family = family(r);
+  pipeline.param("reference.enabled").value = 1;
+  pipeline.set("reference.samples=" + std::to_string(options.referenceSamples));
+  frame.frameKey = 0;
+  pipeline.run(frame);
+  const auto& c = frame.counters;
+  if (!c.count("error.rmse"))
+    throw std::runtime_error("no error metrics for " + config.label + " (reference missing)");
+  r.error.rmse = c.at("error.rmse");
+  r.error.max = c.at("error.max");
+  r.error.meanAbsInShadow = c.at("error.meanAbsInShadow");
+  r.error.p99 = c.at("error.p99");
+  r.error.meanSigned = c.at("error.meanSigned");
+  r.error.pixels = size_t(c.at("error.pixels"));
+  r.error.pixelsInShadow = size_t(c.at("error.pixelsInShadow"));
+  r.referenceSeconds = c.at("reference.seconds");
+  r.referenceCache = int(c.at("reference.cacheHit"));
+  r.fetchesPerRay = r.method == "hard_shadow" ? 1.0 : c.at("trace.fetchesPerRay");
+  r.raysTraced = r.method == "hard_shadow" ? 0.0 : c.at("trace.rays");
+  return r;
+}
+
+// The tracing time recorded next to a cached reference (0 if unknown).
+double cachedReferenceSeconds(const std::string& key) {
+  try {
+    std::ifstream file(referenceCacheDirectory() / (key + ".json"));
+    return nlohmann::json::parse(file).value("seconds", 0.0);
+  } catch (const std::exception&) {
+    return 0.0;
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> timedStages(const std::string& method, bool filter) {
@@ -127,6 +174,7 @@ int runBench(const BenchOptions& options) {
   info.loadBefore = loadAverage();
   info.frames = options.frames;
   info.warmup = options.warmup;
+  info.rounds = std::max(1, std::min(options.rounds, options.frames));
   info.referenceSamples = options.referenceSamples;
   {
     const std::time_t now = std::time(nullptr);
@@ -143,6 +191,7 @@ int runBench(const BenchOptions& options) {
     std::fflush(stdout);
     double estimate = 0;
     int uncached = 0;
+    std::vector<double> cachedSeconds(setups.size(), 0.0);  // how long a cached one took
     for (const BenchSetup& setup : setups) {
       GpuScene gpuScene(setup.scene);
       Frame frame(setup.scene, gpuScene, pipeline);
@@ -155,7 +204,10 @@ int runBench(const BenchOptions& options) {
       const ReferenceRequest request = makeReferenceRequest(
           frame, options.referenceSamples, pipeline.param("reference.sampling").asEnum() == "stratified");
       const std::string key = referenceCacheKey(setup.scene, request);
-      if (std::filesystem::exists(referenceCacheDirectory() / (key + ".exr"))) continue;
+      if (std::filesystem::exists(referenceCacheDirectory() / (key + ".exr"))) {
+        cachedSeconds[&setup - setups.data()] = cachedReferenceSeconds(key);
+        continue;
+      }
       const ReferenceTracer tracer(setup.scene);
       const double seconds = tracer.estimateSeconds(request);
       estimate += seconds;
@@ -178,73 +230,62 @@ int runBench(const BenchOptions& options) {
                 setups.size() - size_t(uncached));
     std::fflush(stdout);
 
-    // 3. Every configuration: timed frames, then one frame against the reference.
+    // 3. Every configuration against the reference (one frame, key 0), then timed frames in
+    //    rounds: each round visits every configuration of the setup for a share of the
+    //    frames, so a change of load on the shared cores spreads over all of them instead of
+    //    landing on a few. One untimed frame after each switch (textures reallocate).
     std::vector<BenchResult> results;
     size_t done = 0;
+    const int rounds = std::max(1, std::min(options.rounds, options.frames));
     for (size_t s = 0; s < setups.size(); ++s) {
       const BenchSetup& setup = setups[s];
       GpuScene gpuScene(setup.scene);
       Frame frame(setup.scene, gpuScene, pipeline);
       frame.eyeWidth = setup.width;
       frame.eyeHeight = setup.height;
-      for (const BenchConfig& config : setup.configs) {
-        defaults.restore();
-        applySets(pipeline, options.sets);
-        applySets(pipeline, config.sets);
-        BenchResult r;
-        r.setup = s;
-        r.label = config.label;
-        r.method = config.method;
-        r.search = pipeline.param("trace.search").asEnum();
-        r.layers = pipeline.param("trace.layers").asEnum();
-        r.rays = pipeline.param("trace.rays").asInt();
-        r.map = pipeline.param("light_layers.resolution").asInt();
-        r.deferred = pipeline.param("trace.deferred").asBool();
-        r.filter = pipeline.param("filter.enabled").asBool();
-        r.family = family(r);
-        const std::vector<std::string> stages = timedStages(r.method, r.filter);
-
-        pipeline.param("reference.enabled").value = 0;
-        std::vector<double> totals;
-        for (int i = 0; i < options.warmup + options.frames; ++i) {
-          frame.frameKey = std::uint32_t(i + 1);
-          pipeline.run(frame);
-          if (i < options.warmup) continue;
-          double total = 0;
-          for (const StageTime& time : pipeline.lastTimes())
-            if (std::find(stages.begin(), stages.end(), time.stage) != stages.end())
-              total += time.milliseconds;
-          totals.push_back(total);
+      const size_t first = results.size();
+      std::vector<std::vector<double>> totals(setup.configs.size()), traces(setup.configs.size());
+      for (int round = 0; round < rounds; ++round) {
+        const int share = options.frames / rounds + (round < options.frames % rounds ? 1 : 0);
+        for (size_t k = 0; k < setup.configs.size(); ++k) {
+          const BenchConfig& config = setup.configs[k];
+          defaults.restore();
+          applySets(pipeline, options.sets);
+          applySets(pipeline, config.sets);
+          if (round == 0) results.push_back(measureError(pipeline, frame, s, config, options));
+          const BenchResult& r = results[first + k];
+          const std::vector<std::string> stages = timedStages(r.method, r.filter);
+          pipeline.param("reference.enabled").value = 0;
+          const int warmup = round == 0 ? options.warmup : 1;
+          for (int i = 0; i < warmup + share; ++i) {
+            frame.frameKey = std::uint32_t(1 + round * 1000 + i);
+            pipeline.run(frame);
+            if (i < warmup) continue;
+            double total = 0;
+            for (const StageTime& time : pipeline.lastTimes()) {
+              if (std::find(stages.begin(), stages.end(), time.stage) != stages.end())
+                total += time.milliseconds;
+              if (time.stage == "trace") traces[k].push_back(time.milliseconds);
+            }
+            totals[k].push_back(total);
+          }
         }
-        r.frames = int(totals.size());
-        r.msMedian = median(totals);
-        r.msMin = *std::min_element(totals.begin(), totals.end());
-        r.msMax = *std::max_element(totals.begin(), totals.end());
-
-        pipeline.param("reference.enabled").value = 1;
-        pipeline.set("reference.samples=" + std::to_string(options.referenceSamples));
-        frame.frameKey = 0;
-        pipeline.run(frame);
-        const auto& c = frame.counters;
-        if (!c.count("error.rmse"))
-          throw std::runtime_error("no error metrics for " + config.label + " (reference missing)");
-        r.error.rmse = c.at("error.rmse");
-        r.error.max = c.at("error.max");
-        r.error.meanAbsInShadow = c.at("error.meanAbsInShadow");
-        r.error.p99 = c.at("error.p99");
-        r.error.meanSigned = c.at("error.meanSigned");
-        r.error.pixels = size_t(c.at("error.pixels"));
-        r.error.pixelsInShadow = size_t(c.at("error.pixelsInShadow"));
-        r.referenceSeconds = c.at("reference.seconds");
-        r.referenceCache = int(c.at("reference.cacheHit"));
-        r.fetchesPerRay = r.method == "hard_shadow" ? 1.0 : c.at("trace.fetchesPerRay");
-        r.raysTraced = r.method == "hard_shadow" ? 0.0 : c.at("trace.rays");
-        std::printf("[%3zu/%zu] %s | %-40s %8.1f ms  mean|e| in shadow %.4f  RMSE %.4f\n", ++done,
-                    configurationCount, setup.label.c_str(), config.label.c_str(), r.msMedian,
-                    r.error.meanAbsInShadow, r.error.rmse);
+        std::printf("  %s: round %d/%d done\n", setup.label.c_str(), round + 1, rounds);
         std::fflush(stdout);
-        results.push_back(r);
       }
+      for (size_t k = 0; k < setup.configs.size(); ++k) {
+        BenchResult& r = results[first + k];
+        r.frames = int(totals[k].size());
+        r.msMedian = median(totals[k]);
+        r.msMin = *std::min_element(totals[k].begin(), totals[k].end());
+        r.msMax = *std::max_element(totals[k].begin(), totals[k].end());
+        r.traceMsMedian = r.method == "hard_shadow" ? 0.0 : median(traces[k]);
+        if (r.referenceCache == 2) r.referenceSeconds = cachedSeconds[s];
+        std::printf("[%3zu/%zu] %s | %-40s %8.1f ms  mean|e| in shadow %.4f  RMSE %.4f\n", ++done,
+                    configurationCount, setup.label.c_str(), r.label.c_str(), r.msMedian,
+                    r.error.meanAbsInShadow, r.error.rmse);
+      }
+      std::fflush(stdout);
     }
 
     // 4. The files.

@@ -18,6 +18,7 @@ struct BenchOptions {
   std::string out = "bench";
   int width = 0, height = 0;        // 0: the preset's default
   int frames = 10, warmup = 2;
+  int rounds = 5;                   // the frames are spread over this many passes (see .cpp)
   int referenceSamples = 16;
   double timeLimit = 900;           // seconds of reference tracing allowed (estimated first)
   std::string commandLine;          // for the report
@@ -35,6 +36,7 @@ struct BenchResult {
   std::string family;               // "hierarchical 2L", "hard shadow", ... (plot series)
   int frames = 0;
   double msMedian = 0, msMin = 0, msMax = 0;
+  double traceMsMedian = 0;         // the trace stage alone (Monte Carlo)
   double fetchesPerRay = 0, raysTraced = 0;
   ErrorMetrics error;
   double referenceSeconds = 0;      // tracing time (0 when cached)

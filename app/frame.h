@@ -3,6 +3,7 @@
 #pragma once
 #include <chrono>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "gl_texture.h"
@@ -26,6 +27,13 @@ struct Frame {
   std::map<std::string, GlTexture> textures;  // "stage.output"
   std::map<std::string, double> counters;     // "trace.rays", ...
   std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
+  // Storage buffers one stage hands to a later one ("classify.tracedPixels"); not exported.
+  std::map<std::string, std::unique_ptr<GlBuffer>> buffers;
+  GlBuffer& buffer(const std::string& name) {
+    auto& slot = buffers[name];
+    if (!slot) slot = std::make_unique<GlBuffer>();
+    return *slot;
+  }
 
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}

@@ -27,6 +27,15 @@ int main(int argc, char** argv) {
   app.add_option("--height", window.height, "window height")->check(CLI::Range(240, 8192));
   app.add_option("--config", window.config, "settings JSON to start from (saved by the window)");
   app.add_option("--script", window.script, "JSON list of UI actions to run, then exit");
+  app.add_option("--export", window.exportDirectory, "directory for the script's relative exports");
+
+  WindowOptions lesson;  // a lesson is a script with texts (app/ui_script.h, lessons/*.json)
+  CLI::App* lessonCommand = app.add_subcommand("lesson", "play a lesson in the window; with "
+                                                         "--export, run it through and write its figures");
+  lessonCommand->add_option("file", lesson.script, "lesson JSON (e.g. lessons/fig_3_2_progression.json)")
+      ->required()->check(CLI::ExistingFile);
+  lessonCommand->add_option("--export", lesson.exportDirectory, "write the figures here and exit");
+  lessonCommand->add_option("--scene", lesson.scene, "scene to start from")->capture_default_str();
 
   ExportOptions exporting;
   CLI::App* exportCommand = app.add_subcommand("export", "run the pipeline headless and write "
@@ -96,6 +105,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000))->capture_default_str();
   benchCommand->add_option("--warmup", report.warmup, "untimed frames first")
       ->check(CLI::Range(0, 100))->capture_default_str();
+  benchCommand->add_option("--rounds", report.rounds, "passes over the configurations that "
+                           "share the timed frames")->check(CLI::Range(1, 100))->capture_default_str();
   benchCommand->add_option("--reference-samples", report.referenceSamples, "m: m x m light samples "
                            "per pixel in the reference")->check(CLI::Range(1, 64))->capture_default_str();
   benchCommand->add_option("--time-limit", report.timeLimit, "seconds of reference tracing allowed "
@@ -120,5 +131,9 @@ int main(int argc, char** argv) {
     return runBench(report);
   }
   if (*hashCommand) return runHashCommand(hashing);
+  if (*lessonCommand) {
+    lesson.interactiveLesson = lesson.exportDirectory.empty();
+    return runWindow(lesson);
+  }
   return runWindow(window);
 }

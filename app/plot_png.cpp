@@ -48,14 +48,20 @@ std::vector<double> rangeTicks(double low, double high) {
   return ticks;
 }
 
-// Log ticks at 1, 2, 5 x 10^k inside [low, high].
+// Log ticks at 1, 2, 5 x 10^k inside [low, high]; at 1..9 x 10^k when that gives fewer
+// than three.
 std::vector<double> logTicks(double low, double high) {
   std::vector<double> ticks;
-  for (int k = int(std::floor(std::log10(low))); k <= int(std::ceil(std::log10(high))); ++k)
-    for (double factor : {1.0, 2.0, 5.0}) {
-      const double t = factor * std::pow(10.0, k);
-      if (t >= low && t <= high) ticks.push_back(t);
-    }
+  for (const std::vector<double>& factors : {std::vector<double>{1, 2, 5},
+                                             std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
+    ticks.clear();
+    for (int k = int(std::floor(std::log10(low))); k <= int(std::ceil(std::log10(high))); ++k)
+      for (double factor : factors) {
+        const double t = factor * std::pow(10.0, k);
+        if (t >= low && t <= high) ticks.push_back(t);
+      }
+    if (ticks.size() >= 3) break;
+  }
   return ticks;
 }
 
@@ -96,7 +102,8 @@ std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& 
   //    so it never hides a point.
   std::vector<const PlotPoint*> points, frontier;
   for (const PlotPoint& p : spec.points)
-    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0)) points.push_back(&p);
+    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0) && (!spec.logY || p.y > 0))
+      points.push_back(&p);
   for (const PlotPoint* p : points) if (p->frontier) frontier.push_back(p);
   std::sort(frontier.begin(), frontier.end(), [](auto a, auto b) { return a->x < b->x; });
   std::vector<std::string> frontierLines;
@@ -115,27 +122,39 @@ std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& 
   OIIO::ImageBufAlgo::fill(image, white);
 
   // 2. Ranges and mappings.
-  double xLow = 1, xHigh = 10, yHigh = 1;
+  double xLow = 1, xHigh = 10, yLow = 0.1, yHigh = 1;
   if (!points.empty()) {
     xLow = xHigh = points[0]->x;
-    yHigh = 0;
+    yLow = yHigh = points[0]->y;
     for (const PlotPoint* p : points) {
       xLow = std::min(xLow, p->x);
       xHigh = std::max(xHigh, p->x);
+      yLow = std::min(yLow, p->y);
       yHigh = std::max(yHigh, p->y);
     }
   }
   if (spec.logX) { xLow /= 1.25; xHigh *= 1.25; }
   else { const double pad = 0.05 * std::max(xHigh - xLow, 1e-9); xLow -= pad; xHigh += pad; }
   if (xHigh <= xLow) xHigh = xLow * 2 + 1;
-  double yTop = 1;
-  const std::vector<double> yTicks = linearTicks(std::max(yHigh * 1.08, 1e-6), yTop);
+  double yTop = 1, yBottom = 0;
+  std::vector<double> yTicks;
+  if (spec.logY) {
+    yBottom = yLow / 1.25;
+    yTop = std::max(yHigh * 1.25, yBottom * 2);
+    yTicks = logTicks(yBottom, yTop);
+  } else {
+    yTicks = linearTicks(std::max(yHigh * 1.08, 1e-6), yTop);
+  }
   auto px = [&](double x) {
     const double t = spec.logX ? (std::log(x) - std::log(xLow)) / (std::log(xHigh) - std::log(xLow))
                                : (x - xLow) / (xHigh - xLow);
     return x0 + int(std::lround(t * (x1 - x0)));
   };
-  auto py = [&](double y) { return y0 - int(std::lround(y / yTop * (y0 - y1))); };
+  auto py = [&](double y) {
+    const double t = spec.logY ? (std::log(y) - std::log(yBottom)) / (std::log(yTop) - std::log(yBottom))
+                               : y / yTop;
+    return y0 - int(std::lround(t * (y0 - y1)));
+  };
 
   // 3. Grid, axes, ticks, labels.
   std::vector<double> xTicks;

@@ -20,6 +20,7 @@ struct PlotSpec {
   std::vector<PlotPoint> points;
   std::string frontierCaption = "Pareto frontier (x, y):";
   bool logX = true;
+  bool logY = false;
   int width = 1000, height = 680;
   bool forceBitmapFont = false;  // tests
 };

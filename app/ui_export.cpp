@@ -52,18 +52,24 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
 // 2. One view: the texture's current level, raw or through the view's own mapping.
 std::string exportViewFiles(const UiState& state, const ViewPanel& view, const std::string& target,
                             ExportKind kind) {
-  const Output* output = state.outputOf(view.output);
-  if (!output || !state.frame || !state.frame->has(view.output))
-    return "export: '" + view.output + "' has not been written this frame";
+  std::string problem;
+  const GlTexture* shown = shownTexture(state, view, &problem);
+  if (!state.outputOf(view.output) || !shown)
+    return "export: " + (problem.empty() ? "'" + view.output + "' has not been written this frame" : problem);
   try {
-    const GlTexture& texture = state.frame->input(view.output);
+    const GlTexture& texture = *shown;
     const int layer = texture.isArray() ? std::clamp(view.settings.layer, 0, texture.layers() - 1) : 0;
     fs::path png, exr;
     if (endsWith(target, ".png")) png = target;
     else if (endsWith(target, ".exr")) exr = target;
     else {
       const fs::path directory = target.empty() ? fs::path(kDefaultExportDirectory) : fs::path(target);
-      const std::string stem = exportStem(state, view.output, layer);
+      const GlTexture& source = state.frame->input(view.output);  // a difference is 2D
+      const int sourceLayer = source.isArray() ? std::clamp(view.settings.layer, 0, source.layers() - 1) : 0;
+      std::string stem = exportStem(state, view.output, sourceLayer);
+      if (!view.minus.empty())  // "cube_light_layers.far-minus-light_layers.near_..."
+        stem.insert(state.scene.name.size() + 1 + view.output.size(),
+                    "-minus-" + view.minus + (view.clipNegative ? "-clipped" : ""));
       if (kind != ExportKind::Exr) png = directory / (stem + ".png");
       if (kind != ExportKind::Png) exr = directory / (stem + ".exr");
     }
@@ -77,7 +83,7 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
                                          texture.channelCount(), view.settings),
                  texture.width(), texture.height());
       else
-        writeExr(exr, values, texture.width(), texture.height(), output->channels);
+        writeExr(exr, values, texture.width(), texture.height(), shownChannelNames(state, view));
       written += (written.empty() ? "" : ", ") + fs::absolute(path).string();
     }
     return "wrote " + written;

@@ -25,6 +25,11 @@ const Shortcut* shortcuts(int& count) {
       {"Middle or Shift+right drag", "pan the camera"},
       {"Ctrl+wheel", "move the camera closer / farther"},
       {"Ctrl+click an output", "show it in the other view"},
+      {"Alt+drag (scene view)", "move the light over the ground (its outline is drawn in yellow)"},
+      {"Alt+Shift+drag", "raise / lower the light"},
+      {"Alt+right drag", "turn the light (yaw, pitch)"},
+      {"Alt+wheel", "scale the light (Shift: width only, Ctrl: height only)"},
+      {"Space / N (lesson)", "next step of a lesson (penumbra lesson FILE)"},
   };
   count = int(sizeof list / sizeof list[0]);
   return list;

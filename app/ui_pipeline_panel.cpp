@@ -30,6 +30,7 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
       state.activeView = 1 - state.activeView;
     }
     if (std::string problem = state.selectOutput(key); !problem.empty()) state.status = problem;
+    state.scrollToStage.clear();  // clicked here: it is in view already
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\n%s, %s\nclick: show in the active view; Ctrl+click: the other view",
@@ -45,6 +46,11 @@ void drawStage(UiState& state, Stage& stage, int number) {
                 stage.name().c_str());
   const bool selected = state.selectedStage == stage.name();
   if (selected) ImGui::PushStyleColor(ImGuiCol_Header, ImGui::GetStyleColorVec4(ImGuiCol_HeaderActive));
+  if (state.scrollToStage == stage.name()) {  // selected elsewhere: show it at the top
+    ImGui::SetNextItemOpen(true);
+    ImGui::SetScrollHereY(0.0f);
+    state.scrollToStage.clear();
+  }
   const bool open = ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen);
   if (selected) ImGui::PopStyleColor();
   ImGui::SameLine(ImGui::GetContentRegionMax().x - 64);

@@ -63,7 +63,10 @@ void drawCameraAndLight(UiState& state) {
   changed |= ImGui::DragFloat3("target", &camera.target.x, 0.02f, 0, 0, "%.2f");
   changed |= ImGui::SliderFloat("fov y", &camera.fovYDegrees, 10, 120, "%.0f deg");
   changed |= ImGui::DragFloat3("light", &light.center.x, 0.02f, 0, 0, "%.2f");
-  helpMarker("Centre of the rectangular area light (world units).");
+  helpMarker("Centre of the rectangular area light (world units). In a scene view (any "
+             "eye-sized output): Alt+drag moves the light over the ground, Alt+Shift+drag "
+             "raises / lowers it, Alt+right drag turns it, Alt+wheel scales it (Shift: width, "
+             "Ctrl: height). Zoom the view out (wheel) to see a light above the picture.");
   float yaw = 0, pitch = 0;
   lightAngles(light, yaw, pitch);
   bool turned = ImGui::SliderFloat("light yaw", &yaw, -180, 180, "%.0f deg");
@@ -73,7 +76,8 @@ void drawCameraAndLight(UiState& state) {
   changed |= turned;
   changed |= ImGui::SliderFloat("light width", &light.width, 0.02f, 6, "%.2f", ImGuiSliderFlags_Logarithmic);
   changed |= ImGui::SliderFloat("light height", &light.height, 0.02f, 6, "%.2f", ImGuiSliderFlags_Logarithmic);
-  helpMarker("Light size: the penumbra widens with it (thesis §3.1). Ctrl+click to type.");
+  helpMarker("Light size: the penumbra widens with it (thesis §3.1). Ctrl+click to type; "
+             "Alt+wheel over a scene view scales it (Shift: width only, Ctrl: height only).");
   light.width = std::max(light.width, 1e-3f);
   light.height = std::max(light.height, 1e-3f);
   if (validateScene(state.scene).empty() && changed) state.dirty = true;
@@ -86,6 +90,10 @@ void drawCameraAndLight(UiState& state) {
     light = state.initialLight;
     state.dirty = true;
   }
+  ImGui::SameLine();
+  ImGui::Checkbox("outline", &state.showLight);
+  helpMarker("Draw the light rectangle (yellow), its centre and its axis down to the ground "
+             "over the scene views; hold Alt over a view to drag it.");
 }
 
 // 4. Files and tools: settings, shaders, export all, how the pipeline re-runs.

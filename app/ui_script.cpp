@@ -61,7 +61,9 @@ const std::map<std::string, Check>& actionChecks() {
       {"settings", kObject}, {"load_settings", kString}, {"save_settings", kString},
       {"reload_shaders", kBool}, {"help", kBool}, {"run_every_frame", kBool},
       {"print_timing", kString}, {"print_pick", kString}, {"camera_moving", kBool},
-      {"trace_window", kBool}, {"mouse", kPair}};
+      {"trace_window", kBool}, {"mouse", kPair}, {"drag", kObject}, {"wheel", kObject},
+      {"difference", kString}, {"thickness", kBool}, {"clip_negative", kBool},
+      {"show_light", kBool}, {"lesson", kString}, {"say", kString}, {"export_dir", kString}};
   return checks;
 }
 
@@ -109,8 +111,15 @@ std::string parseScriptFile(const std::string& path, std::vector<ScriptAction>& 
 }
 
 // 3. Stepping: a wait or a screenshot ends this frame's actions.
+ScriptRunner::ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions options)
+    : actions_(std::move(actions)), options_(std::move(options)),
+      exportDirectory_(options_.exportOverride) {
+  for (const ScriptAction& action : actions_) says_ += action.name == "say";
+}
+
 ScriptRunner::Step ScriptRunner::step(UiState& state) {
   if (!error_.empty()) return Step::Failed;
+  if (!state.syntheticInput.empty()) return Step::Running;  // a drag or wheel still playing
   if (!pendingScreenshot_.empty()) {
     state.screenshotRequest = pendingScreenshot_;
     pendingScreenshot_.clear();
@@ -120,6 +129,7 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
     --waitFrames_;
     return Step::Running;
   }
+  if (waitForNext(state)) return Step::Running;
   while (next_ < actions_.size()) {
     const ScriptAction& action = actions_[next_++];
     if (std::string problem = run(state, action); !problem.empty()) {
@@ -132,8 +142,10 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
     }
     if (action.name == "screenshot") return Step::Running;
     // The next action sees the re-run pipeline and the new layout.
+    if (!state.syntheticInput.empty() || waitForNext(state)) return Step::Running;
     static const std::set<std::string> layoutChanging = {
-        "select_output", "select_stage", "two_views", "view", "help", "trace_window", "camera_moving"};
+        "select_output", "select_stage", "two_views", "view", "help", "trace_window",
+        "camera_moving", "difference", "thickness", "say", "lesson"};
     if (state.dirty || layoutChanging.count(action.name)) return Step::Running;
   }
   return Step::Done;
@@ -142,8 +154,7 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
 namespace {
 
 const GlTexture* activeTexture(UiState& state) {
-  const ViewPanel& view = state.views[state.activeView];
-  return state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+  return shownTexture(state, state.views[state.activeView]);
 }
 
 // The pick's raw values in every output of its size, and the trace panel's step count.
@@ -166,8 +177,14 @@ void printPick(const UiState& state, const std::string& label) {
   }
   if (rayTraceSource()) {
     const RayTraceInfo trace = rayTraceSource()(*state.frame, pick, state.selectedRay);
-    std::printf("  trace steps: %zu (ray %d of %d) %s\n", trace.steps.size(), state.selectedRay,
-                trace.raysPerPixel, trace.result.c_str());
+    int samples = 0, refinements = 0;
+    for (const RayStepRecord& step : trace.steps) {
+      samples += step.point && !step.refinement;
+      refinements += step.refinement;
+    }
+    std::printf("  trace steps: %zu (ray %d of %d) %s\n  trace points: %d samples, %d refinements\n",
+                trace.steps.size(), state.selectedRay, trace.raysPerPixel, trace.result.c_str(),
+                samples, refinements);
   }
   std::fflush(stdout);
 }
@@ -209,13 +226,13 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   if (name == "select_ray") { state.selectedRay = a.get<int>(); return ""; }
   if (name == "wait") { waitFrames_ = a.get<int>(); return ""; }
   if (name == "export_view" || name == "export_all") {
-    state.status = name == "export_view"
-                       ? exportViewFiles(state, view, a.get<std::string>(), ExportKind::Both)
-                       : exportAllStages(state, a.get<std::string>());
+    const std::string target = resolved(a.get<std::string>());
+    state.status = name == "export_view" ? exportViewFiles(state, view, target, ExportKind::Both)
+                                         : exportAllStages(state, target);
     std::printf("penumbra: %s\n", state.status.c_str());
     return state.status.rfind("wrote ", 0) == 0 ? "" : state.status;
   }
-  if (name == "screenshot") { pendingScreenshot_ = a.get<std::string>(); return ""; }
+  if (name == "screenshot") { pendingScreenshot_ = resolved(a.get<std::string>()); return ""; }
   if (name == "view") {
     if (a.get<int>() > 1) return "views are 0 (A) and 1 (B)";
     state.activeView = a.get<int>();
@@ -280,7 +297,7 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
         view.transform.center = glm::vec2(*state.pick) + 0.5f;
       glm::vec2 lo{1e30f}, hi{-1e30f};
       for (const ViewOverlayShape& shape : state.overlays)
-        if (shape.space == size && !shape.line) {
+        if (shape.space == size && !shape.line) {  // windows and dots
           lo = glm::min(lo, glm::min(shape.a, shape.b));
           hi = glm::max(hi, glm::max(shape.a, shape.b));
         }
@@ -312,5 +329,5 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   if (name == "camera_moving") { state.scriptMovesCamera = a.get<bool>(); return ""; }
   if (name == "trace_window") { state.traceWindow = a.get<bool>(); return ""; }
   if (name == "mouse") { state.cursorRequest = glm::vec2(a[0].get<float>(), a[1].get<float>()); return ""; }
-  return "not implemented";
+  return runMore(state, action);
 }

@@ -18,6 +18,20 @@
 //   {"camera_moving": true}  (as while dragging the camera: the preview resolution)
 //   {"trace_window": true}   (the ray trace panel in its own large window)
 //   {"mouse": [x, y]}        (moves the mouse there, window pixels: hover readouts)
+// Input as a user gives it (app/ui_script_more.cpp), coordinates in image coordinates of the
+// active view (row 0 at the top; may lie outside the image), over several frames:
+//   {"drag": {"from": [x, y], "to": [x, y], "button": "left" | "right" | "middle",
+//             "keys": "alt" | "alt+shift" | ..., "frames": 6}}
+//   {"wheel": {"at": [x, y], "amount": 2, "keys": "alt"}}
+// Views: {"difference": "light_layers.near" | ""} (active view shows output - that),
+//   {"thickness": true} (light_layers.far - near, negative -> 0), {"clip_negative": true},
+//   {"show_light": false} (the light outline over scene views)
+// Lessons (DESIGN.md §1 `penumbra lesson`): a lesson is a script with texts for the student:
+//   {"lesson": "title"}  {"say": "text shown in the lesson panel and printed to stdout"}
+//   {"export_dir": "dir"} (relative export_view / export_all / screenshot paths go there;
+//                          `--export DIR` overrides it)
+// Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
+// waits for the student's "Next" (button, Space or N), and the window stays open at the end.
 //
 // The whole file is checked before the window opens (names, argument types); actions that
 // fail while running (an unknown output, a value out of range) stop the script. Either way
@@ -39,18 +53,31 @@ struct ScriptAction {
 std::string parseScriptFile(const std::string& path, std::vector<ScriptAction>& actions);
 std::string parseScriptJson(const nlohmann::json& root, std::vector<ScriptAction>& actions);
 
+struct ScriptOptions {
+  bool interactive = false;    // a lesson played by a student: wait for "Next" at each "say"
+  std::string exportOverride;  // --export DIR: replaces the script's "export_dir"
+};
+
 // 2. Runs actions frame by frame.
 class ScriptRunner {
 public:
   enum class Step { Running, Done, Failed };
-  explicit ScriptRunner(std::vector<ScriptAction> actions) : actions_(std::move(actions)) {}
+  explicit ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions options = {});
   // Runs actions until one needs frames to pass (wait, screenshot) or the list ends.
   Step step(UiState& state);
   const std::string& error() const { return error_; }
 
 private:
   std::string run(UiState& state, const ScriptAction& action);  // "" or the problem
+  // Input, views, lessons (app/ui_script_more.cpp); "" or the problem.
+  std::string runMore(UiState& state, const ScriptAction& action);
+  // A relative export / screenshot path inside the export directory, if there is one.
+  std::string resolved(const std::string& path) const;
+  bool waitForNext(UiState& state);  // interactive lessons: true while the student reads
   std::vector<ScriptAction> actions_;
+  ScriptOptions options_;
+  std::string exportDirectory_;
+  int says_ = 0, saysSeen_ = 0;
   size_t next_ = 0;
   int waitFrames_ = 0;
   std::string pendingScreenshot_;  // taken one frame later: new windows size themselves first

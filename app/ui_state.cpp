@@ -93,6 +93,8 @@ std::string UiState::selectOutput(const std::string& stageDotOutput) {
   ViewPanel* target = selectionTarget();
   if (!target) return "both views are locked: unlock one to show " + stageDotOutput;
   target->output = stageDotOutput;
+  target->minus.clear();  // a difference belongs to the output it was made for
+  target->clipNegative = false;
   if (frame && frame->has(stageDotOutput)) {
     const GlTexture& texture = frame->input(stageDotOutput);
     target->settings = defaultViewSettings(*declared, texture.channelCount());
@@ -101,6 +103,7 @@ std::string UiState::selectOutput(const std::string& stageDotOutput) {
   }
   target->fitPending = true;
   selectedStage = stageDotOutput.substr(0, stageDotOutput.find('.'));
+  scrollToStage = selectedStage;
   return "";
 }
 
@@ -108,6 +111,7 @@ std::string UiState::selectStage(const std::string& stageName) {
   try {
     const Stage& stage = pipeline.stage(stageName);
     selectedStage = stageName;
+    scrollToStage = stageName;
     if (stage.outputs().empty()) return "";
     return selectOutput(stageName + "." + stage.outputs().front().name);
   } catch (const std::out_of_range& error) {

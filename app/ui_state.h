@@ -2,6 +2,7 @@
 // panels and `--script` share (select, set, pick, load scene). No ImGui here, so every
 // action a click performs can also be performed by a script line.
 #pragma once
+#include <array>
 #include <deque>
 #include <map>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "scene.h"
 #include "texture_view.h"
 #include "ui_trace_panel.h"
+#include "ui_view_difference.h"
 #include "ui_view_settings.h"
 #include "ui_view_transform.h"
 
@@ -30,7 +32,30 @@ struct ViewPanel {
   glm::vec2 regionSize{0, 0};  // the image region drawn last frame (screen pixels)
   glm::vec2 eyeRegion{0, 0};   // the view's area less a fixed toolbar reserve: "fit view" eye
   glm::ivec2 lastTextureSize{0, 0};  // to keep the picture in place when the size changes
+  glm::vec2 regionOrigin{0, 0};  // top-left of the image region last frame (window pixels)
   TextureView renderer;
+  // Difference view (app/ui_view_difference.h): shows output - minus when minus is set.
+  std::string minus;
+  bool clipNegative = false;  // negative differences shown as 0 (thickness: uncovered texels)
+  mutable ViewDifference difference;  // a cache of the GPU result
+};
+
+// One frame of mouse and modifier input that a script gives as a user would (ui_script.h
+// "drag", "wheel"); window_app.cpp applies it over the backend's input before the UI frame.
+struct SyntheticInput {
+  glm::vec2 mouse{0, 0};  // window pixels
+  std::array<bool, 3> buttons{false, false, false};  // left, right, middle
+  bool alt = false, shift = false, ctrl = false;
+  float wheel = 0;
+};
+
+// The lesson being played (app/ui_lesson.h): what the panel shows.
+struct LessonState {
+  std::string title, text;  // the lesson's title; the current "say"
+  int step = 0, steps = 0;  // "say" k of n
+  bool waiting = false;     // interactive: the next step waits for the student
+  bool next = false;        // the student asked for the next step
+  bool finished = false;    // interactive: every step played; the window stays open
 };
 
 // Eye image size: follows the view (one texel per screen pixel) or fixed.
@@ -60,10 +85,12 @@ public:
   int activeView = 0;
   bool twoViews = false;
   std::string selectedStage;
+  std::string scrollToStage;  // the pipeline panel brings this stage into view (scripts, views)
   std::optional<glm::ivec2> pick;  // GL texel (row 0 at the bottom) in a texture of `pickSpace`
   glm::ivec2 pickSpace{0, 0};
   int selectedRay = 0;
   std::vector<ViewOverlayShape> overlays;  // drawn by views of matching size (ray trace)
+  bool showLight = true;  // the light's outline over eye-sized views (app/ui_light_gesture.h)
 
   // 3. Run control and messages.
   bool dirty = true;           // the pipeline must run (parameters, camera, light, size...)
@@ -78,6 +105,8 @@ public:
   bool traceWindow = false;    // the ray trace panel in its own window instead of the inspector
   std::string screenshotRequest;  // saved at the end of this frame (script, key)
   std::optional<glm::vec2> cursorRequest;  // script: move the mouse here (window pixels)
+  std::deque<SyntheticInput> syntheticInput;  // script: one entry per frame
+  LessonState lesson;
 
   // 4. Timing: recent pipeline runs and frame intervals.
   std::deque<std::vector<StageTime>> recentTimes;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ui_camera.h"
+#include "ui_light_gesture.h"
 #include "ui_nbuffer_hover.h"
 #include "ui_state.h"
 #include "ui_view_toolbar.h"
@@ -82,7 +83,11 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
     if (shape.space != size) continue;
     const ImVec2 a = toIm(t.screenFromTexel(shape.a, origin, regionSize));
     const ImVec2 b = toIm(t.screenFromTexel(shape.b, origin, regionSize));
-    if (shape.line) draw->AddLine(a, b, shape.color, 2);
+    if (shape.dot > 0) {  // a dark ring keeps white dots visible on the empty (white) map
+      draw->AddCircleFilled(a, shape.dot + 1.5f, IM_COL32(0, 0, 0, 200));
+      draw->AddCircleFilled(a, shape.dot, shape.color);
+    }
+    else if (shape.line) draw->AddLine(a, b, shape.color, 2);
     else draw->AddRect({std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)},
                        shape.color, 0, 0, 1.5f);
   }
@@ -94,6 +99,8 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
     texelRect(t, lo, hi, origin, regionSize, topLeft, bottomRight);
     draw->AddRect(topLeft, bottomRight, IM_COL32(0, 230, 255, 255), 0, 0, 2);
   }
+  if (state.frame && size == glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight))
+    drawLightOutline(state, view, size, origin, regionSize);
   if (state.pick && state.pickSpace == size) {
     texelRect(t, *state.pick, *state.pick, origin, regionSize, topLeft, bottomRight);
     const ImVec2 centre{0.5f * (topLeft.x + bottomRight.x), 0.5f * (topLeft.y + bottomRight.y)};
@@ -113,6 +120,9 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
   ImGuiIO& io = ImGui::GetIO();
   const bool hovered = ImGui::IsItemHovered();
   const glm::vec2 mouse = toGlm(io.MousePos);
+  // Alt: the mouse moves the light instead (eye-sized views: the scene as the eye sees it).
+  const bool eyeSized = state.frame && size == glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight);
+  if (io.KeyAlt && eyeSized) return handleLightMouse(state, view, size, origin, regionSize);
   bool movingCamera = false;
   if (hovered && io.MouseWheel != 0) {
     if (io.KeyCtrl) {
@@ -157,18 +167,16 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
     what = "pick";
   }
   if (!at || at->x < 0 || at->y < 0 || at->x >= size.x || at->y >= size.y) {
-    ImGui::TextDisabled("%dx%d%s  click: pick, drag: pan, wheel: zoom, right drag: orbit", size.x,
+    ImGui::TextDisabled("%dx%d%s  click: pick, drag: pan, wheel: zoom, right drag: orbit, Alt: light", size.x,
                         size.y, texture.isArray() ? " (array)" : "");
     return;
   }
   const std::array<float, 4> texel = readTexel(texture, at->x, at->y, view.settings.layer);
-  const Output* output = state.outputOf(view.output);
+  const std::vector<std::string> names = shownChannelNames(state, view);
   std::string text;
   char value[64];
   for (int c = 0; c < texture.channelCount(); ++c) {
-    const std::string name =
-        output && size_t(c) < output->channels.size() ? output->channels[size_t(c)]
-                                                       : std::string(1, "RGBA"[c]);
+    const std::string name = size_t(c) < names.size() ? names[size_t(c)] : std::string(1, "RGBA"[c]);
     std::snprintf(value, sizeof value, "%s%s=%.6g", c ? "  " : "", name.c_str(), texel[size_t(c)]);
     text += value;
   }
@@ -191,9 +199,9 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     state.activeView = index;
   // The eye size for "fit view" depends on the view's size only, not on how the toolbar of
   // the current output wraps, so choosing another output never re-runs the pipeline. The
-  // reserve is the toolbar's widest case (about 1150 pixels of controls) plus the readout.
+  // reserve is the toolbar's widest case (about 1400 pixels of controls) plus the readout.
   const ImVec2 whole = ImGui::GetContentRegionAvail();
-  const float toolbarLines = std::max(2.0f, std::ceil(1150.0f / std::max(whole.x, 1.0f)));
+  const float toolbarLines = std::max(2.0f, std::ceil(1400.0f / std::max(whole.x, 1.0f)));
   view.eyeRegion = {whole.x, whole.y - toolbarLines * ImGui::GetFrameHeightWithSpacing() -
                                  ImGui::GetTextLineHeightWithSpacing()};
   if (state.twoViews) {
@@ -201,8 +209,8 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
                        index == 0 ? "A" : "B");
     ImGui::SameLine();
   }
-  const GlTexture* texture =
-      state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+  std::string problem;
+  const GlTexture* texture = shownTexture(state, view, &problem);
   if (texture) syncSettings(state, view, *texture);
   drawViewToolbar(state, view, texture);
   const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
@@ -212,11 +220,13 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   if (!texture) {
     view.regionSize = regionSize;
     ImGui::Dummy(toIm(regionSize));
-    ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
+    if (problem.empty()) ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
+    else ImGui::TextDisabled("%s", problem.c_str());
   } else {
     placeImage(view, *texture, regionSize);
     view.regionSize = regionSize;
     const glm::vec2 origin = toGlm(ImGui::GetCursorScreenPos());
+    view.regionOrigin = origin;
     ImGui::InvisibleButton("image", toIm(regionSize),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);

@@ -29,6 +29,13 @@ struct RayStepRecord {
   float zNearMin = 0, zFarMax = 0;  // the neighbourhood's depth band (lsDepth)
   glm::vec2 texelPoint{-1};        // the ray's projection at the step's end (level-0 texels)
   std::string decision;            // "descend", "advance", "hit", "sample", "refine"...
+  // Point samples (linear and linear_binary search, §3.2-3.3): one point of the ray, not a
+  // window. Drawn as a dot at `texelPoint` (white: sample, orange: refinement, red: hit) and,
+  // in the plot, at x = `stepping` with [zNearMin, zFarMax] = the layers' [near, far] at the
+  // sample's texel (the solid the sample is tested against).
+  bool point = false;
+  bool refinement = false;         // a binary-refinement point (between two samples)
+  float stepping = -1;             // s at the step's end: 0 at the light, 1 at the receiver
 };
 
 struct RayTraceInfo {
@@ -48,11 +55,16 @@ struct ViewOverlayShape {
   glm::vec2 a{0}, b{0};
   unsigned color = 0xff00ffff;  // ImGui ABGR
   bool line = false;
+  float dot = 0;                // > 0: a dot of this radius (screen pixels) at `a`
 };
 
-// Draws the panel for `trace`; fills `overlay` with the visited windows (coloured by level)
-// and the ray's projected path.
+// Draws the panel for `trace`; fills `overlay` with the visited windows (coloured by level),
+// the point samples (dots) and the ray's projected path.
 void drawRayTracePanel(const RayTraceInfo& trace, glm::ivec2 lightMapSize,
                        std::vector<ViewOverlayShape>& overlay);
 // The colour of N-buffer level `level` in plots and rectangles (ImGui ABGR).
 unsigned levelColor(int level);
+// The colour of a point sample: white sample, orange refinement, red hit (ImGui ABGR).
+unsigned pointColor(const RayStepRecord& step);
+// The overlay shapes of `trace` over views of size `lightMapSize` (what the panel draws).
+std::vector<ViewOverlayShape> traceOverlay(const RayTraceInfo& trace, glm::ivec2 lightMapSize);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ui_export.h"
+#include "ui_view_difference.h"
 #include "ui_state.h"
 #include "ui_widgets.h"
 
@@ -18,6 +19,10 @@ void autofitView(ViewPanel& view, const GlTexture& texture) {
       readRegion(texture, lo.x, lo.y, hi.x - lo.x, hi.y - lo.y, view.settings.layer);
   float low = 0, high = 1;
   if (!finiteRange(values, texture.channelCount(), view.settings, low, high)) return;
+  if (view.settings.colormap == Colormap::Diverging) {  // signed data: white stays at 0
+    high = std::max(std::abs(low), std::abs(high));
+    low = -high;
+  }
   if (high - low < 1e-12f * std::max(1.0f, std::abs(low))) {  // constant: centre it
     low -= 0.5f;
     high += 0.5f;
@@ -36,6 +41,38 @@ void resetView(UiState& state, ViewPanel& view, const GlTexture& texture) {
 
 namespace {
 
+// 2a. "minus": the difference view (app/ui_view_difference.h), with the thickness preset.
+void drawDifferenceControls(UiState& state, ViewPanel& view) {
+  sameLineIfFits(170);
+  ImGui::SetNextItemWidth(130);
+  const std::string current = view.minus.empty() ? "- (nothing)" : "- " + view.minus;
+  if (ImGui::BeginCombo("##minus", current.c_str())) {
+    if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
+      setViewDifference(state, view, "");
+    if (state.outputOf("light_layers.far") && ImGui::Selectable("thickness: far - near"))
+      state.status = showThickness(state);
+    const GlTexture* a = state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+    for (const std::string& key : state.outputKeys()) {
+      if (key == view.output || !a || !state.frame->has(key)) continue;
+      const GlTexture& b = state.frame->input(key);
+      if (b.width() != a->width() || b.height() != a->height()) continue;
+      if (ImGui::Selectable(("- " + key).c_str(), key == view.minus))
+        state.status = setViewDifference(state, view, key);
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Difference view: this output minus another of the same size, in the\n"
+                      "diverging colormap (red: this one is larger). 'thickness': far - near\n"
+                      "light layer, the occluders' extent along the light (thesis §3.3).");
+  if (view.minus.empty()) return;
+  ImGui::SameLine();
+  ImGui::Checkbox("neg->0", &view.clipNegative);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Show negative differences as 0. For far - near these are exactly the\n"
+                      "texels no occluder covers (far cleared to 0, near to 1).");
+}
+
 // 2. Line 1: what is shown (output, lock, channels, colormap, level).
 void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
   ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - 170, 120.0f, 210.0f));
@@ -44,6 +81,7 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
       if (ImGui::Selectable(key.c_str(), key == view.output)) {
         view.output = key;
         view.fitPending = true;
+        setViewDifference(state, view, "");
       }
     ImGui::EndCombo();
   }
@@ -51,6 +89,7 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   ImGui::Checkbox("lock", &view.locked);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A locked view keeps its output when stages are selected on the left.");
+  drawDifferenceControls(state, view);
   if (!texture) return;
   // Channel toggles as small buttons, lit when on.
   const char* names[4] = {"R", "G", "B", "A"};
@@ -80,10 +119,11 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Colormap for a single channel (colour shows each channel in gray).");
-  if (texture->isArray()) {
+  const GlTexture& source = state.frame->input(view.output);  // a difference view is 2D
+  if (source.isArray()) {
     sameLineIfFits(170);
     ImGui::SetNextItemWidth(110);
-    ImGui::SliderInt("level", &view.settings.layer, 0, texture->layers() - 1);
+    ImGui::SliderInt("level", &view.settings.layer, 0, source.layers() - 1);
     helpMarker("Array layer: for the N-buffer, level n holds min/max over 2^n x 2^n texels.");
   }
 }

@@ -18,6 +18,7 @@
 #include "ui_export.h"
 #include "ui_help.h"
 #include "ui_inspector.h"
+#include "ui_lesson.h"
 #include "ui_pipeline_panel.h"
 #include "ui_scene_panel.h"
 #include "ui_script.h"
@@ -81,8 +82,7 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
     if (!state.twoViews) state.activeView = 0;
   }
   ViewPanel& view = state.views[state.activeView];
-  const GlTexture* texture =
-      state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+  const GlTexture* texture = shownTexture(state, view);
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) view.fitPending = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) {
     view.transform.oneToOne();
@@ -157,9 +157,25 @@ bool drawUi(UiState& state, const Layout& layout) {
   ImGui::End();
 
   drawStatusLine(state, layout);
+  drawLessonWindow(state, layout.left + 0.5f * layout.centerWidth(), layout.centerWidth() - 24,
+                   layout.panelHeight());
   drawHelpWindow(state);
   drawShaderLogWindow(state);
   return movingCamera;
+}
+
+// A script's drag or wheel: this frame's mouse and modifiers, over what the backend read.
+void applySyntheticInput(UiState& state) {
+  if (state.syntheticInput.empty()) return;
+  const SyntheticInput input = state.syntheticInput.front();
+  state.syntheticInput.pop_front();
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = {input.mouse.x, input.mouse.y};
+  for (int b = 0; b < 3; ++b) io.MouseDown[b] = input.buttons[size_t(b)];
+  io.KeyAlt = input.alt;
+  io.KeyShift = input.shift;
+  io.KeyCtrl = input.ctrl;
+  io.MouseWheel = input.wheel;
 }
 
 // 5. What can be checked before a window opens: scene, --set, script.
@@ -200,6 +216,7 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
   for (const std::string& assignment : options.sets) state.pipeline.set(assignment);
   if (state.outputOf("composite.color")) state.selectOutput("composite.color");
   else state.selectStage(state.pipeline.stages().back()->name());
+  state.scrollToStage.clear();  // open on the top of the pipeline panel
   return 0;
 }
 
@@ -231,13 +248,16 @@ int runWindow(const WindowOptions& options) {
     installFrameTraceSource();
     result = prepareState(*state, options, std::move(scene));
     std::unique_ptr<ScriptRunner> runner;
-    if (!options.script.empty()) runner = std::make_unique<ScriptRunner>(std::move(actions));
+    if (!options.script.empty())
+      runner = std::make_unique<ScriptRunner>(
+          std::move(actions), ScriptOptions{options.interactiveLesson, options.exportDirectory});
     int framesRendered = 0, screenshotCount = 0;
     bool draggingSlider = false;
     auto last = std::chrono::steady_clock::now();
     while (result == 0 && !glfwWindowShouldClose(window)) {
       // 7a. Events: wait when idle, so an idle window costs no CPU.
-      const bool busy = runner || !options.screenshot.empty() || state->dirty || state->runEveryFrame;
+      const bool busy = (runner && !state->lesson.waiting) || !options.screenshot.empty() ||
+                        state->dirty || state->runEveryFrame || !state->syntheticInput.empty();
       if (busy) glfwPollEvents();
       else glfwWaitEventsTimeout(0.1);
       const auto now = std::chrono::steady_clock::now();
@@ -251,7 +271,11 @@ int runWindow(const WindowOptions& options) {
           result = 2;
           break;
         }
-        if (step == ScriptRunner::Step::Done) break;
+        if (step == ScriptRunner::Step::Done) {
+          if (!options.interactiveLesson) break;
+          runner.reset();  // a student's lesson ends; the window stays theirs
+          state->lesson.finished = true;
+        }
       }
       if (state->cursorRequest) {  // a script's "mouse": as if the user moved it there
         glfwSetCursorPos(window, state->cursorRequest->x, state->cursorRequest->y);
@@ -265,6 +289,7 @@ int runWindow(const WindowOptions& options) {
       // 7d. The UI.
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      applySyntheticInput(*state);
       ImGui::NewFrame();
       handleShortcuts(*state, window, screenshotCount);
       const bool wasDirty = state->dirty;

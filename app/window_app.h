@@ -12,6 +12,8 @@ struct WindowOptions {
   int width = 1280, height = 800;
   std::string config;  // settings JSON applied at start (app/ui_settings.h), before --set
   std::string script;  // JSON list of UI actions run in order, then exit (app/ui_script.h)
+  std::string exportDirectory;  // --export: where a script's relative exports go
+  bool interactiveLesson = false;  // `penumbra lesson FILE`: wait for "Next", stay open
 };
 
 // Returns the exit status: 0, 1 (no display / GL failure), 2 (bad scene, --set, --config,

@@ -27,7 +27,14 @@ layout(location = 1) uniform int uIterations;
 layout(location = 2) uniform bool uUmbraTest;
 layout(location = 3) uniform vec3 uTraceBias;  // trace.bias, adaptive (0/1), min cosine
 
+layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
+  uint listCount;  // = penumbra + umbra
+  uint listPadding[3];
+  uint tracedPixels[];
+};
+
 shared uint groupCounts[CLASSIFY_CLASS_COUNT];
+shared uint groupListBase;  // this group's first slot in tracedPixels
 
 // Writes the bounds (zNearMin, zNearMax, zFarMax, receiver lsDepth) and returns the class.
 int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
@@ -64,18 +71,31 @@ void main() {
   uint local = gl_LocalInvocationIndex;
   if (local < uint(CLASSIFY_CLASS_COUNT)) groupCounts[local] = 0u;
   barrier();
+  // 1. Classify this pixel.
   ivec2 pixel = screenPixel();
+  int pixelClass = CLASS_BACKGROUND;
+  uint slotInGroup = 0u;
   if (pixel.x >= 0) {
     vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
-    int pixelClass = CLASS_BACKGROUND;
     vec4 zRange = vec4(0.0);  // background: no bounds
     if (wsPosition.w > 0.0)
       pixelClass = classify(wsPosition.xyz, texelFetch(wsNormalTexture, pixel, 0).xyz, zRange);
     imageStore(maskImage, pixel, vec4(float(pixelClass)));
     imageStore(zRangeImage, pixel, zRange);
-    atomicAdd(groupCounts[pixelClass], 1u);
+    slotInGroup = atomicAdd(groupCounts[pixelClass], 1u);
   }
   barrier();
+  // 2. One global atomic per class and group: the counts, and the group's slots in the list
+  //    of pixels that need rays (penumbra first, then umbra; the list's order is not
+  //    deterministic, the trace's result does not depend on it).
+  if (local == 0u)
+    groupListBase = atomicAdd(listCount, groupCounts[CLASS_PENUMBRA] + groupCounts[CLASS_UMBRA]);
   if (local < uint(CLASSIFY_CLASS_COUNT) && groupCounts[local] != 0u)
     atomicAdd(counts.pixels[local], groupCounts[local]);
+  barrier();
+  if (pixelClass == CLASS_PENUMBRA || pixelClass == CLASS_UMBRA) {
+    uint slot = groupListBase + slotInGroup +
+                (pixelClass == CLASS_UMBRA ? groupCounts[CLASS_PENUMBRA] : 0u);
+    tracedPixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16);
+  }
 }

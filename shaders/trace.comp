@@ -3,16 +3,35 @@
 #include "shared/screen_pass.glsl"
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
+#include "shared/classify_layout.h"
 layout(binding = 1) uniform sampler2D wsNormalTexture;
 layout(binding = 5) uniform sampler2D classMask;
 layout(binding = 6) uniform sampler2D zRangeTexture;
 layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
 layout(binding = 1, rgba32f) uniform writeonly image2D costImage;
+layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
+  uint listCount;
+  uint listPadding[3];
+  uint tracedPixels[];
+};
+// 0: every pixel (rows from uRowOffset); 1: the pixels classify listed (penumbra, umbra;
+// uRowOffset = the band's first group), everything else was cleared to visibility 1
+// beforehand; 2: the recorded pixel alone.
+layout(location = 1) uniform int uPixels;
+
+ivec2 tracedPixel() {
+  if (uPixels == 0) return screenPixel();
+  if (uPixels == 2) return gl_LocalInvocationIndex == 0u ? trace.record.xy : ivec2(-1);
+  uint index = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
+  if (index >= listCount) return ivec2(-1);
+  uint xy = tracedPixels[index];
+  return ivec2(int(xy & 0xFFFFu), int(xy >> 16));
+}
 
 void main() {
-  ivec2 pixel = screenPixel();
+  ivec2 pixel = tracedPixel();
   if (pixel.x < 0) return;
-  gRecording = all(equal(pixel, trace.record.xy));
+  gRecording = uPixels != 1 && all(equal(pixel, trace.record.xy));
   vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
   float visibility = 1.0;
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
@@ -21,7 +40,6 @@ void main() {
     visibility = 1.0;  // background, or outside the light's frustum: nothing known blocks it
   } else if (trace.limits.w != 0 && (pixelClass == CLASS_LIT || pixelClass == CLASS_UMBRA)) {
     visibility = pixelClass == CLASS_LIT ? 1.0 : 0.0;  // classification spares every ray (§3.6)
-    atomicAdd(totals[TOTAL_PIXELS_CLASSIFIED], 1u);
     recordStep(-1, STEP_CLASSIFIED, 0, ivec4(-1), vec4(visibility), vec4(0.0));
   } else {
     vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;

@@ -59,6 +59,14 @@ public:
     const gpu::ClassifyCounts zero{};
     counts_.upload(&zero, sizeof zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_COUNTS_BINDING, counts_.id());
+    GlBuffer& tracedPixels = frame.buffer("classify.tracedPixels");
+    const size_t listBytes = CLASSIFY_LIST_HEADER_BYTES + size_t(w) * h * sizeof(std::uint32_t);
+    GLint64 currentBytes = 0;
+    glGetNamedBufferParameteri64v(tracedPixels.id(), GL_BUFFER_SIZE, &currentBytes);
+    if (size_t(currentBytes) != listBytes) tracedPixels.upload(nullptr, listBytes);
+    const std::uint32_t zeroCount = 0;
+    glNamedBufferSubData(tracedPixels.id(), 0, sizeof zeroCount, &zeroCount);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
 
     program_.use();
     glBindTextureUnit(0, frame.input("gbuffer.wsPosition").id());

@@ -71,6 +71,7 @@ public:
   void run(Frame& frame) override {
     const std::string key = "reference.visibility";
     if (!param("enabled").asBool()) {
+      stopJob();
       frame.textures.erase(key);  // a stale truth must not be compared against
       return;
     }
@@ -92,6 +93,7 @@ public:
       frame.counters["reference.cacheHit"] = 0;
       visibility = compute(frame, std::move(request), cacheKey);
     }
+    if (visibility && job_ && job_->key != cacheKey) stopJob();  // back to a known view
     if (!visibility) {
       frame.textures.erase(key);  // pending (background) or cancelled
       return;

@@ -5,6 +5,10 @@
 
 #include "frame.h"
 #include "gpu_layout_trace.h"
+
+namespace gpu {
+#include "shared/classify_layout.h"
+}  // namespace gpu
 #include "pipeline.h"
 #include "shader_program.h"
 
@@ -116,10 +120,7 @@ public:
 
     // 4. The pass.
     if (param("deferred").asBool()) {
-      deferred_.use();
-      glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-      glBindImageTexture(1, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-      dispatchRows(w, h, kRowsPerBand);
+      runDeferred(frame, visibility, cost, params.record.x >= 0 && params.record.y >= 0);
     } else {
       runForward(frame, visibility, cost);
     }
@@ -129,10 +130,13 @@ public:
     std::uint32_t totals[TOTAL_COUNT];
     glGetNamedBufferSubData(totalsBuffer_.id(), 0, sizeof totals, totals);
     const char* names[] = {"rays", "raysSearched", "fetches", "iterations", "earlyOutBackface",
-                           "earlyOutInside", "earlyOutRegion", "pixelsClassified",
-                           "iterationCapReached"};
+                           "earlyOutInside", "earlyOutRegion", "iterationCapReached"};
     for (int i = 0; i <= TOTAL_ITERATION_CAP; ++i)
       frame.counters["trace." + std::string(names[i])] = totals[i];
+    // Pixels that classification spared: lit and umbra, counted by classify (no atomics here).
+    frame.counters["trace.pixelsClassified"] =
+        param("use_classification").asBool() && param("deferred").asBool()
+            ? frame.counters["classify.lit"] + frame.counters["classify.umbra"] : 0.0;
     frame.counters["trace.fetchesPerRay"] =
         totals[TOTAL_RAYS] ? double(totals[TOTAL_FETCHES]) / totals[TOTAL_RAYS] : 0.0;
     readRecords(frame);
@@ -141,6 +145,37 @@ public:
 private:
   static constexpr int kRecordCapacity = 8192;
   static constexpr int kRowsPerBand = 64;
+
+  // With classification, only the pixels classify listed are dispatched (64 per group, in
+  // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
+  void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
+    deferred_.use();
+    glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(1, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    if (!param("use_classification").asBool()) {
+      glUniform1i(1, 0);
+      dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
+      return;
+    }
+    const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
+    glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
+    glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING,
+                     frame.buffer("classify.tracedPixels").id());
+    const int listed = int(frame.counters.at("classify.penumbra") + frame.counters.at("classify.umbra"));
+    glUniform1i(1, 1);  // uPixels
+    const int groups = (listed + 63) / 64, groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
+    for (int first = 0; first < groups; first += groupsPerBand) {
+      glUniform1i(0, first);
+      glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
+    }
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    if (recording) {  // the recorded pixel once more, alone, with its steps (any class)
+      glUniform1i(1, 2);
+      glDispatchCompute(1, 1, 1);
+      glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    }
+  }
 
   void runForward(Frame& frame, GlTexture& visibility, GlTexture& cost) {
     if (forwardDepth_.width() != frame.eyeWidth || forwardDepth_.height() != frame.eyeHeight)

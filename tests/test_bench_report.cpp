@@ -54,10 +54,12 @@ glm::vec3 occluderCentre(const Scene& scene) {
 
 TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   const auto out = scratch("tiny"), cache = scratch("tiny-cache");
+  setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // inherited by the command
   const CommandResult result = runPenumbra(
       "bench --scene plate --preset minimal --sweep trace.rays=1,2 --width 64 --height 48 "
-      "--frames 2 --warmup 1 --reference-samples 4 --out " + out.string() +
-      " 2>&1; true");  // exit code checked below through the files
+      "--frames 2 --warmup 1 --reference-samples 4 --out " + out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("references: 1 to compute"), std::string::npos) << result.output;
   ASSERT_TRUE(std::filesystem::exists(out / "results.csv")) << result.output;
   const auto rows = readCsv(out / "results.csv");
   ASSERT_EQ(rows.size(), 4u) << result.output;  // header + hard shadow + hierarchical x 2 rays
@@ -81,10 +83,12 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   EXPECT_TRUE(std::filesystem::exists(out / "results.md"));
   EXPECT_TRUE(std::filesystem::exists(out / "speed_vs_error.png"));
   std::filesystem::remove_all(out);
+  std::filesystem::remove_all(cache);
 }
 
 TEST(BenchReport, RefusesWhenTheReferenceWouldExceedTheTimeLimit) {
-  const auto out = scratch("refuse");
+  const auto out = scratch("refuse"), cache = scratch("refuse-cache");
+  setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // nothing cached: the estimate decides
   const CommandResult result = runPenumbra(
       "bench --scene plate --preset minimal --width 64 --height 48 --frames 1 "
       "--reference-samples 64 --time-limit 0.000001 --out " + out.string());

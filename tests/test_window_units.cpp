@@ -1,12 +1,15 @@
-// The window's logic without a window: zoom/pan mapping, camera and light control, settings
-// JSON (round trip, all-or-nothing errors), script parsing, export file names.
+// The window's logic without a window: zoom/pan mapping, camera and light control (sliders and
+// the Alt gestures' geometry), settings JSON (round trip, all-or-nothing errors), script
+// parsing, lessons (interactive stepping, export directories), export file names.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "scene_builtin.h"
 #include "ui_camera.h"
 #include "ui_export.h"
+#include "ui_light_gesture.h"
 #include "ui_nbuffer_hover.h"
 #include "ui_script.h"
 #include "ui_settings.h"
@@ -176,4 +179,139 @@ TEST(WindowUnits, NBufferHoverWindowSpansTwoToTheLevelInsideTheMap) {
   nbufferWindow(3, {10, 0}, {64, 64}, lo, hi);  // centred where it can, shifted at the edge
   EXPECT_EQ(lo, glm::ivec2(6, 0));
   EXPECT_EQ(hi, glm::ivec2(13, 7));
+}
+
+namespace {
+// Eye at (0, 5, 0) looking straight down, 90 degrees, square: the ground (y = 0) under eye
+// texel (u, v) of a 100 x 100 image is x = 5 (2u/100 - 1), z = -5 (2v/100 - 1) (up is -z).
+glm::mat4 downCamera() {
+  const glm::mat4 view = glm::lookAt(glm::vec3(0, 5, 0), glm::vec3(0), glm::vec3(0, 0, -1));
+  return glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f) * view;
+}
+}  // namespace
+
+TEST(WindowUnits, LightGeometryProjectsAndDragsOverTheGroundAsTheCursorMoves) {
+  const glm::mat4 clipFromWorld = downCamera(), worldFromClip = glm::inverse(clipFromWorld);
+  const glm::ivec2 eye{100, 100};
+  glm::vec3 ground;
+  ASSERT_TRUE(groundPointAt(worldFromClip, eye, {75, 50}, 0, ground));
+  EXPECT_NEAR(ground.x, 2.5f, 1e-4);
+  EXPECT_NEAR(ground.z, 0.0f, 1e-4);
+  ASSERT_TRUE(groundPointAt(worldFromClip, eye, {50, 90}, 0, ground));
+  EXPECT_NEAR(ground.z, -4.0f, 1e-4);
+  glm::vec2 texel;
+  ASSERT_TRUE(eyeTexelOf(clipFromWorld, eye, {-2.5f, 0, 2.5f}, texel));
+  EXPECT_NEAR(texel.x, 25, 1e-3);
+  EXPECT_NEAR(texel.y, 25, 1e-3);
+  EXPECT_FALSE(eyeTexelOf(clipFromWorld, eye, {0, 6, 0}, texel));  // behind the eye
+  // A drag of 25 texels to the right moves the light 2.5 units along +x, nothing else.
+  AreaLight light;
+  light.center = {0.5f, 4, 0.25f};
+  ASSERT_TRUE(moveLightOnGround(light, worldFromClip, eye, {50, 50}, {75, 50}, 0, 10));
+  EXPECT_NEAR(light.center.x, 3.0f, 1e-4);
+  EXPECT_NEAR(light.center.y, 4.0f, 1e-6);
+  EXPECT_NEAR(light.center.z, 0.25f, 1e-4);
+  EXPECT_FALSE(moveLightOnGround(light, worldFromClip, eye, {50, 50}, {75, 50}, 0, 1));  // > max
+  EXPECT_NEAR(light.center.x, 3.0f, 1e-4);
+  // Looking at the horizon, a texel above it never meets the ground: no move.
+  const glm::mat4 level = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
+                          glm::lookAt(glm::vec3(0, 1, 0), glm::vec3(0, 1, -1), glm::vec3(0, 1, 0));
+  EXPECT_FALSE(moveLightOnGround(light, glm::inverse(level), eye, {50, 20}, {50, 90}, 0, 10));
+  EXPECT_NEAR(light.center.x, 3.0f, 1e-4);
+}
+
+TEST(WindowUnits, LightCornersScaleAndTurnKeepAValidRectangle) {
+  AreaLight light;  // faces down, up = -z: right = forward x up = +x
+  light.center = {1, 4, 2};
+  light.width = 2;
+  light.height = 1;
+  const auto corners = lightCorners(light);
+  for (const glm::vec3& c : corners) {
+    EXPECT_NEAR(std::abs(c.x - 1), 1.0f, 1e-5);
+    EXPECT_NEAR(c.y, 4.0f, 1e-6);
+    EXPECT_NEAR(std::abs(c.z - 2), 0.5f, 1e-5);
+  }
+  EXPECT_NEAR(glm::distance(corners[0], corners[1]), 2.0f, 1e-5);  // consecutive: a side
+  EXPECT_NEAR(glm::distance(corners[1], corners[2]), 1.0f, 1e-5);
+  scaleLight(light, 1e6f, 0.5f);
+  EXPECT_EQ(light.width, kMaxLightSize);
+  EXPECT_FLOAT_EQ(light.height, 0.5f);
+  scaleLight(light, 1e-9f, 1);
+  EXPECT_EQ(light.width, kMinLightSize);
+  setLightAngles(light, 20, -60);
+  turnLight(light, 30, 100);  // pitch stops at horizontal
+  float yaw = 0, pitch = 0;
+  lightAngles(light, yaw, pitch);
+  EXPECT_NEAR(yaw, 50, 1e-2);
+  EXPECT_NEAR(pitch, 0, 1e-2);
+  turnLight(light, 0, -500);
+  lightAngles(light, yaw, pitch);
+  EXPECT_NEAR(pitch, -90, 1e-2);
+  Scene scene = makeBuiltinScene("cube");
+  scene.light = light;
+  EXPECT_EQ(validateScene(scene), "");
+}
+
+namespace {
+std::vector<ScriptAction> parsed(const std::string& text) {
+  std::vector<ScriptAction> actions;
+  EXPECT_EQ(parseScriptJson(json::parse(text), actions), "");
+  return actions;
+}
+}  // namespace
+
+TEST(WindowUnits, InteractiveLessonWaitsForNextBeforeEachSayAfterTheFirst) {
+  const std::string lesson = R"([{"lesson": "T"}, {"say": "one"}, {"set": {"trace.rays": 3}},
+      {"say": "two"}, {"say": "three"}])";
+  UiState state;
+  useCube(state);
+  ScriptRunner runner(parsed(lesson), ScriptOptions{true, ""});
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(runner.step(state), ScriptRunner::Step::Running);
+  EXPECT_EQ(state.lesson.title, "T");
+  EXPECT_EQ(state.lesson.text, "one");  // the student has not asked for more
+  EXPECT_EQ(state.lesson.step, 1);
+  EXPECT_EQ(state.lesson.steps, 3);
+  EXPECT_TRUE(state.lesson.waiting);
+  EXPECT_EQ(state.pipeline.param("trace.rays").asInt(), 3);  // the step's own actions ran
+  state.lesson.next = true;
+  EXPECT_EQ(runner.step(state), ScriptRunner::Step::Running);
+  EXPECT_EQ(state.lesson.text, "two");
+  EXPECT_FALSE(state.lesson.next);
+  for (int i = 0; i < 3; ++i) runner.step(state);
+  EXPECT_EQ(state.lesson.text, "two");
+  state.lesson.next = true;
+  runner.step(state);
+  EXPECT_EQ(state.lesson.text, "three");
+  EXPECT_EQ(runner.step(state), ScriptRunner::Step::Done);
+  // Played through (a script, or `penumbra lesson --export`): nobody waits.
+  UiState through;
+  useCube(through);
+  ScriptRunner all(parsed(lesson), ScriptOptions{false, ""});
+  ScriptRunner::Step step = ScriptRunner::Step::Running;
+  for (int i = 0; i < 20 && step == ScriptRunner::Step::Running; ++i) step = all.step(through);
+  EXPECT_EQ(step, ScriptRunner::Step::Done);
+  EXPECT_EQ(through.lesson.text, "three");
+  EXPECT_EQ(through.lesson.step, 3);
+}
+
+TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
+  const std::string script = R"([{"export_dir": "from_script"}, {"screenshot": "a.png"},
+      {"wait": 1}, {"screenshot": "/abs/b.png"}])";
+  for (const std::string& override : {std::string(), std::string("/tmp/override")}) {
+    UiState state;
+    useCube(state);
+    ScriptRunner runner(parsed(script), ScriptOptions{false, override});
+    std::vector<std::string> requested;
+    for (int i = 0; i < 12 && runner.step(state) == ScriptRunner::Step::Running; ++i)
+      if (!state.screenshotRequest.empty()) {
+        requested.push_back(state.screenshotRequest);
+        state.screenshotRequest.clear();
+      }
+    ASSERT_EQ(requested.size(), 2u) << override;
+    EXPECT_EQ(requested[0], (override.empty() ? "from_script" : override) + "/a.png");
+    EXPECT_EQ(requested[1], "/abs/b.png");
+  }
+  std::vector<ScriptAction> actions;
+  EXPECT_NE(parseScriptJson(json::parse(R"([{"say": 3}])"), actions).find("expected a string"),
+            std::string::npos);
 }

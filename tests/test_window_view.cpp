@@ -1,7 +1,8 @@
 // The window's texture view on llvmpipe: the GPU mapping (shaders/view.comp) shows exactly
 // the bytes the CPU twin (displayRgb8ForView over app/colormap.cpp) writes into "PNG as
 // displayed", for every colormap, channel selection, overlay, array layer and integer
-// texture; texel read-back returns what was uploaded.
+// texture; texel read-back returns what was uploaded; the difference view (A - B) equals the
+// CPU's subtraction.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "colormap.h"
 #include "support/gl_test.h"
 #include "texture_view.h"
+#include "ui_view_difference.h"
 #include "ui_view_settings.h"
 
 namespace {
@@ -192,4 +194,76 @@ TEST(WindowView, AutofitRangeCoversFiniteShownValuesOnly) {
   ASSERT_TRUE(finiteRange(values, 4, settings, low, high));
   EXPECT_EQ(low, 0.0f);
   EXPECT_EQ(high, 100.0f);
+}
+
+namespace {
+// Equal bit for bit, or both NaN.
+void expectSameFloats(const std::vector<float>& gpu, const std::vector<float>& cpu, const std::string& what) {
+  ASSERT_EQ(gpu.size(), cpu.size()) << what;
+  int differing = 0;
+  for (size_t i = 0; i < gpu.size(); ++i) {
+    const bool same = std::isnan(cpu[i]) ? std::isnan(gpu[i]) : gpu[i] == cpu[i];
+    if (!same && ++differing <= 3)
+      ADD_FAILURE() << what << ": value " << i << " GPU " << gpu[i] << " CPU " << cpu[i];
+  }
+  EXPECT_EQ(differing, 0) << what;
+}
+}  // namespace
+
+TEST(WindowView, DifferenceViewIsASubtractedTexelByTexelOnTheCpu) {
+  headlessContext();
+  ViewDifference difference;
+  std::string problem;
+  // 1. RGBA minus a one-channel texture: B's channel under every channel of A.
+  const auto a = testValues(4, 30), b = testValues(1, 31);
+  GlTexture textureA = upload(GL_RGBA32F, a, 4), textureB = upload(GL_R32F, b, 1);
+  const GlTexture* result = difference.update(textureA, textureB, 0, false, 1, problem);
+  ASSERT_NE(result, nullptr) << problem;
+  EXPECT_EQ(result->channelCount(), 4);
+  std::vector<float> expected(a.size());
+  for (size_t i = 0; i < a.size(); ++i) expected[i] = a[i] - b[i / 4];
+  expectSameFloats(result->readFloats(), expected, "RGBA - R");
+  // 2. Depth layers (far - near) with negatives clipped: uncovered texels become 0.
+  std::vector<float> nearValues(size_t(kWidth) * kHeight), farValues(nearValues.size());
+  for (size_t i = 0; i < nearValues.size(); ++i) {
+    const bool covered = i % 3 != 0;
+    nearValues[i] = covered ? 0.25f + 0.001f * float(i % 97) : 1.0f;
+    farValues[i] = covered ? nearValues[i] + 0.002f * float(i % 13) : 0.0f;
+  }
+  GlTexture nearTexture(GL_DEPTH_COMPONENT32F, kWidth, kHeight), farTexture(GL_DEPTH_COMPONENT32F, kWidth, kHeight);
+  glTextureSubImage2D(nearTexture.id(), 0, 0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_FLOAT, nearValues.data());
+  glTextureSubImage2D(farTexture.id(), 0, 0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_FLOAT, farValues.data());
+  for (bool clip : {false, true}) {
+    result = difference.update(farTexture, nearTexture, 0, clip, 2, problem);
+    ASSERT_NE(result, nullptr) << problem;
+    EXPECT_EQ(result->channelCount(), 1);
+    for (size_t i = 0; i < farValues.size(); ++i) {
+      const float d = farValues[i] - nearValues[i];
+      expected[i] = clip && d < 0 ? 0.0f : d;
+    }
+    expected.resize(farValues.size());
+    expectSameFloats(result->readFloats(), expected, clip ? "far - near, clipped" : "far - near");
+  }
+  // 3. One layer of an array (an N-buffer level) minus a 2D texture.
+  std::vector<float> layered = testValues(4, 40);
+  const auto layer1 = testValues(4, 41);
+  layered.insert(layered.end(), layer1.begin(), layer1.end());
+  GlTexture array = upload(GL_RGBA32F, layered, 4, 2);
+  result = difference.update(array, textureA, 1, false, 3, problem);
+  ASSERT_NE(result, nullptr) << problem;
+  expected.resize(a.size());
+  for (size_t i = 0; i < a.size(); ++i) expected[i] = layer1[i] - a[i];
+  expectSameFloats(result->readFloats(), expected, "array layer 1 - 2D");
+  // 4. Cached per generation (the pipeline's run count): new contents show on the next one.
+  const std::vector<float> before = result->readFloats();
+  const auto layer0 = testValues(4, 40);
+  glTextureSubImage2D(textureA.id(), 0, 0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, layer0.data());
+  expectSameFloats(difference.update(array, textureA, 1, false, 3, problem)->readFloats(), before, "cached");
+  for (size_t i = 0; i < a.size(); ++i) expected[i] = layer1[i] - layer0[i];
+  expectSameFloats(difference.update(array, textureA, 1, false, 4, problem)->readFloats(), expected,
+                   "next generation");
+  GlTexture small(GL_R32F, 8, 8);
+  EXPECT_EQ(difference.update(textureA, small, 0, false, 5, problem), nullptr);
+  EXPECT_NE(problem.find("37x23"), std::string::npos) << problem;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }

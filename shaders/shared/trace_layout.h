@@ -31,8 +31,7 @@
 #define TOTAL_EARLY_BACKFACE 4
 #define TOTAL_EARLY_INSIDE 5
 #define TOTAL_EARLY_REGION 6
-#define TOTAL_PIXELS_CLASSIFIED 7  // pixels spared by classification
-#define TOTAL_ITERATION_CAP 8      // rays stopped by the iteration cap (should stay 0)
+#define TOTAL_ITERATION_CAP 7      // rays stopped by the iteration cap (should stay 0)
 #define TOTAL_COUNT 12
 
 struct TraceParams {
