@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
       ->required()->check(CLI::ExistingFile);
   lessonCommand->add_option("--export", lesson.exportDirectory, "write the figures here and exit");
   lessonCommand->add_option("--scene", lesson.scene, "scene to start from")->capture_default_str();
+  lessonCommand->add_option("--screenshot", lesson.screenshot, "save the window after --frames and exit");
+  lessonCommand->add_option("--frames", lesson.frames, "frames before --screenshot")->check(CLI::Range(1, 100000));
 
   ExportOptions exporting;
   CLI::App* exportCommand = app.add_subcommand("export", "run the pipeline headless and write "

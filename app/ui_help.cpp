@@ -7,7 +7,7 @@
 const Shortcut* shortcuts(int& count) {
   static const Shortcut list[] = {
       {"F1 or ?", "show / hide this help"},
-      {"F5", "reload shaders (on a compile error the last good program stays)"},
+      {"F5", "reload shaders (a failed compile keeps the last good one)"},
       {"Tab", "switch the active view (A / B)"},
       {"V", "show / hide the second view"},
       {"F", "fit the active view"},
@@ -25,7 +25,7 @@ const Shortcut* shortcuts(int& count) {
       {"Middle or Shift+right drag", "pan the camera"},
       {"Ctrl+wheel", "move the camera closer / farther"},
       {"Ctrl+click an output", "show it in the other view"},
-      {"Alt+drag (scene view)", "move the light over the ground (its outline is drawn in yellow)"},
+      {"Alt+drag (scene view)", "move the light over the ground (outline: yellow)"},
       {"Alt+Shift+drag", "raise / lower the light"},
       {"Alt+right drag", "turn the light (yaw, pitch)"},
       {"Alt+wheel", "scale the light (Shift: width only, Ctrl: height only)"},

@@ -135,6 +135,19 @@ void drawRayTrace(UiState& state) {
   glm::ivec2 lightMap{0};
   if (state.frame->has("light_layers.near"))
     lightMap = {state.frame->input("light_layers.near").width(), state.frame->input("light_layers.near").height()};
+  if (ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels, zoomed
+    if (ViewPanel* target = state.selectionTarget(); target && state.selectOutput("nbuffer.levels").empty()) {
+      target->frameOverlays = true;
+      int finest = 1 << 30;  // the finest level the ray visited (linear samples: level 0)
+      for (const RayStepRecord& step : trace.steps)
+        if (step.level >= 0) finest = std::min(finest, step.level);
+      target->settings.layer = finest == 1 << 30 ? 0 : finest;
+    }
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Show nbuffer.levels in the active view, zoomed onto this ray's visited\n"
+                      "windows (hierarchical) or samples (linear).");
+  ImGui::SameLine();
   ImGui::Checkbox("own window", &state.traceWindow);
   if (!state.traceWindow) {
     drawRayTracePanel(trace, lightMap, state.overlays);

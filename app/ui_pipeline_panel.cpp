@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ui_state.h"
+#include "ui_view_difference.h"
 #include "ui_widgets.h"
 
 namespace {
@@ -39,6 +40,22 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   ImGui::TextDisabled("%s %s", formatName(output.format), size.c_str());
 }
 
+// 1b. Stage-specific view (issue 4): the light layers' difference, far - near, where covered.
+void drawThicknessLine(UiState& state) {
+  bool shown = false;
+  for (int v = 0; v < (state.twoViews ? 2 : 1); ++v)
+    shown |= state.views[v].output == "light_layers.far" && state.views[v].minus == "light_layers.near";
+  if (ImGui::Selectable("  thickness (far - near)###light_layers.thickness", shown)) {
+    state.status = showThickness(state);
+    state.scrollToStage.clear();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The occluders' extent along the light: far - near where both layers are\n"
+                      "covered (uncovered texels shown as 0), diverging colormap (thesis §3.3,\n"
+                      "Fig 3.4). A difference view: any two outputs can be subtracted in a view's\n"
+                      "'-' menu.");
+}
+
 // 2. A stage: header with number, name and median ms; body with summary and parameters.
 void drawStage(UiState& state, Stage& stage, int number) {
   char header[160];
@@ -62,6 +79,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
   ImGui::PopTextWrapPos();
   if (!stage.thesisSection().empty()) ImGui::TextDisabled("thesis %s", stage.thesisSection().c_str());
   for (const Output& output : stage.outputs()) drawOutput(state, stage, output);
+  if (stage.name() == "light_layers") drawThicknessLine(state);
   ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
   for (Param& param : stage.params())
     if (drawParam(param)) {

@@ -63,7 +63,7 @@ const std::map<std::string, Check>& actionChecks() {
       {"print_timing", kString}, {"print_pick", kString}, {"camera_moving", kBool},
       {"trace_window", kBool}, {"mouse", kPair}, {"drag", kObject}, {"wheel", kObject},
       {"difference", kString}, {"thickness", kBool}, {"clip_negative", kBool},
-      {"show_light", kBool}, {"lesson", kString}, {"say", kString}, {"export_dir", kString}};
+      {"show_light", kBool}, {"show_ray", kBool}, {"lesson", kString}, {"say", kString}, {"export_dir", kString}};
   return checks;
 }
 

@@ -114,6 +114,12 @@ std::string ScriptRunner::runMore(UiState& state, const ScriptAction& action) {
   if (name == "thickness") return a.get<bool>() ? showThickness(state) : setViewDifference(state, view, "");
   if (name == "clip_negative") { view.clipNegative = a.get<bool>(); return ""; }
   if (name == "show_light") { state.showLight = a.get<bool>(); return ""; }
+  if (name == "show_ray") {  // as the trace panel's "Show on N-buffer" button
+    ViewPanel* target = state.selectionTarget();
+    if (std::string problem = state.selectOutput("nbuffer.levels"); !problem.empty()) return problem;
+    if (target) target->frameOverlays = a.get<bool>();
+    return "";
+  }
   if (name == "lesson") {
     state.lesson.title = a.get<std::string>();
     state.lesson.steps = says_;

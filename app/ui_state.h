@@ -33,6 +33,7 @@ struct ViewPanel {
   glm::vec2 eyeRegion{0, 0};   // the view's area less a fixed toolbar reserve: "fit view" eye
   glm::ivec2 lastTextureSize{0, 0};  // to keep the picture in place when the size changes
   glm::vec2 regionOrigin{0, 0};  // top-left of the image region last frame (window pixels)
+  bool frameOverlays = false;  // zoom onto the ray trace's shapes once they are drawn here
   TextureView renderer;
   // Difference view (app/ui_view_difference.h): shows output - minus when minus is set.
   std::string minus;

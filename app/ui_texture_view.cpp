@@ -1,5 +1,6 @@
 #include "ui_texture_view.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -55,6 +56,22 @@ void placeImage(ViewPanel& view, const GlTexture& texture, glm::vec2 regionSize)
   lastSize = size;
 }
 
+// 1c. "Show on the N-buffer": the view zooms onto the ray's windows and points.
+void frameOverlays(const UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 regionSize) {
+  glm::vec2 lo{1e30f}, hi{-1e30f};
+  for (const ViewOverlayShape& shape : state.overlays)
+    if (shape.space == size) {
+      lo = glm::min(lo, glm::min(shape.a, shape.b));
+      hi = glm::max(hi, glm::max(shape.a, shape.b));
+    }
+  if (lo.x > hi.x) return;  // not drawn yet (the pipeline records the pixel first)
+  const glm::vec2 extent = glm::max(hi - lo, glm::vec2(40)) * 1.4f;  // some context around
+  view.transform.zoom = std::clamp(std::min(regionSize.x / extent.x, regionSize.y / extent.y), kMinZoom, 32.0f);
+  view.transform.center = 0.5f * (lo + hi);
+  view.fitted = false;
+  view.frameOverlays = false;
+}
+
 // 2. Image, texel grid, overlay rectangles, pick marker, all clipped to the region.
 void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& display,
                glm::vec2 origin, glm::vec2 regionSize, std::optional<glm::ivec2> hover) {
@@ -97,7 +114,9 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
     glm::ivec2 lo, hi;
     nbufferWindow(view.settings.layer, *hover, size, lo, hi);
     texelRect(t, lo, hi, origin, regionSize, topLeft, bottomRight);
-    draw->AddRect(topLeft, bottomRight, IM_COL32(0, 230, 255, 255), 0, 0, 2);
+    // Magenta: no N-buffer level's colour (ui_trace_panel.cpp levelColor), so it never
+    // reads as one of the ray's visited windows.
+    draw->AddRect(topLeft, bottomRight, IM_COL32(255, 0, 255, 255), 0, 0, 2);
   }
   if (state.frame && size == glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight))
     drawLightOutline(state, view, size, origin, regionSize);
@@ -224,6 +243,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     else ImGui::TextDisabled("%s", problem.c_str());
   } else {
     placeImage(view, *texture, regionSize);
+    if (view.frameOverlays) frameOverlays(state, view, {texture->width(), texture->height()}, regionSize);
     view.regionSize = regionSize;
     const glm::vec2 origin = toGlm(ImGui::GetCursorScreenPos());
     view.regionOrigin = origin;

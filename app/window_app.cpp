@@ -312,7 +312,9 @@ int runWindow(const WindowOptions& options) {
         state->status = "screenshot " + state->screenshotRequest;
         state->screenshotRequest.clear();
       }
-      if (!runner && !options.screenshot.empty() && framesRendered >= options.frames) {
+      // (An interactive lesson waits for the student: its screenshot shows where it waits.)
+      if ((!runner || options.interactiveLesson) && !options.screenshot.empty() &&
+          framesRendered >= options.frames) {
         saveScreenshot(window, options.screenshot);
         std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(), framesRendered);
         break;
