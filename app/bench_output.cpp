@@ -285,7 +285,9 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
   for (size_t s = 0; s < setups.size(); ++s) {
     size_t count = 0;
     for (const BenchResult& r : results) count += r.setup == s;
-    if (count < 3) continue;
+    // Setups of a scene/light sweep get the error-against-value plots below instead.
+    const bool sweptSetup = !setups[s].axis.empty() && setups[s].axis != "map";
+    if (count < 3 || (sweptSetup && count < 6)) continue;
     const auto path = directory / (s == 0 ? std::string("speed_vs_error.png")
                                           : "speed_vs_error_" + fileSafe(setups[s].label) + ".png");
     textNote = writeScatterPlot(path, scatterOf(results, s, "Speed against error: " + setups[s].label));
@@ -309,7 +311,7 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
     textNote = writeScatterPlot(path, spec);
     written.push_back(path);
   }
-  if (!textNote.empty()) md << "Plots: " ;
+  if (!textNote.empty()) md << "Plots: ";
   for (const auto& path : written)
     if (path.extension() == ".png") md << "![" << path.filename().string() << "](" << path.filename().string() << ") ";
   if (!textNote.empty()) md << "\n\n(plot text: " << textNote << ")\n";

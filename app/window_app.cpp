@@ -22,6 +22,7 @@
 #include "ui_pipeline_panel.h"
 #include "ui_scene_panel.h"
 #include "ui_script.h"
+#include "watchdog.h"
 #include "ui_settings.h"
 #include "ui_state.h"
 #include "ui_texture_view.h"
@@ -227,6 +228,10 @@ int runWindow(const WindowOptions& options) {
   Scene scene;
   std::vector<ScriptAction> actions;
   if (int status = checkOptions(options, scene, actions)) return status;
+  // Unattended runs end with a message rather than hang (tests, lesson exports).
+  std::unique_ptr<Watchdog> watchdog;
+  if (!options.interactiveLesson && (!options.script.empty() || !options.screenshot.empty()))
+    watchdog = std::make_unique<Watchdog>(options.script.empty() ? "--screenshot" : "--script " + options.script, 300);
   std::string error;
   std::unique_ptr<GlContext> context = GlContext::createWindow(options.width, options.height, "penumbra", error);
   if (!context) {

@@ -10,12 +10,14 @@
 // we walk from the light (depth increasing), so the same transitions read backwards: *from*
 // in front, or *to* behind.
 
-struct LayerState { bool inFront, behind; };  // both: near > far (e.g. empty texel)
+struct LayerState { bool inFront, behind; };
 
+// An empty texel (near 1, far 0 as cleared: near > far) is neither: the ray passing over
+// empty map is no transition, else every ray would refine at its first step.
 LayerState layerState(vec2 layers, float depth) {
+  if (layers.x > layers.y) return LayerState(false, false);
   return LayerState(depth < layers.x, depth > layers.y);
 }
-bool isInside(LayerState state) { return !state.inFront && !state.behind; }
 bool isSuspicious(LayerState from, LayerState to) {
   return (from.inFront && !to.inFront) || (to.behind && !from.behind);
 }
@@ -26,7 +28,7 @@ bool sampleBlocks(Ray ray, float s, int layers, out LayerState state) {
   float depth = rayLsDepth(ray, s);
   state = layerState(layers2, depth);
   if (layers == 1) return depth >= layers2.x;
-  if (!isInside(state)) return false;
+  if (depth < layers2.x || depth > layers2.y) return false;  // not between near and far
   return layers == 2 || hiddenFromEye(rayWorldPoint(ray, s));
 }
 
