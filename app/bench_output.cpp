@@ -302,6 +302,7 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
     spec.xLabel = setup.axis + (setup.axis == "light_scale" ? " (x scene light)" : setup.axis == "lateral" ? " (light widths)" : " (0 receiver .. 1 light)");
     spec.yLabel = "mean |visibility error| in shadow (Atty 2006)";
     spec.logX = false;
+    spec.connectSeries = true;
     auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), r.family);
     if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(r.family); it = spec.seriesNames.end() - 1; }
     spec.points.push_back({setup.axisValue, r.error.meanAbsInShadow, int(it - spec.seriesNames.begin()), r.label, false});

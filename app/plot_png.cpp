@@ -180,6 +180,16 @@ std::string writeScatterPlot(const std::filesystem::path& path, const PlotSpec& 
   for (size_t i = 1; i < frontier.size(); ++i)
     OIIO::ImageBufAlgo::render_line(image, px(frontier[i - 1]->x), py(frontier[i - 1]->y),
                                     px(frontier[i]->x), py(frontier[i]->y), kFrontier);
+  if (spec.connectSeries)
+    for (size_t series = 0; series < spec.seriesNames.size(); ++series) {
+      std::vector<const PlotPoint*> line;
+      for (const PlotPoint* p : points) if (p->series == int(series)) line.push_back(p);
+      std::sort(line.begin(), line.end(), [](auto a, auto b) { return a->x < b->x; });
+      const Color& c = kSeries[series % std::size(kSeries)];
+      for (size_t i = 1; i < line.size(); ++i)
+        OIIO::ImageBufAlgo::render_line(image, px(line[i - 1]->x), py(line[i - 1]->y),
+                                        px(line[i]->x), py(line[i]->y), c);
+    }
   for (const PlotPoint* p : points) marker(image, px(p->x), py(p->y), p->series, 4);
   for (size_t i = 0; i < frontier.size(); ++i) {
     const int fx = px(frontier[i]->x), fy = py(frontier[i]->y);

@@ -21,6 +21,7 @@ struct PlotSpec {
   std::string frontierCaption = "Pareto frontier (x, y):";
   bool logX = true;
   bool logY = false;
+  bool connectSeries = false;  // a line through each series' points, in x order (sweeps)
   int width = 1000, height = 680;
   bool forceBitmapFont = false;  // tests
 };

@@ -69,7 +69,9 @@ public:
   ReferenceTracer& operator=(const ReferenceTracer&) = delete;
 
   size_t occluderTriangles() const { return triangles_; }
-  int packetWidth() const { return packetWidth_; }  // 16, 8, 4 or 1 (native to this CPU)
+  // 16, 8, 4 or 1: the widest packet native to this CPU ($PENUMBRA_REFERENCE_PACKET forces
+  // one, for measurements; every width gives the same bits).
+  int packetWidth() const { return packetWidth_; }
 
   // Visibility per pixel (GL order, 1 where there is no geometry). Rows are shared out to
   // `threads` std::threads (0: hardware concurrency). Returns false (and a partial image)
