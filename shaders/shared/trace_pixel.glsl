@@ -87,9 +87,13 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
     }
     // 4. Ray shortening to [zNearMin, zFarMax] (§3.7, Fig 3.9); one layer keeps its far end
     //    (behind the near layer is solid however deep).
+    //    The band is widened by kShortenMargin: nothing can block the ray outside
+    //    [zNearMin, zFarMax], so the margin costs nothing, and a zero-thickness occluder
+    //    (zNearMin == zFarMax) keeps a ray of non-zero length through it.
     if (trace.switches.w != 0) {
-      sStart = max(sStart, raySAtLsDepth(ray, zBounds.x));
-      if (layers >= 2) sEnd = min(sEnd, raySAtLsDepth(ray, zBounds.y));
+      const float kShortenMargin = 1e-4;
+      sStart = max(sStart, raySAtLsDepth(ray, zBounds.x - kShortenMargin));
+      if (layers >= 2) sEnd = min(sEnd, raySAtLsDepth(ray, zBounds.y + kShortenMargin));
     }
     // 5. early out: nothing in the ray's region can block it (§3.7).
     if (sStart > sEnd || (trace.switches.z != 0 && regionIsEmpty(ray, sStart, sEnd, layers))) {
