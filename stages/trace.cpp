@@ -60,9 +60,9 @@ public:
                             "towards the light.", 0.0, 0, 1),
         Param::boolean("adaptive_bias", "Add the adaptive bias of Eq 3.2.", true),
         Param::real("min_cosine", "Lower clamp of n.l in Eq 3.2.", 0.1, 0.001, 1),
-        Param::real("eye_tolerance", "Three layers: a point counts as seen by the eye unless "
-                                     "it lies this far (world units) behind the visible "
-                                     "surface.", 0.02, 0, 1),
+        Param::real("eye_tolerance", "Three layers: a point counts as free space (seen by the "
+                                     "eye) only if it lies at least this far (world units) in "
+                                     "front of the visible surface at its pixel.", 0.02, 0, 1),
         Param::integer("max_iterations", "Cap on search iterations per ray (a safety net; "
                                          "reaching it is counted and reported).", 512, 16, 4096),
         Param::integer("record_x", "Pixel (x, image column) whose every step is recorded for "

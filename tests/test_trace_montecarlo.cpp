@@ -77,12 +77,16 @@ double rmse(const std::vector<float>& estimate, const Dense& dense) {
 class TraceMonteCarloScenes : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TraceMonteCarloScenes, OneRayIsUnbiased) {
-  const std::string scene = GetParam();
+  const std::string param = GetParam();  // "scene" or "scene:search"
+  const std::string scene = param.substr(0, param.find(':'));
+  const std::string search =
+      param.find(':') == std::string::npos ? "hierarchical" : param.substr(param.find(':') + 1);
   const Dense& dense = denseOf(scene);
   std::vector<double> mean(kEye * kEye, 0.0);
   const int keys = 64;
   for (int key = 0; key < keys; ++key) {
-    const auto v = traced(scene, {"trace.rays=1", "trace.sampling=random"}, std::uint32_t(key) * 7919u + 1u);
+    const auto v = traced(scene, {"trace.rays=1", "trace.sampling=random", "trace.search=" + search},
+                          std::uint32_t(key) * 7919u + 1u);
     for (size_t i = 0; i < v.size(); ++i) mean[i] += v[i] / keys;
   }
   int pixels = 0, within = 0, penumbra = 0;
@@ -97,13 +101,14 @@ TEST_P(TraceMonteCarloScenes, OneRayIsUnbiased) {
     else std::printf("  pixel %zu: mean of 64 keys %.4f, dense %.4f (3 SE = %.4f)\n", i, mean[i], p,
                      3 * standardError);
   }
-  std::printf("%s: %d of %d receiver pixels within 3 SE (%d in penumbra)\n", scene.c_str(),
+  std::printf("%s: %d of %d receiver pixels within 3 SE (%d in penumbra)\n", param.c_str(),
               within, pixels, penumbra);
   EXPECT_GT(penumbra, 100);
   EXPECT_GE(within, 0.99 * pixels);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, TraceMonteCarloScenes, ::testing::Values("cube", "plate", "spheres"));
+INSTANTIATE_TEST_SUITE_P(Scenes, TraceMonteCarloScenes, ::testing::Values("cube", "plate", "spheres",
+                                                                     "plate:linear_binary"));
 
 // Error against the dense visibility falls like 1/sqrt(rays) for random sampling, and at
 // least as fast for the jittered grid (stratification, §3.1, Fig 3.3).

@@ -1,7 +1,8 @@
 // The third depth layer (thesis §3.4): the eye's own depth, from the G-buffer. A point the
-// near/far volume claims as solid is free space if the eye sees it (it lies in front of
-// the visible surface at its pixel). Outside the eye's view nothing is known, and the
-// point stays solid, as with two layers.
+// near/far volume claims as solid is free space if the eye sees it: it lies in front of
+// the visible surface at its pixel by more than the tolerance. A point on the visible
+// surface itself (a sheet, the face the eye sees) stays solid. Outside the eye's view
+// nothing is known, and the point stays solid, as with two layers.
 layout(binding = 0) uniform sampler2D wsPositionTexture;
 
 bool hiddenFromEye(vec3 wsPoint) {
@@ -15,5 +16,5 @@ bool hiddenFromEye(vec3 wsPoint) {
   vec4 surface = texelFetch(wsPositionTexture, pixel, 0);
   if (surface.w == 0.0) return false;  // the eye sees the background through this point
   vec3 eye = frame.wsEyePosition.xyz;
-  return distance(wsPoint, eye) > distance(surface.xyz, eye) + trace.eye.x;
+  return distance(wsPoint, eye) > distance(surface.xyz, eye) - trace.eye.x;
 }
