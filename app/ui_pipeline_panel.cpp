@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "ui_reference_progress.h"
 #include "ui_state.h"
 #include "ui_view_difference.h"
 #include "ui_widgets.h"
@@ -87,6 +88,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();
     }
   ImGui::PopItemWidth();
+  if (stage.name() == "reference") drawReferenceProgress(state);  // issue 5
   ImGui::PopID();
   ImGui::Spacing();
 }

@@ -24,6 +24,7 @@
 #include "ui_script.h"
 #include "watchdog.h"
 #include "ui_settings.h"
+#include "ui_speed_error.h"
 #include "ui_state.h"
 #include "ui_texture_view.h"
 #include "ui_trace_source.h"
@@ -160,6 +161,8 @@ bool drawUi(UiState& state, const Layout& layout) {
   drawStatusLine(state, layout);
   drawLessonWindow(state, layout.left + 0.5f * layout.centerWidth(), layout.centerWidth() - 24,
                    layout.panelHeight());
+  drawSpeedErrorPanel(state, layout.left + 8, std::max(30.0f, layout.panelHeight() - 400),
+                      std::min(layout.centerWidth() - 16, 520.0f));
   drawHelpWindow(state);
   drawShaderLogWindow(state);
   return movingCamera;
