@@ -15,26 +15,11 @@
 
 #include "image_export.h"
 #include "support/command.h"
+#include "support/window_test.h"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-#define REQUIRE_DISPLAY() \
-  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (make test does)"
-
-fs::path scratch(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / ("penumbra_lesson_" + name);
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
-
-fs::path writeScript(const fs::path& directory, const std::string& json) {
-  const fs::path path = directory / "script.json";
-  std::ofstream(path) << json;
-  return path;
-}
 
 // Mean |I(x+1, y) - I(x, y)| over the gray values of a PNG: high for Monte Carlo noise.
 double roughness(const fs::path& png) {
@@ -72,7 +57,7 @@ bool penumbraPixel(const fs::path& directory, int& x, int& y) {
 
 TEST(WindowLesson, Fig32LessonExportsFiguresWhoseNoiseFallsWithRaysAndFilter) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("fig32");
+  const fs::path dir = scratchDirectory("lesson_fig32");
   const auto result = runPenumbra("lesson " + std::string(PENUMBRA_SOURCE_DIR) +
                                   "/lessons/fig_3_2_progression.json --export " + dir.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -101,7 +86,7 @@ TEST(WindowLesson, Fig32LessonExportsFiguresWhoseNoiseFallsWithRaysAndFilter) {
 
 TEST(WindowLesson, AltDragMovesTheLightOverTheGroundAndAltWheelScalesIt) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("light");
+  const fs::path dir = scratchDirectory("lesson_light");
   const auto script = writeScript(dir, R"([{"eye_size": [320, 240]}, {"zoom": 0.6},
     {"save_settings": ")" + (dir / "before.json").string() + R"("},
     {"drag": {"from": [160, 150], "to": [100, 150], "keys": "alt"}},
@@ -143,7 +128,7 @@ TEST(WindowLesson, AltDragMovesTheLightOverTheGroundAndAltWheelScalesIt) {
 
 TEST(WindowLesson, ThicknessViewIsFarMinusNearWhereCovered) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("thickness");
+  const fs::path dir = scratchDirectory("lesson_thickness");
   const auto script = writeScript(dir, R"([{"eye_size": [128, 96]},
     {"set": {"light_layers.resolution": 256}}, {"export_all": ")" + (dir / "all").string() + R"("},
     {"thickness": true}, {"wait": 1}, {"export_view": ")" + (dir / "thickness.exr").string() + R"("},
@@ -175,7 +160,7 @@ TEST(WindowLesson, ThicknessViewIsFarMinusNearWhereCovered) {
 
 TEST(WindowLesson, LinearSearchTraceShowsSamplesAndRefinementPoints) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("linear");
+  const fs::path dir = scratchDirectory("lesson_linear");
   int x = -1, y = -1;
   ASSERT_TRUE(penumbraPixel(dir, x, y)) << "no penumbra pixel in the cube scene";
   const std::string pick = nlohmann::json::array({x, y}).dump();

@@ -15,27 +15,11 @@
 
 #include "image_export.h"
 #include "support/command.h"
+#include "support/window_test.h"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-#define REQUIRE_DISPLAY() \
-  if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (make test does)"
-
-// A fresh directory under /tmp for one test.
-fs::path scratch(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / ("penumbra_window_" + name);
-  fs::remove_all(directory);
-  fs::create_directories(directory);
-  return directory;
-}
-
-fs::path writeScript(const fs::path& directory, const std::string& json) {
-  const fs::path path = directory / "script.json";
-  std::ofstream(path) << json;
-  return path;
-}
 
 // Raw float data equal bit for bit (NaN patterns included), and the same channel names.
 void expectSameExr(const fs::path& a, const fs::path& b) {
@@ -53,7 +37,7 @@ void expectSameExr(const fs::path& a, const fs::path& b) {
 
 TEST(WindowScript, ScreenshotsOfSeveralStatesAreNotBlank) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("shots");
+  const fs::path dir = scratchDirectory("window_shots");
   const auto script = writeScript(dir, R"([
     {"eye_size": [160, 120]},
     {"select_output": "classify.mask"}, {"screenshot": ")" + (dir / "mask.png").string() + R"("},
@@ -83,7 +67,7 @@ TEST(WindowScript, ScreenshotsOfSeveralStatesAreNotBlank) {
 
 TEST(WindowScript, ExportsAreBitIdenticalToPenumbraExport) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("export");
+  const fs::path dir = scratchDirectory("window_export");
   const fs::path fromWindow = dir / "window", fromCli = dir / "cli";
   const auto script = writeScript(dir, R"([
     {"eye_size": [128, 96]}, {"set": {"light_layers.resolution": 128, "trace.rays": 3}},
@@ -121,7 +105,7 @@ TEST(WindowScript, ExportsAreBitIdenticalToPenumbraExport) {
 
 TEST(WindowScript, SavedSettingsReproduceTheImageThroughConfig) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("config");
+  const fs::path dir = scratchDirectory("window_config");
   const fs::path settings = dir / "settings.json";
   const auto first = writeScript(dir, R"([
     {"eye_size": [96, 72]}, {"set": {"light_layers.resolution": 128, "filter.radius": 2}},
@@ -146,7 +130,7 @@ TEST(WindowScript, SavedSettingsReproduceTheImageThroughConfig) {
 
 TEST(WindowScript, PickedPenumbraPixelShowsItsRaySteps) {
   REQUIRE_DISPLAY();
-  const fs::path dir = scratch("trace");
+  const fs::path dir = scratchDirectory("window_trace");
   // Find a penumbra pixel (class 2) with the headless export; EXR rows are GL order.
   ASSERT_EQ(runPenumbra("export --width 160 --height 120 --out " + (dir / "cli").string()).exitCode, 0);
   int w = 0, h = 0;
@@ -174,7 +158,7 @@ TEST(WindowScript, PickedPenumbraPixelShowsItsRaySteps) {
 }
 
 TEST(WindowScript, BadScriptsAndConfigsExit2WithAClearMessage) {
-  const fs::path dir = scratch("bad");
+  const fs::path dir = scratchDirectory("window_bad");
   // Checked before any window opens: works without a display too.
   const auto unknown = writeScript(dir, R"([{"wait": 1}, {"explode": true}])");
   auto result = runPenumbra("--script " + unknown.string());
