@@ -1,5 +1,7 @@
 #include "scene_file.h"
 
+#include "mesh_builders.h"
+
 #include "scene_gltf.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -155,7 +157,7 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
                         : 0.0f;
     SceneObject ground;
     ground.name = name.empty() ? "ground" : name;
-    ground.mesh = makeGroundQuad(size, y);
+    ground.mesh = makeQuad(size, glm::translate(glm::mat4(1), {0, y, 0}));
     ground.receiverOnly = true;  // a floor rarely shadows anything; saves a depth layer
     scene.objects.push_back(std::move(ground));
   } else {
@@ -236,15 +238,6 @@ Camera readCamera(const Reader& r, const json& root) {
 }
 
 }  // namespace
-
-Mesh makeGroundQuad(float size, float y) {
-  const float h = 0.5f * size;
-  Mesh mesh;
-  mesh.positions = {{-h, y, -h}, {h, y, -h}, {h, y, h}, {-h, y, h}};
-  mesh.normals.assign(4, glm::vec3(0, 1, 0));
-  mesh.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from +y
-  return mesh;
-}
 
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings) {
   const Reader r(path);

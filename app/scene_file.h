@@ -14,6 +14,3 @@
 // appended to `warnings`.
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings);
 
-// A horizontal square of side `size` centred on the y axis at height `y`: two
-// counter-clockwise (seen from above) triangles with normals +y.
-Mesh makeGroundQuad(float size, float y);

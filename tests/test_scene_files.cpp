@@ -1,6 +1,9 @@
 // glTF import and the scene JSON format: real models load exactly, and every broken
 // input (the assimp test corpus plus files written here) is refused with a message
 // naming the file, or loads with a warning into a scene every consumer can trust.
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "mesh_builders.h"
 #include "scene_file.h"
 #include "scene_gltf.h"
 
@@ -372,7 +375,7 @@ TEST(SceneFile, ExampleSceneLoads) {
 }
 
 TEST(SceneFile, GroundQuadFacesUp) {
-  const Mesh m = makeGroundQuad(4, 1.5f);
+  const Mesh m = makeQuad(4, glm::translate(glm::mat4(1), {0, 1.5f, 0}));
   ASSERT_EQ(m.triangleCount(), 2u);
   for (size_t t = 0; t < 2; ++t) {
     const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
