@@ -103,9 +103,17 @@ public:
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kTraceParams, paramsBuffer_.id());
 
     // 2. Cleared record and total buffers.
-    std::vector<std::uint8_t> zeros(16 + kRecordCapacity * sizeof(gpu::TraceStep), 0);
-    recordsBuffer_.upload(zeros.data(), zeros.size());
-    totalsBuffer_.upload(zeros.data(), TOTAL_COUNT * sizeof(std::uint32_t));
+    //    Allocated once; each frame only the record count and the totals are zeroed (the
+    //    records past the count are never read).
+    if (!buffersAllocated_) {
+      recordsBuffer_.upload(nullptr, 16 + kRecordCapacity * sizeof(gpu::TraceStep));
+      totalsBuffer_.upload(nullptr, TOTAL_COUNT * sizeof(std::uint32_t));
+      buffersAllocated_ = true;
+    }
+    const std::uint32_t zero = 0;
+    glClearNamedBufferSubData(recordsBuffer_.id(), GL_R32UI, 0, 16, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(totalsBuffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceRecords, recordsBuffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceTotals, totalsBuffer_.id());
 
@@ -216,6 +224,7 @@ private:
   ShaderProgram deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
   ShaderProgram forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
+  bool buffersAllocated_ = false;
   GlFramebuffer framebuffer_;
   GlTexture forwardDepth_;
 };
