@@ -1,6 +1,6 @@
 // The hash functions of shared/hash.glsl over a batch of inputs, one invocation each: the
-// engine of `penumbra hash` (app/hash_command.cpp) and of the GPU = C++ tests
-// (tests/test_hash.cpp). With HASH_BATCH_LINEAR_SEEDS defined, input i is the seed
+// engine of `penumbra hash` (app/cli/hash_command.cpp) and of the GPU = C++ tests
+// (tests/stages/test_hash.cpp). With HASH_BATCH_LINEAR_SEEDS defined, input i is the seed
 // (uFirstSeed + i, 0, 0, 0): thesis §3.1 tests the hash "using the linear sequence
 // 1, 2, ..., n as input"; otherwise the seeds are read from a buffer.
 #include "shared/hash.glsl"

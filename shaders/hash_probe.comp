@@ -1,4 +1,4 @@
-// Test-only (tests/test_hash.cpp): toUnitSquare of shared/hash.glsl on chosen bit patterns,
+// Test-only (tests/stages/test_hash.cpp): toUnitSquare of shared/hash.glsl on chosen bit patterns,
 // so the extremes (0, 0xFFFFFFFF) can be checked on the GPU as well as random ones.
 #include "shared/hash.glsl"
 layout(local_size_x = 64) in;

@@ -1,5 +1,5 @@
 // Texture view: maps a stage output to display colours exactly as the CPU twin does for
-// "PNG as displayed" (app/ui_view_settings.cpp displayRgb8ForView over app/colormap.cpp):
+// "PNG as displayed" (app/window/views/ui_view_settings.cpp displayRgb8ForView over app/io/colormap.cpp):
 // channel toggles, black point and scale, colormap, NaN/Inf/negative overlay. Every step
 // that rounds is written so it rounds the same way in C++ (`precise` forbids fused
 // multiply-adds; bytes are rounded here, not by the image store).
@@ -50,7 +50,7 @@ vec3 viridis(float t) {
   return rgb;
 }
 
-// One raw value -> three bytes (0..255), as app/colormap.cpp applyColormap + displayRgb8.
+// One raw value -> three bytes (0..255), as app/io/colormap.cpp applyColormap + displayRgb8.
 vec3 mapValue(float raw) {
   if (isnan(raw)) return vec3(255, 0, 255);
   if (isinf(raw)) return raw > 0.0 ? vec3(255) : vec3(0);

@@ -1,4 +1,4 @@
-// Difference view (app/ui_view_difference.h): result = A - B per channel, for comparisons in
+// Difference view (app/window/views/ui_view_difference.h): result = A - B per channel, for comparisons in
 // a texture view: light_layers.far - light_layers.near is the occluders' thickness (thesis
 // §3.3, Fig 3.4), filter - trace what the filter changed, trace - reference the error.
 // Variants by #define: A_ARRAY / B_ARRAY (2D array sources: the layer in uLayers), A_UINT /

@@ -1,4 +1,4 @@
-// Layout of stage `classify`'s pixel counts, read by C++ (stages/classify.cpp, checked with
+// Layout of stage `classify`'s pixel counts, read by C++ (stages/monte_carlo/classify.cpp, checked with
 // static_assert) and GLSL: a std430 storage buffer at CLASSIFY_COUNTS_BINDING holding one
 // uint per class of classes.h (std430 uint arrays have stride 4, as in C++).
 #define CLASSIFY_COUNTS_BINDING 2

@@ -1,6 +1,6 @@
-// Per-frame uniforms, read by C++ (app/gpu_layout.h) and GLSL (#include "shared/frame_block.h").
+// Per-frame uniforms, read by C++ (app/gl/gpu_layout.h) and GLSL (#include "shared/frame_block.h").
 // std140: only 16-byte members (vec4, uvec4, mat4) so C++ and GLSL offsets agree trivially;
-// app/gpu_layout.h checks every offset with static_assert. Bound at uniform binding 0.
+// app/gl/gpu_layout.h checks every offset with static_assert. Bound at uniform binding 0.
 //
 // Light space (thesis §3, Eq 3.1). The light is a rectangle; its projection point sits
 // lightDepth = max(width, height) / (2 tan(fov/2)) behind the center, so the light

@@ -9,7 +9,7 @@
 // toUnitSquare(h.xy), a second one toUnitSquare(h.zw).
 //
 // C++ twins (written independently, not copied) in tests/support/md5_reference.cpp check
-// this file bit for bit on 10^6 inputs per hash (tests/test_hash.cpp).
+// this file bit for bit on 10^6 inputs per hash (tests/stages/test_hash.cpp).
 #include "hash_kinds.h"
 
 // Thesis Appendix A, line for line. Differences from the printed listing, none of which

@@ -1,5 +1,5 @@
 // The hash functions of the `hash` stage (thesis §3.1, §4.3, Appendix A), numbered once for
-// C++ (app/hash_kind.h checks these against its enum with static_assert) and GLSL
+// C++ (app/gl/hash_kind.h checks these against its enum with static_assert) and GLSL
 // (shared/hash.glsl: hashRand(seed, key, hashKind)). The numbers are also the option index
 // of the parameter `hash.function`, so a stage can pass that index straight to the shader.
 #define HASH_MD5_16 0     // reduced 16-round MD5, exactly as printed in thesis Appendix A

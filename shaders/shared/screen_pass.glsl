@@ -1,5 +1,5 @@
 // Common head of the screen-space compute passes: 8x8 groups, dispatched in row bands
-// (app/shader_program.h dispatchRows) with the band's first row in uRowOffset.
+// (app/gl/shader_program.h dispatchRows) with the band's first row in uRowOffset.
 #include "frame.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(location = 0) uniform int uRowOffset;

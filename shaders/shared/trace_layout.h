@@ -1,4 +1,4 @@
-// Layouts of the trace stage, read by C++ (app/gpu_layout_trace.h) and GLSL.
+// Layouts of the trace stage, read by C++ (app/gl/gpu_layout_trace.h) and GLSL.
 // std140 uniform block TraceBlock at binding 1; std430 storage buffers: per-pixel step
 // records at binding 0, totals at binding 1. Only 16-byte members (see frame_block.h).
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "frame.h"
-#include "gl_context.h"
-#include "pipeline.h"
-#include "scene.h"
+#include "core/frame.h"
+#include "gl/gl_context.h"
+#include "core/pipeline.h"
+#include "scene/scene.h"
 
 // The process-wide headless context (created on first use; the test fails if it cannot be).
 GlContext& headlessContext();

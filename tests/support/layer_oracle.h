@@ -40,8 +40,8 @@
 #include <limits>
 #include <vector>
 
-#include "light_frame.h"
-#include "scene.h"
+#include "scene/light_frame.h"
+#include "scene/scene.h"
 
 struct LayerMaps {
   int width = 0, height = 0;

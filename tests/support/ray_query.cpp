@@ -1,8 +1,8 @@
 #include "ray_query.h"
 
 #include "gl_test.h"
-#include "nbuffer_build.h"
-#include "shader_program.h"
+#include "gl/nbuffer_build.h"
+#include "gl/shader_program.h"
 
 RayQueryRunner::RayQueryRunner(int width, int height, const std::vector<float>& nearLayer,
                                const std::vector<float>& farLayer, float zNear, float zFar)

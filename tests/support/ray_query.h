@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "gl_texture.h"
-#include "gpu_layout_ray_query.h"
-#include "gpu_layout_trace.h"
+#include "gl/gl_texture.h"
+#include "gl/gpu_layout_ray_query.h"
+#include "gl/gpu_layout_trace.h"
 
 struct RayQueryOutcome {
   bool blocked;

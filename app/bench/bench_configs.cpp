@@ -1,0 +1,290 @@
+#include "bench/bench_configs.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "scene/light_frame.h"
+#include "scene/mesh_builders.h"
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  for (std::string part; std::getline(stream, part, separator);)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// --- Configurations ------------------------------------------------------------------
+
+BenchConfig hardShadow(int map) {
+  return {"hard shadow map " + std::to_string(map), "hard_shadow",
+          {"light_layers.resolution=" + std::to_string(map), "composite.shadow=hard_shadow",
+           "error.method=hard_shadow"}};
+}
+
+// One Monte Carlo configuration. layers: 1..3; rays: per side.
+BenchConfig monteCarlo(const std::string& search, int layers, int rays, int map = 512,
+                       bool deferred = true, bool filter = true) {
+  const char* layerNames[] = {"", "one", "two", "three"};
+  std::string label = search + " " + std::to_string(layers) + "L " + std::to_string(rays) + "x" +
+                      std::to_string(rays);
+  if (!deferred) label += " forward";
+  if (!filter) label += " unfiltered";
+  label += " map " + std::to_string(map);
+  return {label, "monte_carlo",
+          {"trace.search=" + search, std::string("trace.layers=") + layerNames[layers],
+           "trace.rays=" + std::to_string(rays),
+           std::string("trace.deferred=") + (deferred ? "true" : "false"),
+           std::string("filter.enabled=") + (filter ? "true" : "false"),
+           "light_layers.resolution=" + std::to_string(map),
+           std::string("composite.shadow=") + (filter ? "filter" : "trace"),
+           std::string("error.method=") + (filter ? "filter" : "trace")}};
+}
+
+std::vector<BenchConfig> defaultConfigs() {
+  std::vector<BenchConfig> configs = {hardShadow(512)};
+  for (int rays = 1; rays <= 4; ++rays) {
+    configs.push_back(monteCarlo("linear", 2, rays));
+    configs.push_back(monteCarlo("linear_binary", 2, rays));
+    configs.push_back(monteCarlo("linear_binary", 3, rays));
+    configs.push_back(monteCarlo("hierarchical", 2, rays));
+  }
+  configs.push_back(monteCarlo("hierarchical", 2, 2, 512, true, false));
+  configs.push_back(monteCarlo("hierarchical", 2, 2, 512, false, true));
+  for (int map : {128, 256, 1024}) configs.push_back(monteCarlo("hierarchical", 2, 2, map));
+  configs.push_back(hardShadow(128));
+  configs.push_back(hardShadow(1024));
+  return configs;
+}
+
+// The thesis's rows (Tables 4.1-4.4): hierarchical with two layers (deferred and
+// forward), linear/binary with three layers (deferred), at 2x2 and 3x3 rays.
+std::vector<BenchConfig> thesisRows(int map) {
+  return {monteCarlo("hierarchical", 2, 2, map), monteCarlo("hierarchical", 2, 3, map),
+          monteCarlo("hierarchical", 2, 2, map, false), monteCarlo("hierarchical", 2, 3, map, false),
+          monteCarlo("linear_binary", 3, 2, map), monteCarlo("linear_binary", 3, 3, map)};
+}
+
+// Atty et al. compare their one- and two-pass versions; our analogues are one and two
+// depth layers, with the hard shadow below and three layers (linear/binary) above.
+std::vector<BenchConfig> attyMethods(int map) {
+  return {hardShadow(map), monteCarlo("hierarchical", 1, 2, map),
+          monteCarlo("hierarchical", 2, 2, map), monteCarlo("linear_binary", 3, 2, map)};
+}
+
+// --- Scene modifiers -----------------------------------------------------------------
+
+Bounds occluderBounds(const Scene& scene) { return scene.bounds(/*occludersOnly=*/true); }
+
+void translateOccluders(Scene& scene, const glm::vec3& offset) {
+  const glm::mat4 move = glm::translate(glm::mat4(1), offset);
+  for (SceneObject& object : scene.objects)
+    if (!object.receiverOnly) transformMesh(object.mesh, move);
+}
+
+LightFrame lightFrameOf(const Scene& scene) { return computeLightFrame(scene.light, scene.bounds(), 90); }
+
+// Half the extent of the occluders' box along a unit direction.
+float halfExtentAlong(const Bounds& bounds, const glm::vec3& direction) {
+  const glm::vec3 half = 0.5f * (bounds.max - bounds.min);
+  return glm::dot(half, glm::abs(direction));
+}
+
+BenchSetup makeSetup(const Scene& scene, int width, int height, std::vector<BenchConfig> configs,
+                     const std::string& axis = "", double value = 0) {
+  BenchSetup setup;
+  setup.scene = scene;
+  setup.width = width;
+  setup.height = height;
+  setup.configs = std::move(configs);
+  setup.axis = axis;
+  setup.axisValue = value;
+  setup.label = scene.name + " " + std::to_string(width) + "x" + std::to_string(height);
+  if (!axis.empty()) setup.label += " " + axis + "=" + number(value);
+  return setup;
+}
+
+// Applies one setup axis to a copy of `setup` (the label says which value).
+BenchSetup withAxis(const BenchSetup& setup, const std::string& axis, const std::string& value) {
+  BenchSetup result = setup;
+  if (axis == "eye.size") {
+    const auto parts = split(value, 'x');
+    if (parts.size() != 2) throw std::invalid_argument("eye.size values are WxH, e.g. 256x256");
+    result.width = std::stoi(parts[0]);
+    result.height = std::stoi(parts[1]);
+    if (result.width < 16 || result.height < 16 || result.width > 4096 || result.height > 4096)
+      throw std::invalid_argument("eye.size must be within 16..4096 on each side");
+    result.label = setup.scene.name + " " + value;
+    return result;
+  }
+  const double v = std::stod(value);
+  if (axis == "scene.light_scale") {
+    if (!(v > 0)) throw std::invalid_argument("scene.light_scale must be > 0");
+    scaleLight(result.scene, v);
+  } else if (axis == "scene.lateral") {
+    placeOccludersLaterally(result.scene, v);
+  } else if (axis == "scene.vertical") {
+    if (v < 0 || v > 1) throw std::invalid_argument("scene.vertical must be within [0, 1]");
+    placeOccludersVertically(result.scene, v);
+  } else {
+    throw std::invalid_argument("unknown setup axis '" + axis + "'");
+  }
+  result.axis = axis.substr(axis.find('.') + 1);
+  result.axisValue = v;
+  result.label = setup.label + " " + result.axis + "=" + number(v);
+  return result;
+}
+
+bool isSetupAxis(const std::string& key) {
+  return key == "eye.size" || key == "scene.light_scale" || key == "scene.lateral" ||
+         key == "scene.vertical";
+}
+
+}  // namespace
+
+void scaleLight(Scene& scene, double factor) {
+  scene.light.width *= float(factor);
+  scene.light.height *= float(factor);
+}
+
+void placeOccludersLaterally(Scene& scene, double lightWidths) {
+  const Bounds bounds = occluderBounds(scene);
+  if (bounds.empty()) return;
+  const LightFrame frame = lightFrameOf(scene);
+  const glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
+  const glm::vec3 fromLight = centre - scene.light.center;
+  const float depth = glm::dot(fromLight, frame.forward);
+  const glm::vec3 target = scene.light.center + depth * frame.forward +
+                           float(lightWidths) * scene.light.width * frame.right;
+  translateOccluders(scene, target - centre);
+}
+
+void placeOccludersVertically(Scene& scene, double t) {
+  const Bounds bounds = occluderBounds(scene);
+  if (bounds.empty()) return;
+  const LightFrame frame = lightFrameOf(scene);
+  const glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
+  // The receivers' depth along the light axis: where the axis through the occluders'
+  // centre meets a receiver-only triangle (the ground), else the scene's far end.
+  const float currentDepth = glm::dot(centre - scene.light.center, frame.forward);
+  float receiverDepth = currentDepth + glm::length(scene.bounds().max - scene.bounds().min);
+  for (const SceneObject& object : scene.objects) {
+    if (!object.receiverOnly) continue;
+    const Mesh& mesh = object.mesh;
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      const glm::vec3 a = mesh.positions[mesh.indices[i]], b = mesh.positions[mesh.indices[i + 1]],
+                      c = mesh.positions[mesh.indices[i + 2]];
+      const glm::vec3 e1 = b - a, e2 = c - a, q = glm::cross(frame.forward, e2);
+      const float det = glm::dot(e1, q);
+      if (std::abs(det) < 1e-12f) continue;
+      const glm::vec3 s = centre - a;
+      const float u = glm::dot(s, q) / det;
+      const glm::vec3 r = glm::cross(s, e1);
+      const float v = glm::dot(frame.forward, r) / det, hit = glm::dot(e2, r) / det;
+      if (u >= 0 && v >= 0 && u + v <= 1 && hit > 0)
+        receiverDepth = std::min(receiverDepth, currentDepth + hit);
+    }
+  }
+  const float half = halfExtentAlong(bounds, frame.forward);
+  const float nearest = half, farthest = std::max(half, receiverDepth - half);
+  const float depth = float(1 - t) * farthest + float(t) * nearest;
+  translateOccluders(scene, (depth - currentDepth) * frame.forward);
+}
+
+std::vector<std::string> benchPresetNames() {
+  return {"default", "minimal", "thesis-table-4.1", "atty-4.2"};
+}
+
+std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options) {
+  const std::string preset = options.preset.empty() ? "default" : options.preset;
+  std::vector<BenchSetup> setups;
+  int w = options.width, h = options.height;
+  if (preset == "default" || preset == "minimal") {
+    if (w == 0) w = 256;
+    if (h == 0) h = 256;
+    setups.push_back(makeSetup(scene, w, h, preset == "default" ? defaultConfigs()
+                                                   : std::vector<BenchConfig>{hardShadow(512), monteCarlo("hierarchical", 2, 2)}));
+  } else if (preset == "thesis-table-4.1") {
+    if (w == 0) w = 512;
+    if (h == 0) h = 384;
+    std::vector<BenchConfig> configs = {hardShadow(512)};
+    for (int map : {256, 512, 1024})
+      for (BenchConfig& config : thesisRows(map)) configs.push_back(std::move(config));
+    setups.push_back(makeSetup(scene, w, h, configs));
+    // Tables 4.3/4.4: 800x600 and 1280x1024 at the same scale (1024x768 is the main setup).
+    const double scale = double(w) / 1024.0;
+    for (const glm::ivec2 size : {glm::ivec2(800, 600), glm::ivec2(1280, 1024)})
+      setups.push_back(makeSetup(scene, int(std::lround(size.x * scale)),
+                                 int(std::lround(size.y * scale)), thesisRows(512)));
+  } else if (preset == "atty-4.2") {
+    if (w == 0) w = 256;
+    if (h == 0) h = 256;
+    std::vector<BenchConfig> maps;
+    for (int map : {128, 192, 256, 384, 512, 768, 1024})
+      for (BenchConfig& config : attyMethods(map)) maps.push_back(std::move(config));
+    setups.push_back(makeSetup(scene, w, h, maps, "map", 0));
+    setups.back().label = scene.name + " " + std::to_string(w) + "x" + std::to_string(h) + " map sweep";
+    const BenchSetup base = makeSetup(scene, w, h, attyMethods(128));
+    for (const char* v : {"0.05", "0.25", "0.5", "1", "1.5", "2"})
+      setups.push_back(withAxis(base, "scene.light_scale", v));
+    for (const char* v : {"-1", "-0.5", "-0.25", "0", "0.25", "0.5", "1"})
+      setups.push_back(withAxis(base, "scene.lateral", v));
+    for (const char* v : {"0.02", "0.25", "0.5", "0.75", "0.98"})
+      setups.push_back(withAxis(base, "scene.vertical", v));
+  } else {
+    std::string valid;
+    for (const std::string& name : benchPresetNames()) valid += (valid.empty() ? "" : ", ") + name;
+    throw std::invalid_argument("unknown preset '" + preset + "'; valid: " + valid);
+  }
+
+  for (const std::string& sweep : options.sweeps) {
+    const size_t equals = sweep.find('=');
+    if (equals == std::string::npos || equals == 0)
+      throw std::invalid_argument("--sweep '" + sweep + "' is not KEY=v1,v2,...");
+    const std::string key = sweep.substr(0, equals);
+    const std::vector<std::string> values = split(sweep.substr(equals + 1), ',');
+    if (values.empty()) throw std::invalid_argument("--sweep '" + sweep + "' has no values");
+    if (isSetupAxis(key)) {
+      std::vector<BenchSetup> expanded;
+      for (const BenchSetup& setup : setups)
+        for (const std::string& value : values) expanded.push_back(withAxis(setup, key, value));
+      setups = std::move(expanded);
+    } else {
+      const std::string stage = key.substr(0, key.find('.'));
+      for (BenchSetup& setup : setups) {
+        std::vector<BenchConfig> expanded;
+        for (const BenchConfig& config : setup.configs) {
+          // A parameter of a stage the method does not use (trace.rays for the hard shadow)
+          // would only repeat the same measurement.
+          const bool unused = config.method == "hard_shadow"
+                                  ? (stage == "trace" || stage == "filter" || stage == "nbuffer" || stage == "classify")
+                                  : stage == "hard_shadow";
+          if (unused) {
+            expanded.push_back(config);
+            continue;
+          }
+          for (const std::string& value : values) {
+            BenchConfig swept = config;
+            swept.sets.push_back(key + "=" + value);
+            swept.label += " " + key + "=" + value;
+            expanded.push_back(std::move(swept));
+          }
+        }
+        setup.configs = std::move(expanded);
+      }
+    }
+  }
+  return setups;
+}

@@ -1,0 +1,57 @@
+// What `penumbra bench` measures: setups (what the reference depends on: the scene as
+// modified by a sweep, the eye size) each with configurations (what only the method
+// depends on: `--set` assignments). Presets and `--sweep` build them.
+//
+// Presets:
+//   default           hard shadow; Monte Carlo linear, linear_binary (2 and 3 layers),
+//                     hierarchical at 1, 4, 9, 16 rays; filter off; forward; shadow map
+//                     128..1024 (one setup, small enough for a few minutes on llvmpipe)
+//   minimal           hard shadow and hierarchical 2x2 (for sweeps and CI)
+//   thesis-table-4.1  the thesis's table shapes (Tables 4.1-4.4): search type x rays x
+//                     deferred against shadow-map size 256/512/1024 at the main eye size,
+//                     and against three eye sizes at map 512 (the thesis's 800x600,
+//                     1024x768, 1280x1024 scaled by width/1024; default width 512)
+//   atty-4.2          the sweeps of Atty et al. 2006 §4.2 with their metric (mean |error|
+//                     over pixels in shadow): shadow-map size; light size; occluder moved
+//                     laterally; occluder moved from the receiver to the light (map 128,
+//                     as theirs)
+// --sweep KEY=v1,v2,...: KEY is a stage parameter (every configuration is repeated for each
+// value) or one of the setup axes scene.light_scale (light width and height x v),
+// scene.lateral (occluders' centre at v light widths from the light's axis, along the
+// light's right), scene.vertical (0: occluders touch the receivers, 1: they touch the
+// light), eye.size (WxH).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+struct BenchConfig {
+  std::string label;               // "hierarchical 2x2", "hard shadow map 128"
+  std::string method;              // "hard_shadow" or "monte_carlo"
+  std::vector<std::string> sets;   // stage.key=value on top of the defaults
+};
+
+struct BenchSetup {
+  std::string label;        // "cube 256x256", "cube 256x256 light_scale=0.5"
+  std::string axis;         // the sweep axis this setup belongs to ("" for none)
+  double axisValue = 0;
+  Scene scene;
+  int width = 256, height = 256;
+  std::vector<BenchConfig> configs;
+};
+
+struct BenchPlanOptions {
+  std::string preset;               // "" = default
+  std::vector<std::string> sweeps;  // "stage.key=v1,v2" or "scene.light_scale=..." ...
+  int width = 0, height = 0;        // 0: the preset's default
+};
+
+// Throws std::invalid_argument with a message naming the valid presets / keys.
+std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options);
+std::vector<std::string> benchPresetNames();
+
+// The setup modifiers (public for tests).
+void scaleLight(Scene& scene, double factor);
+void placeOccludersLaterally(Scene& scene, double lightWidths);
+void placeOccludersVertically(Scene& scene, double fromReceiverToLight);

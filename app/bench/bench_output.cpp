@@ -1,0 +1,322 @@
+#include "bench/bench_output.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "io/image_export.h"
+#include "bench/plot_png.h"
+
+namespace {
+
+std::string fixed(double value, int decimals) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+std::string fileSafe(const std::string& text) {
+  std::string safe;
+  for (char c : text) safe += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+  return safe;
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+const char* cacheName(int cache) { return cache == 0 ? "computed" : cache == 1 ? "memory" : "disk"; }
+
+std::string csv(const BenchRunInfo& info, const std::vector<BenchSetup>& setups,
+                const std::vector<BenchResult>& results) {
+  std::ostringstream out;
+  const auto columns = benchCsvColumns();
+  for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
+  out << "\n";
+  for (const BenchResult& r : results) {
+    const BenchSetup& s = setups[r.setup];
+    const std::vector<std::string> fields = {
+        s.label, info.scene, std::to_string(s.width), std::to_string(s.height), s.axis,
+        s.axis.empty() ? "" : fixed(s.axisValue, 4), r.label, r.method, r.family,
+        r.method == "hard_shadow" ? "" : r.search, r.method == "hard_shadow" ? "" : r.layers,
+        r.method == "hard_shadow" ? "" : std::to_string(r.rays), std::to_string(r.map),
+        r.deferred ? "1" : "0", r.filter ? "1" : "0", std::to_string(r.frames),
+        fixed(r.msMedian, 3), fixed(r.msMin, 3), fixed(r.msMax, 3), fixed(r.traceMsMedian, 3),
+        fixed(r.fetchesPerRay, 3),
+        fixed(r.raysTraced, 0), fixed(r.error.rmse, 6), fixed(r.error.max, 6),
+        fixed(r.error.meanAbsInShadow, 6), fixed(r.error.p99, 6), fixed(r.error.meanSigned, 6),
+        std::to_string(r.error.pixels), std::to_string(r.error.pixelsInShadow),
+        std::to_string(info.referenceSamples * info.referenceSamples), fixed(r.referenceSeconds, 3),
+        cacheName(r.referenceCache), r.pareto ? "1" : "0"};
+    for (size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
+    out << "\n";
+  }
+  return out.str();
+}
+
+const BenchResult* find(const std::vector<BenchResult>& results, size_t setup,
+                        const std::string& family, int rays, int map) {
+  for (const BenchResult& r : results)
+    if (r.setup == setup && r.family == family && (rays == 0 || r.rays == rays) && r.map == map)
+      return &r;
+  return nullptr;
+}
+
+// "hierarchical 2L 2x2 forward" -> the thesis's row names.
+std::string thesisCell(const BenchResult* r) {
+  if (!r) return "-";
+  return fixed(r->msMedian, 0) + " ms (" + fixed(1000.0 / r->msMedian, 1) + " fps)";
+}
+
+void thesisTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
+                  const std::vector<BenchResult>& results) {
+  struct Row { std::string family, search, deferred; int rays; };
+  const std::vector<Row> rows = {{"hierarchical 2L", "hierarchical", "yes", 2},
+                                 {"hierarchical 2L", "hierarchical", "yes", 3},
+                                 {"hierarchical 2L forward", "hierarchical", "no", 2},
+                                 {"hierarchical 2L forward", "hierarchical", "no", 3},
+                                 {"linear/binary 3L", "linear/binary (3 layers)", "yes", 2},
+                                 {"linear/binary 3L", "linear/binary (3 layers)", "yes", 3}};
+  md << "## Thesis Table 4.1/4.2 shape: shadow-map resolution (eye " << setups[0].width << "x"
+     << setups[0].height << ")\n\n| search type | rays | deferred | 256x256 | 512x512 | 1024x1024 |\n|---|---|---|---|---|---|\n";
+  for (const Row& row : rows) {
+    md << "| " << row.search << " | " << row.rays << "x" << row.rays << " | " << row.deferred;
+    for (int map : {256, 512, 1024}) md << " | " << thesisCell(find(results, 0, row.family, row.rays, map));
+    md << " |\n";
+  }
+  md << "\n## Thesis Table 4.3/4.4 shape: screen resolution (shadow map 512x512)\n\n| search type | rays | deferred |";
+  std::vector<size_t> bySize(setups.size());
+  for (size_t i = 0; i < setups.size(); ++i) bySize[i] = i;
+  std::sort(bySize.begin(), bySize.end(), [&](size_t a, size_t b) {
+    return setups[a].width * setups[a].height < setups[b].width * setups[b].height;
+  });
+  for (size_t s : bySize) md << " " << setups[s].width << "x" << setups[s].height << " |";
+  md << "\n|---|---|---|";
+  for (size_t i = 0; i < setups.size(); ++i) md << "---|";
+  md << "\n";
+  for (const Row& row : rows) {
+    md << "| " << row.search << " | " << row.rays << "x" << row.rays << " | " << row.deferred;
+    for (size_t s : bySize) md << " | " << thesisCell(find(results, s, row.family, row.rays, 512));
+    md << " |\n";
+  }
+  md << "\n";
+}
+
+void attyTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
+                const std::vector<BenchResult>& results) {
+  std::vector<std::string> families;
+  for (const BenchResult& r : results)
+    if (std::find(families.begin(), families.end(), r.family) == families.end()) families.push_back(r.family);
+  auto header = [&](const std::string& first) {
+    md << "| " << first << " |";
+    for (const std::string& f : families) md << " " << f << " |";
+    md << "\n|---|";
+    for (size_t i = 0; i < families.size(); ++i) md << "---|";
+    md << "\n";
+  };
+  md << "## Atty et al. 2006 §4.2 shape: mean |error| over pixels in shadow\n\n"
+     << "### Shadow-map size (§4.2.3)\n\n";
+  header("map");
+  std::set<int> maps;
+  for (const BenchResult& r : results) if (setups[r.setup].axis == "map") maps.insert(r.map);
+  for (int map : maps) {
+    md << "| " << map;
+    for (const std::string& f : families) {
+      const BenchResult* r = nullptr;
+      for (const BenchResult& each : results)
+        if (setups[each.setup].axis == "map" && each.family == f && each.map == map) r = &each;
+      md << " | " << (r ? fixed(r->error.meanAbsInShadow, 4) : "-");
+    }
+    md << " |\n";
+  }
+  for (const auto& [axis, title] : std::vector<std::pair<std::string, std::string>>{
+           {"light_scale", "Light size, x the scene's light (§4.2.4; map 128)"},
+           {"lateral", "Occluder moved laterally, in light widths from the light's axis (§4.2.5; map 128)"},
+           {"vertical", "Occluder height: 0 touches the receiver, 1 the light (§4.2.6; map 128)"}}) {
+    md << "\n### " << title << "\n\n";
+    header(axis);
+    for (size_t s = 0; s < setups.size(); ++s) {
+      if (setups[s].axis != axis) continue;
+      md << "| " << fixed(setups[s].axisValue, 2);
+      for (const std::string& f : families) {
+        const BenchResult* r = nullptr;
+        for (const BenchResult& each : results) if (each.setup == s && each.family == f) r = &each;
+        md << " | " << (r ? fixed(r->error.meanAbsInShadow, 4) : "-");
+      }
+      md << " |\n";
+    }
+  }
+  md << "\n";
+}
+
+// Plot series: the families in order of appearance.
+PlotSpec scatterOf(const std::vector<BenchResult>& results, size_t setup, const std::string& title) {
+  PlotSpec spec;
+  spec.title = title;
+  spec.xLabel = "milliseconds per frame (median, log scale)";
+  spec.yLabel = "mean |visibility error| in shadow (Atty 2006), log";
+  spec.frontierCaption = "Pareto frontier (ms, error):";
+  spec.logY = true;  // the hard shadow's error is ~10x the Monte Carlo errors
+  for (const BenchResult& r : results) {
+    if (r.setup != setup) continue;
+    auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), r.family);
+    if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(r.family); it = spec.seriesNames.end() - 1; }
+    spec.points.push_back({r.msMedian, r.error.meanAbsInShadow, int(it - spec.seriesNames.begin()), r.label, r.pareto});
+  }
+  return spec;
+}
+
+}  // namespace
+
+std::vector<std::string> benchCsvColumns() {
+  return {"setup", "scene", "eye_width", "eye_height", "setup_axis", "setup_value", "config",
+          "method", "family", "search", "layers", "rays_per_side", "shadow_map", "deferred",
+          "filter", "frames", "ms_median", "ms_min", "ms_max", "trace_ms_median", "fetches_per_ray",
+          "rays_traced",
+          "rmse", "max_error", "mean_abs_error_in_shadow", "p99_abs_error", "mean_signed_error",
+          "pixels", "pixels_in_shadow", "reference_samples", "reference_seconds",
+          "reference_cache", "pareto"};
+}
+
+void markParetoFrontiers(std::vector<BenchResult>& results) {
+  std::set<size_t> setups;
+  for (const BenchResult& r : results) setups.insert(r.setup);
+  for (size_t s : setups) {
+    std::vector<size_t> members;
+    std::vector<double> x, y;
+    for (size_t i = 0; i < results.size(); ++i)
+      if (results[i].setup == s) {
+        members.push_back(i);
+        x.push_back(results[i].msMedian);
+        y.push_back(results[i].error.meanAbsInShadow);
+      }
+    const std::vector<bool> frontier = paretoFrontier(x, y);
+    for (size_t k = 0; k < members.size(); ++k) results[members[k]].pareto = frontier[k];
+  }
+}
+
+std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path& directory,
+                                                     const BenchRunInfo& info,
+                                                     const std::vector<BenchSetup>& setups,
+                                                     const std::vector<BenchResult>& results) {
+  std::filesystem::create_directories(directory);
+  std::vector<std::filesystem::path> written;
+  writeTextFile(directory / "results.csv", csv(info, setups, results));
+  written.push_back(directory / "results.csv");
+
+  std::ostringstream md;
+  md << "# Speed against error: `" << info.scene << "`, preset `" << info.preset << "`\n\n"
+     << "Produced by `" << info.commandLine << "` on " << info.started << " in "
+     << fixed(info.seconds, 0) << " s.\n\n"
+     << "- Machine: " << info.renderer << "; " << info.cpu << ".\n"
+     << "- Load average (1, 5, 15 min) before: " << info.loadBefore << "; after: " << info.loadAfter
+     << ". The cores are shared with other work: timings under load are noisy.\n"
+     << "- Time: median of " << info.frames << " frames per configuration, taken in "
+     << info.rounds << " rounds over all configurations of a setup (so load changes on the "
+        "shared cores hit all of them alike), after " << info.warmup << " warm-up frames (1 after "
+        "each switch); glFinish + steady clock per stage, summed over the stages the method "
+        "needs: hard shadow = gbuffer + light_layers + hard_shadow + composite; Monte Carlo = "
+        "gbuffer + light_layers + nbuffer + classify + trace (+ filter when on) + composite. "
+        "Not counted: hash (a view), reference, error.\n"
+     << "- Error: against the exact reference (" << info.referenceSamples << "x"
+     << info.referenceSamples << " stratified light samples per pixel, real triangles, Embree "
+        "on the CPU), over receiver pixels inside the light's map, on one frame (frame key 0). "
+        "mean |e| in shadow = mean |error| over pixels whose reference < 1 (Atty et al. 2006 "
+        "§4.2.1); RMSE and max by OpenImageIO `compare`; p99 = 99th percentile of |error|.\n"
+     << "- fetches/ray: texel fetches per ray set up, early outs included (hard shadow: one per pixel).\n"
+     << "- Pareto: no other configuration of the same setup is both faster and more accurate "
+        "(ms, mean |e| in shadow).\n\n";
+
+  for (size_t s = 0; s < setups.size(); ++s) {
+    double referenceSeconds = 0;
+    int cache = 2;
+    for (const BenchResult& r : results)
+      if (r.setup == s) { referenceSeconds = std::max(referenceSeconds, r.referenceSeconds); cache = std::min(cache, r.referenceCache); }
+    md << "## " << setups[s].label << "\n\nReference: "
+       << (cache == 0 ? "computed in " + fixed(referenceSeconds, 2) + " s"
+                      : "from the disk cache (it took " + fixed(referenceSeconds, 2) + " s to trace)")
+       << ".\n\n| configuration | ms/frame | min-max | trace ms | fetches/ray | RMSE | max | mean abs e in shadow | p99 | Pareto |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|\n";
+    std::vector<std::string> frontier;
+    for (const BenchResult& r : results) {
+      if (r.setup != s) continue;
+      md << "| " << r.label << " | " << fixed(r.msMedian, 1) << " | " << fixed(r.msMin, 0) << "-"
+         << fixed(r.msMax, 0) << " | " << (r.method == "hard_shadow" ? "-" : fixed(r.traceMsMedian, 1))
+         << " | " << fixed(r.fetchesPerRay, 1) << " | " << fixed(r.error.rmse, 4)
+         << " | " << fixed(r.error.max, 3) << " | " << fixed(r.error.meanAbsInShadow, 4) << " | "
+         << fixed(r.error.p99, 3) << " | " << (r.pareto ? "**yes**" : "") << " |\n";
+      if (r.pareto) frontier.push_back(r.label);
+    }
+    md << "\nPareto frontier: ";
+    for (size_t i = 0; i < frontier.size(); ++i) md << (i ? ", " : "") << frontier[i];
+    md << ".\n\n";
+    // Speed ratio linear/binary : hierarchical at equal rays (thesis: 3.1x, dragon, 3x3).
+    std::ostringstream ratios;
+    for (const BenchResult& h : results) {
+      if (h.setup != s || h.family != "hierarchical 2L") continue;
+      for (const char* lb : {"linear/binary 2L", "linear/binary 3L"})
+        if (const BenchResult* other = find(results, s, lb, h.rays, h.map))
+          ratios << "| " << h.rays << "x" << h.rays << " | " << h.map << " | " << lb << " | "
+                 << fixed(other->msMedian, 1) << " | " << fixed(h.msMedian, 1) << " | **"
+                 << fixed(other->msMedian / h.msMedian, 2) << "x** | " << fixed(other->traceMsMedian, 1)
+                 << " | " << fixed(h.traceMsMedian, 1) << " | **"
+                 << fixed(other->traceMsMedian / std::max(h.traceMsMedian, 1e-9), 2) << "x** |\n";
+    }
+    if (!ratios.str().empty())
+      md << "Speed ratio hierarchical : linear/binary at equal rays (time of linear/binary "
+            "divided by time of hierarchical 2 layers; the thesis reports 3.1x on its dragon "
+            "at 3x3, Table 4.1), for the whole frame and for the trace stage alone:\n\n"
+            "| rays | map | versus | linear/binary ms | hierarchical ms | ratio | "
+            "linear/binary trace ms | hierarchical trace ms | trace ratio |\n"
+            "|---|---|---|---|---|---|---|---|---|\n" << ratios.str() << "\n";
+  }
+  if (info.preset == "thesis-table-4.1") thesisTables(md, setups, results);
+  if (info.preset == "atty-4.2") attyTables(md, setups, results);
+
+  // Plots: a speed-vs-error scatter for each setup with several configurations; for sweeps
+  // of a setup axis, error against the axis value.
+  std::string textNote;
+  for (size_t s = 0; s < setups.size(); ++s) {
+    size_t count = 0;
+    for (const BenchResult& r : results) count += r.setup == s;
+    // Setups of a scene/light sweep get the error-against-value plots below instead.
+    const bool sweptSetup = !setups[s].axis.empty() && setups[s].axis != "map";
+    if (count < 3 || (sweptSetup && count < 6)) continue;
+    const auto path = directory / (s == 0 ? std::string("speed_vs_error.png")
+                                          : "speed_vs_error_" + fileSafe(setups[s].label) + ".png");
+    textNote = writeScatterPlot(path, scatterOf(results, s, "Speed against error: " + setups[s].label));
+    written.push_back(path);
+  }
+  std::map<std::string, PlotSpec> axisPlots;
+  for (const BenchResult& r : results) {
+    const BenchSetup& setup = setups[r.setup];
+    if (setup.axis.empty() || setup.axis == "map") continue;
+    PlotSpec& spec = axisPlots[setup.axis];
+    spec.title = "Error against " + setup.axis + ": " + info.scene;
+    spec.xLabel = setup.axis + (setup.axis == "light_scale" ? " (x scene light)" : setup.axis == "lateral" ? " (light widths)" : " (0 receiver .. 1 light)");
+    spec.yLabel = "mean |visibility error| in shadow (Atty 2006)";
+    spec.logX = false;
+    spec.connectSeries = true;
+    auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), r.family);
+    if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(r.family); it = spec.seriesNames.end() - 1; }
+    spec.points.push_back({setup.axisValue, r.error.meanAbsInShadow, int(it - spec.seriesNames.begin()), r.label, false});
+  }
+  for (const auto& [axis, spec] : axisPlots) {
+    const auto path = directory / ("error_vs_" + fileSafe(axis) + ".png");
+    textNote = writeScatterPlot(path, spec);
+    written.push_back(path);
+  }
+  if (!textNote.empty()) md << "Plots: ";
+  for (const auto& path : written)
+    if (path.extension() == ".png") md << "![" << path.filename().string() << "](" << path.filename().string() << ") ";
+  if (!textNote.empty()) md << "\n\n(plot text: " << textNote << ")\n";
+  writeTextFile(directory / "results.md", md.str());
+  written.push_back(directory / "results.md");
+  return written;
+}

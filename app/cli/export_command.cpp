@@ -1,0 +1,71 @@
+#include "cli/export_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "io/headless_session.h"
+#include "io/image_export.h"
+
+std::vector<std::string> exportFrame(const std::string& directory, const Frame& frame,
+                                     const Pipeline& pipeline, const std::string& renderer) {
+  std::filesystem::create_directories(directory);
+  std::vector<std::string> written;
+  nlohmann::json run;
+  run["scene"] = frame.scene.name;
+  run["triangles"] = frame.scene.triangleCount();
+  run["renderer"] = renderer;
+  run["eye_size"] = {frame.eyeWidth, frame.eyeHeight};
+  run["frame_key"] = frame.frameKey;
+  run["light_frame"] = {{"light_depth", frame.light.lightDepth},
+                        {"z_near", frame.light.zNear},
+                        {"z_far", frame.light.zFar}};
+  for (const auto& stage : pipeline.stages()) {
+    nlohmann::json params = nlohmann::json::object();
+    for (const Param& param : stage->params()) params[param.key] = param.toString();
+    run["parameters"][stage->name()] = params;
+    for (const Output& output : stage->outputs()) {
+      const std::string key = stage->name() + "." + output.name;
+      if (!frame.has(key)) continue;
+      const GlTexture& texture = frame.input(key);
+      run["outputs"][key] = {{"size", {texture.width(), texture.height()}},
+                             {"layers", std::max(texture.layers(), 1)},
+                             {"channels", output.channels}};
+      for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer) {
+        const std::string stem = texture.isArray() ? key + ".L" + std::to_string(layer) : key;
+        for (const auto& path : exportTexture(directory, stem, texture, output, layer))
+          written.push_back(path.string());
+      }
+    }
+  }
+  for (const StageTime& time : pipeline.lastTimes())
+    run["stage_milliseconds"][time.stage] = time.milliseconds;
+  for (const auto& [name, value] : frame.counters) run["counters"][name] = value;
+  const auto runJson = std::filesystem::path(directory) / "run.json";
+  writeTextFile(runJson, run.dump(2) + "\n");
+  written.push_back(runJson.string());
+  return written;
+}
+
+int runExport(const ExportOptions& options) {
+  HeadlessSession session;
+  if (int status = session.open("export", options.scene, options.sets, options.width, options.height))
+    return status;
+  try {
+    Frame& frame = *session.frame;
+    frame.frameKey = options.frameKey;
+    session.pipeline.run(frame);
+    const std::string renderer = session.context->renderer();
+    const auto written = exportFrame(options.outDirectory, frame, session.pipeline, renderer);
+    std::printf("penumbra export: scene '%s' (%zu triangles) on %s\n", session.scene.name.c_str(),
+                session.scene.triangleCount(), renderer.c_str());
+    for (const StageTime& time : session.pipeline.lastTimes())
+      std::printf("  %-14s %8.2f ms\n", time.stage.c_str(), time.milliseconds);
+    std::printf("wrote %zu files into %s\n", written.size(),
+                std::filesystem::absolute(options.outDirectory).c_str());
+  } catch (const std::exception& failure) {
+    std::fprintf(stderr, "penumbra export: %s\n", failure.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,24 @@
+// `penumbra export`: the pipeline headless on one scene; every stage output as EXR + PNG,
+// and run.json with the scene, every parameter, the renderer, sizes and per-stage times.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/frame.h"
+#include "core/pipeline.h"
+
+struct ExportOptions {
+  std::string scene = "cube";
+  std::string outDirectory = "out";
+  int width = 512, height = 512;
+  std::vector<std::string> sets;  // "stage.key=value"
+  std::uint32_t frameKey = 0;
+};
+
+int runExport(const ExportOptions& options);
+
+// Writes every output in `frame` (array textures: one file per layer) and run.json.
+// Returns the written paths. Used by export and by the window's "export all stages".
+std::vector<std::string> exportFrame(const std::string& directory, const Frame& frame,
+                                     const Pipeline& pipeline, const std::string& renderer);

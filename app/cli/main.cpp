@@ -1,0 +1,141 @@
+// penumbra: a step-by-step visualizer of Monte Carlo soft shadows (Curtis & Olano 2009).
+// Subcommands (DESIGN.md §1); bad arguments print what is wrong and exit with status 2.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "bench/bench_report.h"
+#include "bench/bench_stages.h"
+#include "cli/export_command.h"
+#include "cli/hash_command.h"
+#include "cli/trace_command.h"
+#include "window/window_app.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"penumbra - a step-by-step visualizer of real-time soft shadows"};
+  app.require_subcommand(0, 1);
+
+  WindowOptions window;
+  app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine) or a "
+                                          ".json/.gltf/.glb file")->capture_default_str();
+  app.add_option("--set", window.sets, "stage.key=value, repeatable");
+  app.add_option("--screenshot", window.screenshot, "save the window to this PNG and exit");
+  app.add_option("--frames", window.frames, "frames to render before --screenshot")
+      ->check(CLI::Range(1, 100000))->capture_default_str();
+  app.add_option("--width", window.width, "window width")->check(CLI::Range(320, 8192));
+  app.add_option("--height", window.height, "window height")->check(CLI::Range(240, 8192));
+  app.add_option("--config", window.config, "settings JSON to start from (saved by the window)");
+  app.add_option("--script", window.script, "JSON list of UI actions to run, then exit");
+  app.add_option("--export", window.exportDirectory, "directory for the script's relative exports");
+
+  WindowOptions lesson;  // a lesson is a script with texts (app/window/script/ui_script.h, lessons/*.json)
+  CLI::App* lessonCommand = app.add_subcommand("lesson", "play a lesson in the window; with "
+                                                         "--export, run it through and write its figures");
+  lessonCommand->add_option("file", lesson.script, "lesson JSON (e.g. lessons/fig_3_2_progression.json)")
+      ->required()->check(CLI::ExistingFile);
+  lessonCommand->add_option("--export", lesson.exportDirectory, "write the figures here and exit");
+  lessonCommand->add_option("--scene", lesson.scene, "scene to start from")->capture_default_str();
+  lessonCommand->add_option("--screenshot", lesson.screenshot, "save the window after --frames and exit");
+  lessonCommand->add_option("--frames", lesson.frames, "frames before --screenshot")->check(CLI::Range(1, 100000));
+
+  ExportOptions exporting;
+  CLI::App* exportCommand = app.add_subcommand("export", "run the pipeline headless and write "
+                                                         "every stage output (EXR + PNG) and run.json");
+  exportCommand->add_option("--scene", exporting.scene, "built-in scene or scene file")
+      ->capture_default_str();
+  exportCommand->add_option("--out", exporting.outDirectory, "output directory")
+      ->capture_default_str();
+  exportCommand->add_option("--width", exporting.width, "eye image width")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  exportCommand->add_option("--height", exporting.height, "eye image height")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  exportCommand->add_option("--set", exporting.sets, "stage.key=value, repeatable");
+  exportCommand->add_option("--frame-key", exporting.frameKey, "hash key of the frame")
+      ->capture_default_str();
+
+  TraceOptions tracing;
+  CLI::App* traceCommand = app.add_subcommand("trace", "record every step of every ray at one "
+                                                       "pixel, as JSON");
+  traceCommand->add_option("--scene", tracing.scene, "built-in scene or scene file")
+      ->capture_default_str();
+  traceCommand->add_option("--pixel", tracing.pixel, "X,Y in image coordinates (row 0 on top)")
+      ->required();
+  traceCommand->add_option("--out", tracing.out, "JSON file (default: standard output)");
+  traceCommand->add_option("--width", tracing.width, "eye image width")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  traceCommand->add_option("--height", tracing.height, "eye image height")
+      ->check(CLI::Range(1, 8192))->capture_default_str();
+  traceCommand->add_option("--set", tracing.sets, "stage.key=value, repeatable");
+
+  HashOptions hashing;
+  CLI::App* hashCommand = app.add_subcommand("hash", "raw little-endian uint32 stream of a hash "
+                                                     "on the inputs 1, 2, ... (dieharder -g 200)");
+  hashCommand->add_option("--hash", hashing.hash, "md5_16, md5_64 or pcg3d")->capture_default_str();
+  hashCommand->add_option("--count", hashing.count, "number of hashes (16 bytes each)")
+      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(4294967295u)))->capture_default_str();
+  hashCommand->add_option("--key", hashing.key, "key XORed into every seed")->capture_default_str();
+
+  BenchStagesOptions benching;
+  CLI::App* benchStagesCommand = app.add_subcommand(
+      "bench-stages", "per-stage milliseconds, fetches per ray and classification savings on "
+                      "cube and engine (writes a Markdown table)");
+  benchStagesCommand->add_option("--out", benching.out, "Markdown file")->capture_default_str();
+  benchStagesCommand->add_option("--frames", benching.frames, "timed frames per configuration")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  benchStagesCommand->add_option("--scenes", benching.scenes, "comma-separated scenes")
+      ->capture_default_str();
+  benchStagesCommand->add_option("--width", benching.width)->check(CLI::Range(16, 4096));
+  benchStagesCommand->add_option("--height", benching.height)->check(CLI::Range(16, 4096));
+  benchStagesCommand->add_option("--map", benching.mapSize, "shadow-map size")
+      ->check(CLI::Range(128, 2048));
+  benchStagesCommand->add_option("--set", benching.sets, "stage.key=value for every configuration");
+
+  BenchOptions report;
+  CLI::App* benchCommand = app.add_subcommand(
+      "bench", "speed against error: every configuration timed and compared with the exact "
+               "reference (writes results.csv, results.md, speed_vs_error.png)");
+  benchCommand->add_option("--scene", report.scene, "built-in scene or scene file")->capture_default_str();
+  benchCommand->add_option("--preset", report.preset, "default, minimal, thesis-table-4.1, atty-4.2");
+  benchCommand->add_option("--sweep", report.sweeps, "stage.key=v1,v2,... or scene.light_scale=, "
+                                                     "scene.lateral=, scene.vertical=, eye.size=WxH,...");
+  benchCommand->add_option("--set", report.sets, "stage.key=value for every configuration, repeatable");
+  benchCommand->add_option("--out", report.out, "output directory")->required();
+  benchCommand->add_option("--width", report.width, "eye width (default: the preset's)")->check(CLI::Range(16, 4096));
+  benchCommand->add_option("--height", report.height, "eye height (default: the preset's)")->check(CLI::Range(16, 4096));
+  benchCommand->add_option("--frames", report.frames, "timed frames per configuration")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  benchCommand->add_option("--warmup", report.warmup, "untimed frames first")
+      ->check(CLI::Range(0, 100))->capture_default_str();
+  benchCommand->add_option("--rounds", report.rounds, "passes over the configurations that "
+                           "share the timed frames")->check(CLI::Range(1, 100))->capture_default_str();
+  benchCommand->add_option("--reference-samples", report.referenceSamples, "m: m x m light samples "
+                           "per pixel in the reference")->check(CLI::Range(1, 64))->capture_default_str();
+  benchCommand->add_option("--time-limit", report.timeLimit, "seconds of reference tracing allowed "
+                           "(estimated before starting)")->check(CLI::PositiveNumber)->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    app.exit(error);
+    return 2;
+  }
+
+  if (*exportCommand) return runExport(exporting);
+  if (*traceCommand) return runTraceCommand(tracing);
+  if (*benchStagesCommand) return runBenchStages(benching);
+  if (*benchCommand) {
+    for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
+    return runBench(report);
+  }
+  if (*hashCommand) return runHashCommand(hashing);
+  if (*lessonCommand) {
+    lesson.interactiveLesson = lesson.exportDirectory.empty();
+    return runWindow(lesson);
+  }
+  return runWindow(window);
+}

@@ -1,0 +1,76 @@
+#include "cli/trace_command.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "io/headless_session.h"
+#include "io/image_export.h"
+
+const char* stepDecisionName(int decision) {
+  static const char* names[] = {"descend", "advance", "ascend", "hit", "miss",
+                                "early_out_backface", "early_out_inside", "early_out_region",
+                                "sample", "refine", "eye_visible", "classified"};
+  return decision >= 0 && decision < int(std::size(names)) ? names[decision] : "unknown";
+}
+
+std::string traceStepsJson(const Frame& frame, int x, int y) {
+  nlohmann::json result;
+  result["pixel"] = {x, y};
+  const GlTexture& visibility = frame.input("trace.visibility");
+  const int glY = frame.eyeHeight - 1 - y;
+  float value = 0;
+  glGetTextureSubImage(visibility.id(), 0, x, glY, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof value,
+                       &value);
+  result["visibility"] = value;
+  result["rays"] = frame.pipeline.param("trace.rays").asInt() *
+                   frame.pipeline.param("trace.rays").asInt();
+  result["search"] = frame.pipeline.param("trace.search").asEnum();
+  result["layers"] = frame.pipeline.param("trace.layers").asEnum();
+  nlohmann::json steps = nlohmann::json::array();
+  for (const gpu::TraceStep& step : frame.traceSteps)
+    steps.push_back({{"ray", step.header.x},
+                     {"level", step.header.y},
+                     {"decision", stepDecisionName(step.header.z)},
+                     {"iteration", step.header.w},
+                     {"window", {step.window.x, step.window.y, step.window.z, step.window.w}},
+                     {"zNearMin", step.depths.x},
+                     {"zFarMax", step.depths.y},
+                     {"rayDepthIn", step.depths.z},
+                     {"rayDepthOut", step.depths.w},
+                     {"steppingBefore", step.stepping.x},
+                     {"steppingAfter", step.stepping.y},
+                     {"texelPoint", {step.stepping.z, step.stepping.w}}});
+  result["steps"] = steps;
+  return result.dump(1) + "\n";
+}
+
+int runTraceCommand(const TraceOptions& options) {
+  int x = -1, y = -1;
+  char extra = 0;
+  if (std::sscanf(options.pixel.c_str(), "%d,%d%c", &x, &y, &extra) != 2 || x < 0 || y < 0 ||
+      x >= options.width || y >= options.height) {
+    std::fprintf(stderr, "penumbra trace: --pixel '%s' must be X,Y inside the %dx%d image\n",
+                 options.pixel.c_str(), options.width, options.height);
+    return 2;
+  }
+  std::vector<std::string> sets = options.sets;
+  sets.push_back("trace.record_x=" + std::to_string(x));
+  sets.push_back("trace.record_y=" + std::to_string(y));
+  HeadlessSession session;
+  if (int status = session.open("trace", options.scene, sets, options.width, options.height))
+    return status;
+  try {
+    session.pipeline.run(*session.frame);
+    const std::string json = traceStepsJson(*session.frame, x, y);
+    if (options.out.empty()) std::fputs(json.c_str(), stdout);
+    else {
+      writeTextFile(options.out, json);
+      std::printf("penumbra trace: %zu steps written to %s\n", session.frame->traceSteps.size(),
+                  options.out.c_str());
+    }
+  } catch (const std::exception& failure) {
+    std::fprintf(stderr, "penumbra trace: %s\n", failure.what());
+    return 1;
+  }
+  return 0;
+}

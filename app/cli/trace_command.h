@@ -1,0 +1,22 @@
+// `penumbra trace --scene S --pixel X,Y`: every step of every ray at one pixel, as JSON
+// (the same records the window's per-ray panel draws).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/frame.h"
+
+struct TraceOptions {
+  std::string scene = "cube";
+  std::string pixel;  // "X,Y", image coordinates (row 0 at the top, as in the PNGs)
+  std::string out;    // file; empty: stdout
+  int width = 512, height = 512;
+  std::vector<std::string> sets;
+};
+
+int runTraceCommand(const TraceOptions& options);
+
+// The name of a STEP_* decision ("descend", "hit", ...).
+const char* stepDecisionName(int decision);
+// The recorded steps of `frame` as JSON text, grouped by ray, with the pixel's visibility.
+std::string traceStepsJson(const Frame& frame, int x, int y);

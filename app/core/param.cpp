@@ -1,0 +1,75 @@
+#include "core/param.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+Param Param::boolean(std::string key, std::string doc, bool value) {
+  return {std::move(key), std::move(doc), Type::Bool, double(value), 0, 1, {}};
+}
+Param Param::integer(std::string key, std::string doc, int value, int min, int max) {
+  return {std::move(key), std::move(doc), Type::Int, double(value), double(min), double(max), {}};
+}
+Param Param::real(std::string key, std::string doc, double value, double min, double max) {
+  return {std::move(key), std::move(doc), Type::Float, value, min, max, {}};
+}
+Param Param::choice(std::string key, std::string doc, std::vector<std::string> options,
+                    int value) {
+  const double last = double(options.size()) - 1;
+  return {std::move(key), std::move(doc), Type::Enum, double(value), 0, last, std::move(options)};
+}
+
+std::string Param::toString() const {
+  switch (type) {
+    case Type::Bool: return asBool() ? "true" : "false";
+    case Type::Int: return std::to_string(asInt());
+    case Type::Enum: return asEnum();
+    case Type::Float: {
+      std::ostringstream out;
+      out << value;
+      return out.str();
+    }
+  }
+  return "";
+}
+
+std::string Param::rangeText() const {
+  std::ostringstream out;
+  switch (type) {
+    case Type::Bool: return "true or false";
+    case Type::Enum:
+      out << "one of {";
+      for (size_t i = 0; i < options.size(); ++i) out << (i ? ", " : "") << options[i];
+      out << "}";
+      return out.str();
+    case Type::Int: out << "an integer in [" << int(min) << ", " << int(max) << "]"; break;
+    case Type::Float: out << "a number in [" << min << ", " << max << "]"; break;
+  }
+  return out.str();
+}
+
+std::string Param::set(const std::string& text) {
+  const auto invalid = [&] { return "'" + text + "' is not valid for " + key + ": expected " + rangeText(); };
+  switch (type) {
+    case Type::Bool:
+      if (text == "true" || text == "1" || text == "on") value = 1;
+      else if (text == "false" || text == "0" || text == "off") value = 0;
+      else return invalid();
+      return "";
+    case Type::Enum:
+      for (size_t i = 0; i < options.size(); ++i)
+        if (options[i] == text) { value = double(i); return ""; }
+      return invalid();
+    case Type::Int:
+    case Type::Float: {
+      char* end = nullptr;
+      const double parsed = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(parsed)) return invalid();
+      if (type == Type::Int && parsed != std::floor(parsed)) return invalid();
+      if (parsed < min || parsed > max) return invalid();
+      value = parsed;
+      return "";
+    }
+  }
+  return invalid();
+}

@@ -1,0 +1,76 @@
+#include "gl/gl_texture.h"
+
+#include <stdexcept>
+
+GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
+    : format_(internalFormat), width_(width), height_(height), layers_(layers) {
+  glCreateTextures(layers > 0 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
+  if (layers > 0)
+    glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
+  else
+    glTextureStorage2D(id_, 1, internalFormat, width, height);
+  // Exact values: every read is a texelFetch or a nearest sample.
+  glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+GlTexture& GlTexture::operator=(GlTexture&& other) noexcept {
+  if (this != &other) {
+    release();
+    std::swap(id_, other.id_);
+    format_ = other.format_;
+    width_ = other.width_;
+    height_ = other.height_;
+    layers_ = other.layers_;
+  }
+  return *this;
+}
+
+void GlTexture::release() {
+  if (id_) glDeleteTextures(1, &id_);
+  id_ = 0;
+}
+
+int GlTexture::channelCount() const {
+  switch (format_) {
+    case GL_RGBA32F: case GL_RGBA8: case GL_RGBA32UI: case GL_RGBA16F: return 4;
+    case GL_RG32F: case GL_RG32UI: return 2;
+    default: return 1;
+  }
+}
+
+bool GlTexture::isInteger() const {
+  return format_ == GL_R32UI || format_ == GL_RG32UI || format_ == GL_RGBA32UI ||
+         format_ == GL_R8UI;
+}
+
+std::vector<float> GlTexture::readFloats(int layer) const {
+  const int channels = channelCount();
+  const size_t count = size_t(width_) * height_ * channels;
+  std::vector<float> values(count);
+  GLenum format = channels == 4 ? GL_RGBA : channels == 2 ? GL_RG : GL_RED;
+  if (format_ == GL_DEPTH_COMPONENT32F) format = GL_DEPTH_COMPONENT;
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (isInteger()) {
+    std::vector<GLuint> raw(count);
+    const GLenum integerFormat = channels == 4 ? GL_RGBA_INTEGER
+                                 : channels == 2 ? GL_RG_INTEGER
+                                                 : GL_RED_INTEGER;
+    glGetTextureSubImage(id_, 0, 0, 0, layer, width_, height_, 1, integerFormat, GL_UNSIGNED_INT,
+                         GLsizei(raw.size() * sizeof(GLuint)), raw.data());
+    for (size_t i = 0; i < count; ++i) values[i] = float(raw[i]);
+    return values;
+  }
+  glGetTextureSubImage(id_, 0, 0, 0, layer, width_, height_, 1, format, GL_FLOAT,
+                       GLsizei(values.size() * sizeof(float)), values.data());
+  return values;
+}
+
+void GlFramebuffer::checkComplete(const char* who) const {
+  const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error(std::string(who) + ": framebuffer incomplete (status 0x" +
+                             std::to_string(status) + ")");
+}

@@ -1,0 +1,29 @@
+// The scene's triangles on the GPU: one vertex/index buffer pair per object.
+#pragma once
+#include <epoxy/gl.h>
+
+#include <vector>
+
+#include "scene/scene.h"
+
+class GpuScene {
+public:
+  explicit GpuScene(const Scene& scene);
+  ~GpuScene();
+  GpuScene(const GpuScene&) = delete;
+  GpuScene& operator=(const GpuScene&) = delete;
+
+  struct DrawItem {
+    GLuint vertexArray, vertexBuffer, indexBuffer;
+    GLsizei indexCount;
+    glm::vec3 baseColor;
+    bool receiverOnly;
+  };
+  // Vertex attributes: location 0 = wsPosition (vec3), location 1 = wsNormal (vec3).
+  // Per draw the uniform at `colorLocation` (if >= 0) receives the base colour (vec3).
+  void draw(bool includeReceivers, GLint colorLocation = -1) const;
+  const std::vector<DrawItem>& items() const { return items_; }
+
+private:
+  std::vector<DrawItem> items_;
+};

@@ -1,0 +1,51 @@
+#include "gl/nbuffer_build.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+int nbufferLevelCount(int width, int height) {
+  const int size = std::max(width, height);
+  int levels = 1;  // level n covers 2^n texels per axis; stop once that spans the map
+  while ((1 << (levels - 1)) < size) ++levels;
+  return levels;
+}
+
+void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
+                           GlTexture& levels) {
+  const int width = nearLayer.width(), height = nearLayer.height();
+  const int count = nbufferLevelCount(width, height);
+  if (width < 1 || height < 1 || farLayer.width() != width || farLayer.height() != height ||
+      nearLayer.isArray() || farLayer.isArray())
+    throw std::invalid_argument("buildNBuffer: near and far layers must be 2D textures of "
+                                "the same size >= 1x1");
+  if (levels.internalFormat() != GL_RGBA32F || levels.width() != width ||
+      levels.height() != height || levels.layers() != count)
+    throw std::invalid_argument("buildNBuffer: levels must be an RGBA32F array of " +
+                                std::to_string(width) + "x" + std::to_string(height) + "x" +
+                                std::to_string(count) + " (nbufferLevelCount)");
+  const GLuint groupsX = GLuint(width + 7) / 8, groupsY = GLuint(height + 7) / 8;
+
+  // Level 0: (near, near, far, 0).
+  level0_.use();
+  glBindTextureUnit(0, nearLayer.id());
+  glBindTextureUnit(1, farLayer.id());
+  glBindImageTexture(0, levels.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute(groupsX, groupsY, 1);
+
+  // Level n from level n-1: both bound as single-layer images of the same texture.
+  level_.use();
+  for (int level = 1; level < count; ++level) {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, levels.id(), 0, GL_FALSE, level - 1, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, levels.id(), 0, GL_FALSE, level, GL_WRITE_ONLY, GL_RGBA32F);
+    glUniform1i(0, level);
+    glDispatchCompute(groupsX, groupsY, 1);
+  }
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+void buildNBuffer(const GlTexture& nearLayer, const GlTexture& farLayer, GlTexture& levels) {
+  static NBufferBuilder* builder = new NBufferBuilder;  // never deleted: see the header
+  builder->build(nearLayer, farLayer, levels);
+}

@@ -1,0 +1,26 @@
+// What every headless command starts with: the scene loaded and validated, the `--set`
+// assignments applied, a headless GL context, the scene on the GPU and one frame.
+// Failures print "penumbra <command>: <what is wrong>" and give the exit status: 2 for bad
+// input (scene, --set), 1 for a missing OpenGL 4.5.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/frame.h"
+#include "gl/gl_context.h"
+#include "core/pipeline.h"
+
+class HeadlessSession {
+public:
+  // Returns 0 when ready, else the exit status (the message is printed).
+  int open(const std::string& command, const std::string& sceneNameOrPath,
+           const std::vector<std::string>& sets, int width, int height);
+
+  // The context first: members die in reverse order, so every GL object dies before it.
+  std::unique_ptr<GlContext> context;
+  Scene scene;
+  Pipeline pipeline;
+  std::unique_ptr<GpuScene> gpuScene;
+  std::unique_ptr<Frame> frame;
+};

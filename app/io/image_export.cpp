@@ -1,0 +1,94 @@
+#include "io/image_export.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <fstream>
+#include <stdexcept>
+
+#include "io/colormap.h"
+
+namespace {
+
+// "dir/name.exr" -> "dir/name.partial.exr": same extension, so OIIO picks the same writer.
+std::filesystem::path temporaryName(const std::filesystem::path& path) {
+  std::filesystem::path temporary = path;
+  temporary.replace_extension(".partial" + path.extension().string());
+  return temporary;
+}
+
+void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
+                OIIO::TypeDesc type, const void* topRowFirst) {
+  const auto temporary = temporaryName(path);
+  auto out = OIIO::ImageOutput::create(path.string());
+  if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
+  if (!out->open(temporary.string(), spec) || !out->write_image(type, topRowFirst) ||
+      !out->close())
+    throw std::runtime_error("cannot write " + path.string() + ": " + out->geterror());
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace
+
+void writeExr(const std::filesystem::path& path, const std::vector<float>& values, int width,
+              int height, const std::vector<std::string>& channelNames) {
+  const int channels = int(channelNames.size());
+  std::vector<float> flipped(values.size());
+  const size_t row = size_t(width) * channels;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&values[size_t(height - 1 - y) * row], row, &flipped[size_t(y) * row]);
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = channelNames;
+  spec.alpha_channel = -1;  // raw data: no channel is treated as alpha
+  spec.attribute("compression", "zip");
+  writeImage(path, spec, OIIO::TypeDesc::FLOAT, flipped.data());
+}
+
+void writePng(const std::filesystem::path& path, const std::vector<std::uint8_t>& rgb,
+              int width, int height) {
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  writeImage(path, spec, OIIO::TypeDesc::UINT8, rgb.data());
+}
+
+std::vector<float> readExr(const std::filesystem::path& path, int& width, int& height,
+                           std::vector<std::string>& channelNames) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw std::runtime_error("cannot read " + path.string() + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  width = spec.width;
+  height = spec.height;
+  channelNames = spec.channelnames;
+  std::vector<float> topRowFirst(size_t(width) * height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, topRowFirst.data()))
+    throw std::runtime_error("cannot read " + path.string() + ": " + in->geterror());
+  std::vector<float> values(topRowFirst.size());
+  const size_t row = size_t(width) * spec.nchannels;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&topRowFirst[size_t(height - 1 - y) * row], row, &values[size_t(y) * row]);
+  return values;
+}
+
+std::vector<std::filesystem::path> exportTexture(const std::filesystem::path& directory,
+                                                 const std::string& stem,
+                                                 const GlTexture& texture, const Output& output,
+                                                 int layer) {
+  const std::vector<float> values = texture.readFloats(layer);
+  const auto exr = directory / (stem + ".exr");
+  const auto png = directory / (stem + ".png");
+  writeExr(exr, values, texture.width(), texture.height(), output.channels);
+  writePng(png,
+           displayRgb8(values, texture.width(), texture.height(), texture.channelCount(),
+                       output.display),
+           texture.width(), texture.height());
+  return {exr, png};
+}
+
+void writeTextFile(const std::filesystem::path& path, const std::string& text) {
+  const auto temporary = temporaryName(path);
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+  }
+  std::filesystem::rename(temporary, path);
+}

@@ -1,0 +1,20 @@
+#include "reference/reference_request.h"
+
+ReferenceRequest makeReferenceRequest(const Frame& frame, int samplesPerSide, bool stratified) {
+  ReferenceRequest request;
+  request.width = frame.eyeWidth;
+  request.height = frame.eyeHeight;
+  request.wsPosition = frame.input("gbuffer.wsPosition").readFloats();
+  request.wsNormal = frame.input("gbuffer.wsNormal").readFloats();
+  request.samplesPerSide = samplesPerSide;
+  request.stratified = stratified;
+  request.wsLightCenter = frame.scene.light.center;
+  request.wsLightRight = frame.light.right;  // orthonormal, as the trace's light samples
+  request.wsLightUp = frame.light.up;
+  request.halfWidth = 0.5f * frame.scene.light.width;
+  request.halfHeight = 0.5f * frame.scene.light.height;
+  const Bounds bounds = frame.scene.bounds();
+  request.epsilon =
+      kRelativeEpsilon * (bounds.empty() ? 1.0f : glm::length(bounds.max - bounds.min));
+  return request;
+}

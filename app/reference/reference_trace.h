@@ -1,0 +1,113 @@
+// Exact reference visibility (DESIGN.md §7): at each receiver point, the fraction of an
+// m x m grid of light samples that the REAL triangles of the scene do not hide, ray traced
+// on the CPU with Embree 3. The stage `reference` (stages/ground_truth/reference.cpp) and `penumbra
+// bench` use it; it knows nothing about GL.
+//
+// Choices, and why (they make it the truth the methods are measured against):
+// - Occluders: the objects that are not receiver-only, exactly the set the methods put in
+//   their depth layers (light_layers excludes receiver-only objects, thesis §3.3). A
+//   receiver-only ground casts no shadow in any method, so it casts none here either.
+// - Origin: the receiver point moved kRelativeEpsilon x the scene's diagonal along its
+//   normal. The methods need the large bias of Eq 3.2 to survive depth-map resolution;
+//   the reference only needs to leave the surface's own triangle (float round-off), so
+//   the offset is tiny and does not detach contact shadows.
+// - A light sample behind the receiver's tangent plane (n . (s - p) <= 0) is blocked: an
+//   opaque surface cannot see through itself. This is what the methods' backface early
+//   out (§3.7) and the Lambert term assume; for closed meshes the triangles agree anyway.
+// - Sampling: `stratified` jitters one sample inside each of the m x m cells of the light,
+//   from a fixed integer hash of (pixel, sample) (decorrelated between pixels, so the
+//   sampling error is unbiased noise, not bands; the same input gives the same bits);
+//   `uniform` takes the cell centres (a fixed quadrature, for exact methods).
+// - Light samples use the same parametrisation as the trace (centre + (2u-1) w/2 right +
+//   (2v-1) h/2 up, with the light frame's orthonormal right/up).
+#pragma once
+#include <glm/glm.hpp>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+// The receivers and the light sampling of one reference image.
+struct ReferenceRequest {
+  int width = 0, height = 0;
+  std::vector<float> wsPosition;  // RGBA per pixel, GL order (row 0 at the bottom); w: coverage
+  std::vector<float> wsNormal;    // RGBA per pixel, unit normal towards the eye
+  int samplesPerSide = 16;        // m
+  bool stratified = true;         // false: cell centres
+  glm::vec3 wsLightCenter{0}, wsLightRight{1, 0, 0}, wsLightUp{0, 0, 1};  // right/up unit
+  float halfWidth = 0.5f, halfHeight = 0.5f;
+  float epsilon = 1e-4f;  // origin offset along the normal, world units
+};
+
+// Shared with whoever shows progress or wants to stop a computation (the window later):
+// rows finished so far and a cancel request, both polled from any thread.
+struct ReferenceProgress {
+  std::atomic<int> rowsDone{0};
+  std::atomic<int> rowsTotal{0};
+  std::atomic<bool> cancel{false};
+  std::atomic<bool> running{false};  // a computation is under way
+  std::atomic<int> finished{0};      // completed computations: a change means "run again"
+};
+
+// The progress of the `reference` stage's computation (one per process): the window can
+// draw it and request a cancel; the stage resets it when a computation starts.
+ReferenceProgress& referenceStageProgress();
+
+// Relative origin offset: epsilon = kRelativeEpsilon x scene diagonal.
+inline constexpr float kRelativeEpsilon = 1e-5f;
+
+class ReferenceTracer {
+public:
+  // Builds the Embree scene of every non-receiver-only triangle (robust, high quality).
+  explicit ReferenceTracer(const Scene& scene);
+  ~ReferenceTracer();
+  ReferenceTracer(const ReferenceTracer&) = delete;
+  ReferenceTracer& operator=(const ReferenceTracer&) = delete;
+
+  size_t occluderTriangles() const { return triangles_; }
+  // 16, 8, 4 or 1: the widest packet native to this CPU ($PENUMBRA_REFERENCE_PACKET forces
+  // one, for measurements; every width gives the same bits).
+  int packetWidth() const { return packetWidth_; }
+
+  // Visibility per pixel (GL order, 1 where there is no geometry). Rows are shared out to
+  // `threads` std::threads (0: hardware concurrency). Returns false (and a partial image)
+  // when progress->cancel was set. Deterministic: no result depends on the thread count.
+  bool trace(const ReferenceRequest& request, std::vector<float>& visibility,
+             ReferenceProgress* progress = nullptr, int threads = 0) const;
+
+  // Seconds the full image would take, timed on every `stride`-th covered pixel.
+  double estimateSeconds(const ReferenceRequest& request, int stride = 97) const;
+
+  // Visibility of one point (tests, the inspector): the same code as trace().
+  float pointVisibility(const ReferenceRequest& request, const glm::vec3& wsPosition,
+                        const glm::vec3& wsNormal, int pixelX, int pixelY) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  size_t triangles_ = 0;
+  int packetWidth_ = 1;
+};
+
+// Light sample k (0 .. m*m-1) of pixel (x, y) in [0,1)^2 over the light.
+glm::vec2 referenceSampleUnit(int x, int y, int k, int samplesPerSide, bool stratified);
+
+// Prints a progress bar to stderr until progress says every row is done (call from the
+// thread that waits): "\r" updates on a terminal, a start and an end line otherwise.
+class TerminalProgress {
+public:
+  TerminalProgress(std::string label, const ReferenceProgress& progress);
+  void update();   // redraws if due
+  void finish(double seconds, bool cancelled);
+
+private:
+  std::string label_;
+  const ReferenceProgress& progress_;
+  bool terminal_;
+  double lastDraw_ = -1;
+  double started_;
+};

@@ -1,0 +1,133 @@
+#include "scene/scene_builtin.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+#include <stdexcept>
+
+#include "scene/mesh_builders.h"
+#include "scene/scene_file.h"
+#include "scene/scene_gltf.h"
+#include "scene/scene_stress.h"
+
+namespace {
+
+const char* kEnginePath =
+    "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+
+SceneObject ground(float size = 12.0f) {
+  return {"ground", makeQuad(size, glm::mat4(1)), glm::vec3(0.85f), true};
+}
+
+// The thesis's elongated cube (Fig 4.2): a long box hovering over the ground, its long axis
+// across the light, so the shadow beneath darkens with the box's thickness (§4).
+Scene cube() {
+  Scene scene;
+  scene.name = "cube";
+  scene.objects.push_back(ground());
+  glm::mat4 place = glm::translate(glm::mat4(1), {0, 0.9f, 0});
+  place = glm::rotate(place, glm::radians(30.0f), {0, 1, 0});
+  scene.objects.push_back({"elongated cube", makeBox({2.4f, 0.5f, 0.5f}, place),
+                           {0.9f, 0.35f, 0.25f}, false});
+  scene.light = {{0.6f, 4.0f, 0.3f}, glm::normalize(glm::vec3(-0.15f, -1, -0.05f)), {0, 0, -1},
+                 1.6f, 1.6f};
+  scene.camera = {{0.5f, 3.6f, 5.6f}, {0, 0.3f, 0}, {0, 1, 0}, 45};
+  return scene;
+}
+
+// A zero-thickness square parallel to the light and the ground: visibility is analytic.
+Scene plate() {
+  Scene scene;
+  scene.name = "plate";
+  scene.objects.push_back(ground());
+  scene.objects.push_back(
+      {"plate", makeQuad(1.0f, glm::translate(glm::mat4(1), {0, 1, 0})), {0.3f, 0.5f, 0.9f}, false});
+  scene.light = {{0, 3, 0}, {0, -1, 0}, {0, 0, -1}, 1.0f, 1.0f};
+  scene.camera = {{0, 3.5f, 4.5f}, {0, 0.2f, 0}, {0, 1, 0}, 45};
+  return scene;
+}
+
+Scene spheres() {
+  Scene scene;
+  scene.name = "spheres";
+  scene.objects.push_back(ground());
+  scene.objects.push_back({"sphere on ground", makeSphere({-1.0f, 0.5f, 0.3f}, 0.5f),
+                           {0.9f, 0.3f, 0.3f}, false});
+  scene.objects.push_back({"sphere mid", makeSphere({0.4f, 1.0f, -0.2f}, 0.35f),
+                           {0.3f, 0.8f, 0.4f}, false});
+  scene.objects.push_back({"sphere high", makeSphere({1.1f, 1.8f, 0.6f}, 0.25f),
+                           {0.3f, 0.4f, 0.9f}, false});
+  scene.light = {{0.2f, 4.0f, 0.5f}, {0, -1, 0}, {0, 0, -1}, 1.5f, 1.5f};
+  scene.camera = {{0, 3.4f, 5.5f}, {0, 0.5f, 0}, {0, 1, 0}, 45};
+  return scene;
+}
+
+// Puts loaded objects on the ground: scaled so the largest side is `size`, resting on y = 0.
+void placeOnGround(std::vector<SceneObject>& objects, float size) {
+  Bounds bounds;
+  for (const SceneObject& object : objects)
+    for (const glm::vec3& p : object.mesh.positions) bounds.extend(p);
+  const glm::vec3 extent = bounds.max - bounds.min;
+  const float scale = size / std::max({extent.x, extent.y, extent.z, 1e-6f});
+  const glm::vec3 center = 0.5f * (bounds.min + bounds.max);
+  glm::mat4 place = glm::scale(glm::mat4(1), glm::vec3(scale));
+  place = glm::translate(place, {-center.x, -bounds.min.y, -center.z});
+  for (SceneObject& object : objects) transformMesh(object.mesh, place);
+}
+
+Scene gltfOnGround(const std::string& path, const std::string& name,
+                   std::vector<std::string>& warnings) {
+  Scene scene;
+  scene.name = name;
+  std::vector<SceneObject> loaded = loadGltf(path, glm::mat4(1), warnings);
+  placeOnGround(loaded, 2.5f);
+  scene.objects.push_back(ground());
+  for (SceneObject& object : loaded) scene.objects.push_back(std::move(object));
+  scene.light = {{0.5f, 5.0f, 0.5f}, glm::normalize(glm::vec3(-0.1f, -1, -0.1f)), {0, 0, -1},
+                 1.5f, 1.5f};
+  scene.camera = {{2.5f, 3.5f, 5.0f}, {0, 0.7f, 0}, {0, 1, 0}, 45};
+  return scene;
+}
+
+}  // namespace
+
+std::vector<std::string> builtinSceneNames() { return {"cube", "plate", "spheres", "engine"}; }
+
+bool isBuiltinScene(const std::string& name) {
+  const auto names = builtinSceneNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+Scene makeBuiltinScene(const std::string& name) {
+  std::vector<std::string> warnings;
+  if (name == "cube") return cube();
+  if (name == "plate") return plate();
+  if (name == "spheres") return spheres();
+  if (name == "engine") return gltfOnGround(kEnginePath, "engine", warnings);
+  std::string valid;
+  for (const std::string& each : builtinSceneNames()) valid += (valid.empty() ? "" : ", ") + each;
+  throw std::runtime_error("unknown scene '" + name + "'; built-in scenes: " + valid +
+                           " (stress scenes: stress_grazing, stress_contact, ...), or a path to "
+                           "a .json, .gltf or .glb file");
+}
+
+Scene loadScene(const std::string& nameOrPath, std::vector<std::string>& warnings) {
+  Scene scene;
+  const std::string extension = std::filesystem::path(nameOrPath).extension().string();
+  if (isStressScene(nameOrPath))
+    scene = makeStressScene(nameOrPath);
+  else if (isBuiltinScene(nameOrPath))
+    scene = nameOrPath == "engine" ? gltfOnGround(kEnginePath, "engine", warnings)
+                                   : makeBuiltinScene(nameOrPath);
+  else if (extension == ".json")
+    scene = loadSceneFile(nameOrPath, warnings);
+  else if (extension == ".gltf" || extension == ".glb")
+    scene = gltfOnGround(nameOrPath, std::filesystem::path(nameOrPath).stem().string(), warnings);
+  else
+    scene = makeBuiltinScene(nameOrPath);  // throws with the list of valid names
+  if (std::string problem = validateScene(scene); !problem.empty())
+    throw std::runtime_error(nameOrPath + ": " + problem);
+  return scene;
+}

@@ -1,0 +1,275 @@
+#include "scene/scene_file.h"
+
+#include "scene/mesh_builders.h"
+
+#include "scene/scene_gltf.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// RFC 6901 escaping, so that a pointer built from a hostile key still reads unambiguously.
+std::string pointerTo(const std::string& parent, const std::string& key) {
+  std::string escaped;
+  for (char c : key) {
+    if (c == '~')
+      escaped += "~0";
+    else if (c == '/')
+      escaped += "~1";
+    else
+      escaped += c;
+  }
+  return parent + "/" + escaped;
+}
+
+std::string typeOf(const json& value) {
+  const std::string type = value.type_name();
+  return (type == "object" || type == "array" ? "an " : "a ") + type;
+}
+
+class Reader {
+ public:
+  explicit Reader(std::string path) : path_(std::move(path)) {}
+
+  std::string message(const std::string& pointer, const std::string& what) const {
+    return path_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + what;
+  }
+  [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
+    throw std::runtime_error(message(pointer, what));
+  }
+
+  // Objects must be objects and hold only known keys: a misspelt key is an error.
+  void expectObject(const json& value, const std::string& pointer,
+                    std::initializer_list<const char*> valid) const {
+    if (!value.is_object()) fail(pointer, "expected an object, got " + typeOf(value));
+    for (const auto& [key, unused] : value.items()) {
+      bool known = false;
+      std::string list;
+      for (const char* name : valid) {
+        known = known || key == name;
+        list += (list.empty() ? "" : ", ") + std::string(name);
+      }
+      if (!known) fail(pointer, "unknown key '" + key + "' (valid keys: " + list + ")");
+    }
+  }
+
+  const json& required(const json& object, const std::string& pointer, const char* key) const {
+    if (!object.contains(key)) fail(pointerTo(pointer, key), "missing (required)");
+    return object[key];
+  }
+
+  double number(const json& value, const std::string& pointer) const {
+    if (!value.is_number()) fail(pointer, "expected a number, got " + typeOf(value));
+    const double result = value.get<double>();
+    // nlohmann refuses literals such as 1e999 itself; values beyond float range (or
+    // close enough that arithmetic overflows) would turn into infinities later.
+    if (!std::isfinite(result) || std::abs(result) > 1e30)
+      fail(pointer, "must be finite and within 1e30 in magnitude, got " + value.dump());
+    return result;
+  }
+
+  double positive(const json& value, const std::string& pointer) const {
+    const double result = number(value, pointer);
+    if (!(result > 0)) fail(pointer, "must be positive, got " + value.dump());
+    return result;
+  }
+
+  glm::vec3 vec3(const json& value, const std::string& pointer) const {
+    if (!value.is_array() || value.size() != 3)
+      fail(pointer,
+           "expected an array of 3 numbers, got " +
+               (value.is_array() ? "an array of " + std::to_string(value.size()) : typeOf(value)));
+    return {number(value[0], pointer + "/0"), number(value[1], pointer + "/1"),
+            number(value[2], pointer + "/2")};
+  }
+
+  std::string string(const json& value, const std::string& pointer) const {
+    if (!value.is_string()) fail(pointer, "expected a string, got " + typeOf(value));
+    return value.get<std::string>();
+  }
+
+  bool boolean(const json& value, const std::string& pointer) const {
+    if (!value.is_boolean()) fail(pointer, "expected true or false, got " + typeOf(value));
+    return value.get<bool>();
+  }
+
+  glm::vec3 color(const json& value, const std::string& pointer) const {
+    const glm::vec3 c = vec3(value, pointer);
+    for (int i = 0; i < 3; ++i)
+      if (c[i] < 0 || c[i] > 1) fail(pointer + "/" + std::to_string(i), "must be in [0, 1]");
+    return c;
+  }
+
+ private:
+  std::string path_;
+};
+
+// T * Rz * Ry * Rx * S: the model is scaled, rotated about X then Y then Z (world axes),
+// then moved.
+glm::mat4 placement(const Reader& r, const json& object, const std::string& pointer) {
+  glm::vec3 translate(0), rotate(0), scale(1);
+  if (object.contains("translate")) translate = r.vec3(object["translate"], pointer + "/translate");
+  if (object.contains("rotate_degrees"))
+    rotate = r.vec3(object["rotate_degrees"], pointer + "/rotate_degrees");
+  if (object.contains("scale")) {
+    const json& s = object["scale"];
+    const std::string at = pointer + "/scale";
+    scale = s.is_number() ? glm::vec3(static_cast<float>(r.number(s, at))) : r.vec3(s, at);
+    for (int i = 0; i < 3; ++i)
+      if (!(scale[i] > 0))
+        r.fail(at, "must be positive (a number or an array of 3 positive numbers)");
+  }
+  glm::mat4 m = glm::translate(glm::mat4(1), translate);
+  m = glm::rotate(m, glm::radians(rotate.z), {0, 0, 1});
+  m = glm::rotate(m, glm::radians(rotate.y), {0, 1, 0});
+  m = glm::rotate(m, glm::radians(rotate.x), {1, 0, 0});
+  return glm::scale(m, scale);
+}
+
+void readObject(const Reader& r, const json& object, const std::string& pointer,
+                const fs::path& baseDir, Scene& scene, std::vector<std::string>& warnings) {
+  if (!object.is_object()) r.fail(pointer, "expected an object, got " + typeOf(object));
+  const bool isGltf = object.contains("gltf"), isGround = object.contains("ground");
+  if (isGltf == isGround) r.fail(pointer, "needs exactly one of 'gltf' or 'ground'");
+  std::string name;
+  if (object.contains("name")) name = r.string(object["name"], pointer + "/name");
+  const size_t first = scene.objects.size();
+
+  if (isGround) {
+    r.expectObject(object, pointer, {"ground", "name", "color", "receiver_only"});
+    const std::string at = pointer + "/ground";
+    r.expectObject(object["ground"], at, {"size", "y"});
+    const float size =
+        static_cast<float>(r.positive(r.required(object["ground"], at, "size"), at + "/size"));
+    const float y = object["ground"].contains("y")
+                        ? static_cast<float>(r.number(object["ground"]["y"], at + "/y"))
+                        : 0.0f;
+    SceneObject ground;
+    ground.name = name.empty() ? "ground" : name;
+    ground.mesh = makeQuad(size, glm::translate(glm::mat4(1), {0, y, 0}));
+    ground.receiverOnly = true;  // a floor rarely shadows anything; saves a depth layer
+    scene.objects.push_back(std::move(ground));
+  } else {
+    r.expectObject(
+        object, pointer,
+        {"gltf", "name", "translate", "rotate_degrees", "scale", "color", "receiver_only"});
+    const std::string at = pointer + "/gltf";
+    const std::string file = r.string(object["gltf"], at);
+    if (file.empty()) r.fail(at, "empty path");
+    fs::path modelPath(file);
+    if (modelPath.is_relative()) modelPath = (baseDir / modelPath).lexically_normal();
+    const glm::mat4 world = placement(r, object, pointer);
+    std::vector<SceneObject> loaded;
+    try {
+      loaded = loadGltf(modelPath.string(), world, warnings);
+    } catch (const std::exception& e) {
+      r.fail(at, e.what());
+    }
+    for (SceneObject& o : loaded) {
+      if (!name.empty()) o.name = name + "/" + o.name;
+      scene.objects.push_back(std::move(o));
+    }
+  }
+
+  for (size_t i = first; i < scene.objects.size(); ++i) {
+    SceneObject& o = scene.objects[i];
+    if (object.contains("color")) o.baseColor = r.color(object["color"], pointer + "/color");
+    if (object.contains("receiver_only"))
+      o.receiverOnly = r.boolean(object["receiver_only"], pointer + "/receiver_only");
+  }
+}
+
+AreaLight readLight(const Reader& r, const json& root, std::vector<std::string>& warnings) {
+  const json& light = r.required(root, "", "light");
+  const std::string at = "/light";
+  r.expectObject(light, at, {"center", "forward", "up", "width", "height"});
+  AreaLight result;
+  result.center = r.vec3(r.required(light, at, "center"), at + "/center");
+  glm::vec3 forward = r.vec3(r.required(light, at, "forward"), at + "/forward");
+  glm::vec3 up = r.vec3(r.required(light, at, "up"), at + "/up");
+  result.width = static_cast<float>(r.positive(r.required(light, at, "width"), at + "/width"));
+  result.height = static_cast<float>(r.positive(r.required(light, at, "height"), at + "/height"));
+  if (glm::length(forward) < 1e-6f) r.fail(at + "/forward", "must not be zero");
+  if (glm::length(up) < 1e-6f) r.fail(at + "/up", "must not be zero");
+  forward = glm::normalize(forward);
+  up = glm::normalize(up);
+  // Consumers build the light's frame from these two; give them an orthonormal pair.
+  const float cosine = glm::dot(forward, up);
+  if (std::abs(cosine) > 0.999f) r.fail(at + "/up", "is parallel to forward");
+  if (std::abs(cosine) > 1e-3f)
+    warnings.push_back(
+        r.message(at + "/up", "not perpendicular to forward; using its perpendicular part"));
+  result.forward = forward;
+  result.up = glm::normalize(up - cosine * forward);
+  return result;
+}
+
+Camera readCamera(const Reader& r, const json& root) {
+  const json& camera = r.required(root, "", "camera");
+  const std::string at = "/camera";
+  r.expectObject(camera, at, {"position", "target", "up", "fov_y_degrees"});
+  Camera result;
+  result.position = r.vec3(r.required(camera, at, "position"), at + "/position");
+  result.target = r.vec3(r.required(camera, at, "target"), at + "/target");
+  if (camera.contains("up")) result.up = r.vec3(camera["up"], at + "/up");
+  if (camera.contains("fov_y_degrees")) {
+    result.fovYDegrees =
+        static_cast<float>(r.number(camera["fov_y_degrees"], at + "/fov_y_degrees"));
+    if (!(result.fovYDegrees > 1 && result.fovYDegrees < 179))
+      r.fail(at + "/fov_y_degrees", "must be in (1, 179)");
+  }
+  const glm::vec3 view = result.target - result.position;
+  if (glm::length(view) < 1e-6f) r.fail(at + "/target", "must differ from position");
+  if (glm::length(result.up) < 1e-6f ||
+      glm::length(glm::cross(glm::normalize(view), glm::normalize(result.up))) < 1e-3f)
+    r.fail(at + "/up", "must be non-zero and not parallel to the view direction");
+  return result;
+}
+
+}  // namespace
+
+Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings) {
+  const Reader r(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open file");
+  std::stringstream text;
+  text << in.rdbuf();
+  json root;
+  try {
+    root = json::parse(text.str());
+  } catch (const json::exception& e) {
+    // Drop the "[json.exception.parse_error.101] " prefix; keep line and column.
+    std::string what = e.what();
+    const size_t bracket = what.find("] ");
+    throw std::runtime_error(path + ": not valid JSON: " +
+                             (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+  }
+  r.expectObject(root, "", {"name", "objects", "light", "camera"});
+
+  Scene scene;
+  scene.name =
+      root.contains("name") ? r.string(root["name"], "/name") : fs::path(path).stem().string();
+  const json& objects = r.required(root, "", "objects");
+  if (!objects.is_array() || objects.empty())
+    r.fail("/objects", "expected a non-empty array of objects");
+  const fs::path baseDir = fs::path(path).parent_path();
+  for (size_t i = 0; i < objects.size(); ++i)
+    readObject(r, objects[i], "/objects/" + std::to_string(i), baseDir, scene, warnings);
+  scene.light = readLight(r, root, warnings);
+  scene.camera = readCamera(r, root);
+
+  const std::string problem = validateScene(scene);
+  if (!problem.empty()) throw std::runtime_error(path + ": " + problem);
+  return scene;
+}

@@ -1,0 +1,18 @@
+// glTF 2.0 (.gltf / .glb) import into world-space SceneObjects.
+// Files are untrusted input: every index, byte range and value is checked here rather
+// than trusting tinygltf, and a broken file is refused with a message, never a crash.
+#pragma once
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+// Loads every triangle primitive reachable from the file's default scene (or scene 0, or
+// every root node when the file has no scenes), one SceneObject per primitive instance,
+// with positions and normals transformed by worldFromFile * (node transforms).
+// Repairable problems (bad normals, non-triangle primitives, ignored features) are
+// appended to `warnings`; anything else throws std::runtime_error("<path>: <problem>").
+std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
+                                  std::vector<std::string>& warnings);

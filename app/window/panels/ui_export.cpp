@@ -1,0 +1,109 @@
+#include "window/panels/ui_export.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/export_command.h"
+#include "io/image_export.h"
+#include "window/ui_state.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string sanitized(std::string text) {
+  for (char& c : text)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '-';
+  return text;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+// 1. Scene, output, level, eye size, then the producing stage's changed parameters.
+std::string exportStem(const UiState& state, const std::string& stageDotOutput, int layer) {
+  std::string stem = state.scene.name + "_" + stageDotOutput;
+  if (state.frame && state.frame->has(stageDotOutput) &&
+      state.frame->input(stageDotOutput).isArray())
+    stem += "_L" + std::to_string(layer);
+  if (state.frame) {
+    char size[40];
+    std::snprintf(size, sizeof size, "_%dx%d", state.frame->eyeWidth, state.frame->eyeHeight);
+    stem += size;
+  }
+  const std::string stageName = stageDotOutput.substr(0, stageDotOutput.find('.'));
+  for (const auto& stage : state.pipeline.stages()) {
+    if (stage->name() != stageName) continue;
+    for (const Param& param : stage->params()) {
+      auto declared = state.parameterDefaults.find(stageName + "." + param.key);
+      if (declared != state.parameterDefaults.end() && declared->second == param.value) continue;
+      stem += "_" + param.key + "-" + param.toString();
+    }
+  }
+  return sanitized(stem);
+}
+
+// 2. One view: the texture's current level, raw or through the view's own mapping.
+std::string exportViewFiles(const UiState& state, const ViewPanel& view, const std::string& target,
+                            ExportKind kind) {
+  std::string problem;
+  const GlTexture* shown = shownTexture(state, view, &problem);
+  if (!state.outputOf(view.output) || !shown)
+    return "export: " + (problem.empty() ? "'" + view.output + "' has not been written this frame" : problem);
+  try {
+    const GlTexture& texture = *shown;
+    const int layer = texture.isArray() ? std::clamp(view.settings.layer, 0, texture.layers() - 1) : 0;
+    fs::path png, exr;
+    if (endsWith(target, ".png")) png = target;
+    else if (endsWith(target, ".exr")) exr = target;
+    else {
+      const fs::path directory = target.empty() ? fs::path(kDefaultExportDirectory) : fs::path(target);
+      const GlTexture& source = state.frame->input(view.output);  // a difference is 2D
+      const int sourceLayer = source.isArray() ? std::clamp(view.settings.layer, 0, source.layers() - 1) : 0;
+      std::string stem = exportStem(state, view.output, sourceLayer);
+      if (!view.minus.empty())  // "cube_light_layers.far-minus-light_layers.near_..."
+        stem.insert(state.scene.name.size() + 1 + view.output.size(),
+                    "-minus-" + view.minus + (view.clipNegative ? "-clipped" : ""));
+      if (kind != ExportKind::Exr) png = directory / (stem + ".png");
+      if (kind != ExportKind::Png) exr = directory / (stem + ".exr");
+    }
+    const std::vector<float> values = texture.readFloats(layer);
+    std::string written;
+    for (const fs::path& path : {png, exr}) {
+      if (path.empty()) continue;
+      if (path.has_parent_path()) fs::create_directories(path.parent_path());
+      if (path == png)
+        writePng(png, displayRgb8ForView(values, texture.width(), texture.height(),
+                                         texture.channelCount(), view.settings),
+                 texture.width(), texture.height());
+      else
+        writeExr(exr, values, texture.width(), texture.height(), shownChannelNames(state, view));
+      written += (written.empty() ? "" : ", ") + fs::absolute(path).string();
+    }
+    return "wrote " + written;
+  } catch (const std::exception& error) {
+    return std::string("export failed: ") + error.what();
+  }
+}
+
+// 3. Everything, through the same function as `penumbra export`.
+std::string exportAllStages(const UiState& state, const std::string& directory) {
+  if (!state.frame) return "export: no frame yet";
+  fs::path target = directory;
+  if (target.empty())
+    target = fs::path(kDefaultExportDirectory) /
+             sanitized(state.scene.name + "_all_" + std::to_string(state.frame->eyeWidth) + "x" +
+                       std::to_string(state.frame->eyeHeight));
+  try {
+    const auto written = exportFrame(target.string(), *state.frame, state.pipeline, state.renderer);
+    return "wrote " + std::to_string(written.size()) + " files into " + fs::absolute(target).string();
+  } catch (const std::exception& error) {
+    return std::string("export failed: ") + error.what();
+  }
+}

@@ -1,0 +1,26 @@
+// Exports from the window (DESIGN.md §6): a view "as displayed" (PNG, the view's current
+// channels, range, colormap and overlay) or raw (EXR), and "export all stages", which writes
+// exactly what `penumbra export` writes for the same settings (app/cli/export_command.h).
+// File names say the scene, the output, the eye size and the stage's non-default parameters.
+#pragma once
+#include <map>
+#include <string>
+
+class UiState;
+struct ViewPanel;
+
+enum class ExportKind { Png, Exr, Both };
+
+// "cube_hard_shadow.visibility_640x480_bias-0.01" (array textures: "..._L3" for the level).
+std::string exportStem(const UiState& state, const std::string& stageDotOutput, int layer);
+
+// `target`: "" -> the default directory with a generated name; "x.png" / "x.exr" -> exactly
+// that file (kind from the extension); anything else -> a directory, generated names.
+// Returns the status line: the absolute paths written, or what went wrong.
+std::string exportViewFiles(const UiState& state, const ViewPanel& view,
+                            const std::string& target, ExportKind kind);
+// Every output + run.json into `directory` ("" -> default directory / "<scene>_all_<WxH>").
+std::string exportAllStages(const UiState& state, const std::string& directory);
+
+// Where "" exports go (relative to the working directory).
+constexpr const char* kDefaultExportDirectory = "penumbra_exports";

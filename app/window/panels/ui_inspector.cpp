@@ -1,0 +1,186 @@
+#include "window/panels/ui_inspector.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "window/views/ui_categories.h"
+#include "window/ui_state.h"
+
+namespace {
+
+// One row of the pick table: an output (and level) with its raw values at the pick.
+struct PickRow {
+  std::string label;
+  std::vector<std::string> channelNames;
+  std::array<float, 4> values;
+  int channelCount;
+};
+
+// 1. Read back once per pipeline run and pick, not every UI frame.
+const std::vector<PickRow>& pickRows(const UiState& state) {
+  static std::vector<PickRow> rows;
+  static int cachedRuns = -1;
+  static glm::ivec2 cachedPick{-1}, cachedSpace{-1};
+  if (cachedRuns == state.pipelineRuns && cachedPick == *state.pick && cachedSpace == state.pickSpace)
+    return rows;
+  cachedRuns = state.pipelineRuns;
+  cachedPick = *state.pick;
+  cachedSpace = state.pickSpace;
+  rows.clear();
+  for (const auto& stage : state.pipeline.stages())
+    for (const Output& output : stage->outputs()) {
+      const std::string key = stage->name() + "." + output.name;
+      if (!state.frame->has(key)) continue;
+      const GlTexture& texture = state.frame->input(key);
+      if (texture.width() != state.pickSpace.x || texture.height() != state.pickSpace.y) continue;
+      for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer)
+        rows.push_back({texture.isArray() ? key + " L" + std::to_string(layer) : key, output.channels,
+                        readTexel(texture, cachedPick.x, cachedPick.y, layer),
+                        texture.channelCount()});
+    }
+  return rows;
+}
+
+void drawPick(const UiState& state) {
+  if (!state.pick || !state.frame) {
+    ImGui::TextDisabled("Click a view to pick a texel;\narrow keys move the pick.");
+    return;
+  }
+  ImGui::Text("(%d, %d) in %dx%d", state.pick->x, state.pickSpace.y - 1 - state.pick->y,
+              state.pickSpace.x, state.pickSpace.y);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Image coordinates: row 0 at the top.");
+  if (!ImGui::BeginTable("pick", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
+  ImGui::TableSetupColumn("output", ImGuiTableColumnFlags_WidthFixed,
+                          ImGui::GetContentRegionAvail().x * 0.42f);
+  ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthStretch);
+  for (const PickRow& row : pickRows(state)) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(row.label.c_str());
+    ImGui::TableNextColumn();
+    std::string text;
+    char value[64];
+    for (int c = 0; c < row.channelCount; ++c) {
+      const std::string name = size_t(c) < row.channelNames.size() ? row.channelNames[size_t(c)]
+                                                                   : std::string(1, "RGBA"[c]);
+      std::snprintf(value, sizeof value, "%s%s %.5g", c ? "  " : "", name.c_str(), row.values[size_t(c)]);
+      text += value;
+    }
+    ImGui::TextWrapped("%s", text.c_str());
+  }
+  ImGui::EndTable();
+}
+
+// 2. Bars: median ms per stage, scaled to the slowest.
+void drawTimings(const UiState& state) {
+  double slowest = 1e-3;
+  for (const auto& stage : state.pipeline.stages())
+    slowest = std::max(slowest, state.medianStageMs(stage->name()));
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float labelWidth = std::min(110.0f, width * 0.4f);
+  for (const auto& stage : state.pipeline.stages()) {
+    const double ms = state.medianStageMs(stage->name());
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float height = ImGui::GetTextLineHeight();
+    const float barWidth = float(ms / slowest) * (width - labelWidth - 60);
+    draw->AddRectFilled({at.x + labelWidth, at.y + 2}, {at.x + labelWidth + barWidth, at.y + height - 1},
+                        IM_COL32(90, 150, 230, 255));
+    ImGui::TextUnformatted(stage->name().c_str());
+    ImGui::SameLine(labelWidth + barWidth + 14);
+    ImGui::Text("%.1f ms", ms);
+  }
+  const double total = state.medianPipelineMs();
+  ImGui::Text("pipeline %.1f ms (%.1f runs/s)", total, total > 0 ? 1000.0 / total : 0.0);
+  ImGui::TextDisabled("median of the last %zu runs; glFinish timing", state.recentTimes.size());
+}
+
+// 3. Counters the stages reported this frame.
+void drawCounters(const UiState& state) {
+  if (!state.frame || state.frame->counters.empty()) {
+    ImGui::TextDisabled("No counters this frame.");
+    return;
+  }
+  for (const auto& [name, value] : state.frame->counters) ImGui::Text("%s  %.6g", name.c_str(), value);
+}
+
+// 4. The ray trace hook: the picked eye pixel, ray i of n x n.
+void drawRayTrace(UiState& state) {
+  state.overlays.clear();
+  if (!rayTraceSource()) {
+    ImGui::TextDisabled("No trace source installed (ui_trace_panel.h).");
+    return;
+  }
+  if (!state.pick || !state.frame ||
+      state.pickSpace != glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight)) {
+    ImGui::TextDisabled("Pick a pixel in an eye-sized view.");
+    return;
+  }
+  // The source may replay a whole ray on the CPU: once per run, pick and ray.
+  static RayTraceInfo trace;
+  static int cachedRuns = -1, cachedRay = -1;
+  static glm::ivec2 cachedPick{-1};
+  if (cachedRuns != state.pipelineRuns || cachedPick != *state.pick || cachedRay != state.selectedRay) {
+    trace = rayTraceSource()(*state.frame, *state.pick, state.selectedRay);
+    cachedRuns = state.pipelineRuns;
+    cachedPick = *state.pick;
+    cachedRay = state.selectedRay;
+  }
+  if (trace.raysPerPixel > 1) {
+    ImGui::SetNextItemWidth(-60);
+    ImGui::SliderInt("ray", &state.selectedRay, 0, trace.raysPerPixel - 1);
+  }
+  glm::ivec2 lightMap{0};
+  if (state.frame->has("light_layers.near"))
+    lightMap = {state.frame->input("light_layers.near").width(), state.frame->input("light_layers.near").height()};
+  if (ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels, zoomed
+    if (ViewPanel* target = state.selectionTarget(); target && state.selectOutput("nbuffer.levels").empty()) {
+      target->frameOverlays = true;
+      int finest = 1 << 30;  // the finest level the ray visited (linear samples: level 0)
+      for (const RayStepRecord& step : trace.steps)
+        if (step.level >= 0) finest = std::min(finest, step.level);
+      target->settings.layer = finest == 1 << 30 ? 0 : finest;
+    }
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Show nbuffer.levels in the active view, zoomed onto this ray's visited\n"
+                      "windows (hierarchical) or samples (linear).");
+  ImGui::SameLine();
+  ImGui::Checkbox("own window", &state.traceWindow);
+  if (!state.traceWindow) {
+    drawRayTracePanel(trace, lightMap, state.overlays);
+    return;
+  }
+  // A larger, movable window for the step table.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({display.x * 0.28f, display.y * 0.5f}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({display.x * 0.4f, display.y * 0.46f}, ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Ray trace of the picked pixel", &state.traceWindow)) {
+    ImGui::SetNextItemWidth(200);
+    ImGui::SliderInt("ray##window", &state.selectedRay, 0, std::max(trace.raysPerPixel - 1, 0));
+    drawRayTracePanel(trace, lightMap, state.overlays);
+  }
+  ImGui::End();
+}
+
+}  // namespace
+
+// 5. Sections, top to bottom.
+void drawInspector(UiState& state) {
+  if (ImGui::CollapsingHeader("Picked texel", ImGuiTreeNodeFlags_DefaultOpen)) drawPick(state);
+  for (int v = 0; v < (state.twoViews ? 2 : 1); ++v) {
+    const ViewPanel& view = state.views[v];
+    const GlTexture* texture = state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+    if (texture && view.settings.colormap == Colormap::Categorical &&
+        singleChannel(view.settings, texture->channelCount()) >= 0 &&
+        ImGui::CollapsingHeader(v == 0 ? "Categories (view A)" : "Categories (view B)",
+                                ImGuiTreeNodeFlags_DefaultOpen))
+      drawCategoryLegend(state, view);
+  }
+  if (ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen)) drawRayTrace(state);
+  else state.overlays.clear();
+  if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) drawTimings(state);
+  if (ImGui::CollapsingHeader("Counters", ImGuiTreeNodeFlags_DefaultOpen)) drawCounters(state);
+}

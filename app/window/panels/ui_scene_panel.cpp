@@ -1,0 +1,137 @@
+#include "window/panels/ui_scene_panel.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <cstdio>
+
+#include "scene/scene_builtin.h"
+#include "window/ui_camera.h"
+#include "window/panels/ui_export.h"
+#include "window/script/ui_settings.h"
+#include "window/ui_state.h"
+#include "window/ui_widgets.h"
+
+namespace {
+
+// 1. Scene: built-ins in a combo, or a typed path to a scene JSON / glTF.
+void drawScenePicker(UiState& state) {
+  static std::string path;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  if (ImGui::BeginCombo("scene", state.scene.name.c_str())) {
+    for (const std::string& name : builtinSceneNames())
+      if (ImGui::Selectable(name.c_str(), name == state.sceneSource))
+        if (std::string problem = state.loadScene(name); !problem.empty()) state.status = problem;
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu tris", state.scene.triangleCount());
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 50);
+  const bool entered = ImGui::InputTextWithHint("##scenepath", ".json / .gltf / .glb path", &path,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Load") || entered) && !path.empty())
+    if (std::string problem = state.loadScene(path); !problem.empty()) state.status = problem;
+}
+
+// 2. Eye image size: follow the view, or a fixed size (the performance target is 640x480).
+void drawEyeSize(UiState& state) {
+  static const int sizes[][2] = {{320, 240}, {640, 480}, {512, 512}, {1024, 768}, {1280, 720}};
+  char current[32];
+  std::snprintf(current, sizeof current, "%dx%d", state.eye.width, state.eye.height);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  if (ImGui::BeginCombo("eye size", state.eye.fitView ? "fit view" : current)) {
+    if (ImGui::Selectable("fit view", state.eye.fitView)) state.eye.fitView = true;
+    for (const auto& size : sizes) {
+      std::snprintf(current, sizeof current, "%dx%d", size[0], size[1]);
+      if (ImGui::Selectable(current, !state.eye.fitView && state.eye.width == size[0] &&
+                                         state.eye.height == size[1]))
+        state.eye = {false, size[0], size[1]};
+    }
+    ImGui::EndCombo();
+  }
+  helpMarker("The eye image (G-buffer and everything per pixel). 'fit view': one texel per "
+             "screen pixel of view A.");
+}
+
+// 3. Camera and light: numbers and sliders (the mouse in a view orbits the camera too).
+void drawCameraAndLight(UiState& state) {
+  Camera& camera = state.scene.camera;
+  AreaLight& light = state.scene.light;
+  bool changed = false;
+  changed |= ImGui::DragFloat3("eye", &camera.position.x, 0.02f, 0, 0, "%.2f");
+  changed |= ImGui::DragFloat3("target", &camera.target.x, 0.02f, 0, 0, "%.2f");
+  changed |= ImGui::SliderFloat("fov y", &camera.fovYDegrees, 10, 120, "%.0f deg");
+  changed |= ImGui::DragFloat3("light", &light.center.x, 0.02f, 0, 0, "%.2f");
+  helpMarker("Centre of the rectangular area light (world units). In a scene view (any "
+             "eye-sized output): Alt+drag moves the light over the ground, Alt+Shift+drag "
+             "raises / lowers it, Alt+right drag turns it, Alt+wheel scales it (Shift: width, "
+             "Ctrl: height). Zoom the view out (wheel) to see a light above the picture.");
+  float yaw = 0, pitch = 0;
+  lightAngles(light, yaw, pitch);
+  bool turned = ImGui::SliderFloat("light yaw", &yaw, -180, 180, "%.0f deg");
+  turned |= ImGui::SliderFloat("light pitch", &pitch, -90, 0, "%.0f deg");
+  helpMarker("Direction the light faces; pitch -90 points straight down.");
+  if (turned) setLightAngles(light, yaw, pitch);
+  changed |= turned;
+  changed |= ImGui::SliderFloat("light width", &light.width, 0.02f, 6, "%.2f", ImGuiSliderFlags_Logarithmic);
+  changed |= ImGui::SliderFloat("light height", &light.height, 0.02f, 6, "%.2f", ImGuiSliderFlags_Logarithmic);
+  helpMarker("Light size: the penumbra widens with it (thesis §3.1). Ctrl+click to type; "
+             "Alt+wheel over a scene view scales it (Shift: width only, Ctrl: height only).");
+  light.width = std::max(light.width, 1e-3f);
+  light.height = std::max(light.height, 1e-3f);
+  if (validateScene(state.scene).empty() && changed) state.dirty = true;
+  if (ImGui::Button("Reset camera")) {
+    camera = state.initialCamera;
+    state.dirty = true;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Reset light")) {
+    light = state.initialLight;
+    state.dirty = true;
+  }
+  ImGui::SameLine();
+  ImGui::Checkbox("outline", &state.showLight);
+  helpMarker("Draw the light rectangle (yellow), its centre and its axis down to the ground "
+             "over the scene views; hold Alt over a view to drag it.");
+}
+
+// 4. Files and tools: settings, shaders, export all, how the pipeline re-runs.
+void drawTools(UiState& state) {
+  static std::string settingsPath = "penumbra_settings.json", exportDirectory;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100);
+  ImGui::InputText("##settings", &settingsPath);
+  ImGui::SameLine();
+  if (ImGui::Button("Save")) state.status = saveSettingsFile(state, settingsPath);
+  ImGui::SameLine();
+  if (ImGui::Button("Load##settings")) {
+    bool ok = false;
+    state.status = loadSettingsFile(state, settingsPath, ok);
+  }
+  helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
+             "Open one at start with `penumbra --config FILE`.");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100);
+  ImGui::InputTextWithHint("##exportdir", kDefaultExportDirectory, &exportDirectory);
+  ImGui::SameLine();
+  if (ImGui::Button("Export all")) state.status = exportAllStages(state, exportDirectory);
+  helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
+             "`penumbra export` with these settings.");
+  if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();
+  ImGui::SameLine();
+  ImGui::Checkbox("every frame", &state.runEveryFrame);
+  helpMarker("Re-run the pipeline every frame (for timing). Off: only when something changes.");
+}
+
+}  // namespace
+
+// 5. Sections.
+void drawScenePanel(UiState& state) {
+  if (!ImGui::CollapsingHeader("Scene, camera, light", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
+  drawScenePicker(state);
+  drawEyeSize(state);
+  drawCameraAndLight(state);
+  ImGui::PopItemWidth();
+  drawTools(state);
+  ImGui::Separator();
+}

@@ -1,0 +1,86 @@
+// `penumbra --script FILE`: a JSON list of UI actions run in order, then the window exits
+// (for tests, reports and lesson figures). Each action is an object with one key:
+//
+//   {"select_stage": "hard_shadow"}          {"select_output": "light_layers.near"}
+//   {"set": {"hard_shadow.bias": 0.01}}      {"pick": [x, y]}   (active view; row 0 at top)
+//   {"select_ray": 3}                        {"wait": 2}        (frames)
+//   {"export_view": "dir" | "f.png" | "f.exr"}   {"export_all": "dir"}
+//   {"screenshot": "f.png"}                  {"view": 0 | 1}    (active view; 1 opens B)
+//   {"two_views": true}   {"lock": true}     {"eye_size": [640, 480] | "fit"}
+//   {"scene": "plate"}    {"colormap": "perceptual"}   {"channels": "G"}   {"level": 2}
+//   {"range": [0, 1] | "autofit" | "reset"}  {"overlay": true}   {"zoom": 4 | "fit" | "1:1"}
+//   {"camera_orbit": [yaw, pitch] (degrees)} {"camera_dolly": 0.8}
+//   {"settings": {...settings JSON...}}      {"load_settings": "f.json"}
+//   {"save_settings": "f.json"}              {"reload_shaders": true}   {"help": true}
+//   {"run_every_frame": true}                {"print_timing": "label"}  (stdout)
+//   {"print_pick": "label"}  (stdout: the pick's values in every output of its size, and
+//                             the number of steps the ray trace panel shows)
+//   {"camera_moving": true}  (as while dragging the camera: the preview resolution)
+//   {"trace_window": true}   (the ray trace panel in its own large window)
+//   {"mouse": [x, y]}        (moves the mouse there, window pixels: hover readouts)
+// Input as a user gives it (app/window/script/ui_script_more.cpp), coordinates in image coordinates of the
+// active view (row 0 at the top; may lie outside the image), over several frames:
+//   {"drag": {"from": [x, y], "to": [x, y], "button": "left" | "right" | "middle",
+//             "keys": "alt" | "alt+shift" | ..., "frames": 6}}
+//   {"wheel": {"at": [x, y], "amount": 2, "keys": "alt"}}
+// Views: {"difference": "light_layers.near" | ""} (active view shows output - that),
+//   {"thickness": true} (light_layers.far - near, negative -> 0), {"clip_negative": true},
+//   {"show_light": false} (the light outline over scene views)
+//   {"show_ray": true} (nbuffer.levels in the active view, zoomed onto the picked ray's shapes)
+// Lessons (DESIGN.md §1 `penumbra lesson`): a lesson is a script with texts for the student:
+//   {"lesson": "title"}  {"say": "text shown in the lesson panel and printed to stdout"}
+//   {"export_dir": "dir"} (relative export_view / export_all / screenshot paths go there;
+//                          `--export DIR` overrides it)
+// Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
+// waits for the student's "Next" (button, Space or N), and the window stays open at the end.
+//
+// The whole file is checked before the window opens (names, argument types); actions that
+// fail while running (an unknown output, a value out of range) stop the script. Either way
+// the message names the action and what is valid, and penumbra exits with status 2.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+class UiState;
+
+struct ScriptAction {
+  size_t index;  // 1-based position in the file, for messages
+  std::string name;
+  nlohmann::json argument;
+};
+
+// 1. Reads and checks a script file; "" or the message.
+std::string parseScriptFile(const std::string& path, std::vector<ScriptAction>& actions);
+std::string parseScriptJson(const nlohmann::json& root, std::vector<ScriptAction>& actions);
+
+struct ScriptOptions {
+  bool interactive = false;    // a lesson played by a student: wait for "Next" at each "say"
+  std::string exportOverride;  // --export DIR: replaces the script's "export_dir"
+};
+
+// 2. Runs actions frame by frame.
+class ScriptRunner {
+public:
+  enum class Step { Running, Done, Failed };
+  explicit ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions options = {});
+  // Runs actions until one needs frames to pass (wait, screenshot) or the list ends.
+  Step step(UiState& state);
+  const std::string& error() const { return error_; }
+
+private:
+  std::string run(UiState& state, const ScriptAction& action);  // "" or the problem
+  // Input, views, lessons (app/window/script/ui_script_more.cpp); "" or the problem.
+  std::string runMore(UiState& state, const ScriptAction& action);
+  // A relative export / screenshot path inside the export directory, if there is one.
+  std::string resolved(const std::string& path) const;
+  bool waitForNext(UiState& state);  // interactive lessons: true while the student reads
+  std::vector<ScriptAction> actions_;
+  ScriptOptions options_;
+  std::string exportDirectory_;
+  int says_ = 0, saysSeen_ = 0;
+  size_t next_ = 0;
+  int waitFrames_ = 0;
+  std::string pendingScreenshot_;  // taken one frame later: new windows size themselves first
+  std::string error_;
+};

@@ -1,0 +1,76 @@
+#include "window/ui_help.h"
+
+#include <imgui.h>
+
+#include "window/ui_state.h"
+
+const Shortcut* shortcuts(int& count) {
+  static const Shortcut list[] = {
+      {"F1 or ?", "show / hide this help"},
+      {"F5", "reload shaders (a failed compile keeps the last good one)"},
+      {"Tab", "switch the active view (A / B)"},
+      {"V", "show / hide the second view"},
+      {"F", "fit the active view"},
+      {"1", "one texel per screen pixel"},
+      {"A", "autofit black / white to the visible texels"},
+      {"R", "reset the view to the stage's declared display"},
+      {"Arrow keys", "move the pick by one texel (Shift: 10)"},
+      {"Ctrl+S", "save settings (penumbra_settings.json)"},
+      {"Ctrl+E", "export all stages"},
+      {"F12", "save a screenshot of the window"},
+      {"Esc", "quit"},
+      {"Wheel", "zoom the view about the cursor"},
+      {"Left drag / click", "pan the view / pick a texel"},
+      {"Right drag", "orbit the camera (the pipeline re-runs)"},
+      {"Middle or Shift+right drag", "pan the camera"},
+      {"Ctrl+wheel", "move the camera closer / farther"},
+      {"Ctrl+click an output", "show it in the other view"},
+      {"Alt+drag (scene view)", "move the light over the ground (outline: yellow)"},
+      {"Alt+Shift+drag", "raise / lower the light"},
+      {"Alt+right drag", "turn the light (yaw, pitch)"},
+      {"Alt+wheel", "scale the light (Shift: width only, Ctrl: height only)"},
+      {"Space / N (lesson)", "next step of a lesson (penumbra lesson FILE)"},
+  };
+  count = int(sizeof list / sizeof list[0]);
+  return list;
+}
+
+void drawHelpWindow(UiState& state) {
+  if (!state.showHelp) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Appearing, {0.5f, 0.5f});
+  ImGui::SetNextWindowSize({640, 0}, ImGuiCond_Appearing);
+  if (ImGui::Begin("Help", &state.showHelp, ImGuiWindowFlags_NoCollapse)) {
+    ImGui::TextWrapped("penumbra shows every stage of Curtis & Olano's Monte Carlo soft shadows. "
+                       "Click an output on the left to view it; parameters re-run the pipeline.");
+    if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+      int count = 0;
+      const Shortcut* list = shortcuts(count);
+      for (int i = 0; i < count; ++i) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "%s", list[i].keys);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(list[i].action);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::TextDisabled("Coordinates are image coordinates: (0, 0) is the top-left texel, as in "
+                        "the PNGs and `penumbra trace --pixel X,Y`.");
+  }
+  ImGui::End();
+}
+
+void drawShaderLogWindow(UiState& state) {
+  if (!state.showShaderLog) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.3f}, ImGuiCond_Appearing, {0.5f, 0.0f});
+  ImGui::SetNextWindowSize({display.x * 0.6f, display.y * 0.4f}, ImGuiCond_Appearing);
+  if (ImGui::Begin("Shader log", &state.showShaderLog)) {
+    ImGui::TextColored({1, 0.5f, 0.4f, 1}, "Hot reload failed; the last good programs are in use.");
+    if (ImGui::Button("Retry (F5)")) state.reloadShaders();
+    ImGui::Separator();
+    ImGui::TextUnformatted(state.shaderLog.c_str());
+  }
+  ImGui::End();
+}

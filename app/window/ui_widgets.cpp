@@ -1,0 +1,83 @@
+#include "window/ui_widgets.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+// 1. The (?) marker.
+void helpMarker(const std::string& text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+// 2. One widget per parameter type; Ctrl+click on a slider types a value.
+bool drawParam(Param& param) {
+  bool changed = false;
+  const char* label = param.key.c_str();
+  switch (param.type) {
+    case Param::Type::Bool: {
+      bool value = param.asBool();
+      if ((changed = ImGui::Checkbox(label, &value))) param.value = value;
+      break;
+    }
+    case Param::Type::Int: {
+      int value = param.asInt();
+      if ((changed = ImGui::SliderInt(label, &value, int(param.min), int(param.max))))
+        param.value = std::clamp(value, int(param.min), int(param.max));
+      break;
+    }
+    case Param::Type::Float: {
+      float value = param.asFloat();
+      const bool wide = param.min > 0 && param.max / param.min >= 100;
+      if ((changed = ImGui::SliderFloat(label, &value, float(param.min), float(param.max), "%.4g",
+                                        wide ? ImGuiSliderFlags_Logarithmic : 0)))
+        param.value = std::clamp(double(value), param.min, param.max);
+      break;
+    }
+    case Param::Type::Enum: {
+      const int value = param.asInt();
+      if (ImGui::BeginCombo(label, param.asEnum().c_str())) {
+        for (size_t i = 0; i < param.options.size(); ++i)
+          if (ImGui::Selectable(param.options[i].c_str(), value == int(i))) {
+            param.value = double(i);
+            changed = true;
+          }
+        ImGui::EndCombo();
+      }
+      break;
+    }
+  }
+  helpMarker(param.doc + "\nRange: " + param.rangeText() + "\nCtrl+click a slider to type.");
+  return changed;
+}
+
+// 3. Names of the formats stages declare.
+const char* formatName(GLenum format) {
+  switch (format) {
+    case GL_RGBA32F: return "RGBA32F";
+    case GL_RGBA16F: return "RGBA16F";
+    case GL_RG32F: return "RG32F";
+    case GL_R32F: return "R32F";
+    case GL_RGBA8: return "RGBA8";
+    case GL_R32UI: return "R32UI";
+    case GL_RG32UI: return "RG32UI";
+    case GL_RGBA32UI: return "RGBA32UI";
+    case GL_R8UI: return "R8UI";
+    case GL_DEPTH_COMPONENT32F: return "DEPTH32F";
+    default: return "?";
+  }
+}
+
+// 4. Toolbar wrapping.
+void sameLineIfFits(float width) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  ImGui::SameLine();
+  if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+}

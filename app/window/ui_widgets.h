@@ -1,0 +1,18 @@
+// Small ImGui helpers shared by the panels: the (?) marker, a parameter drawn from its
+// declaration, texture format names, and toolbar wrapping.
+#pragma once
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include "core/param.h"
+
+// 1. "(?)" after the last item; hovering shows `text`.
+void helpMarker(const std::string& text);
+// 2. Draws `param` from its declaration (checkbox, slider, combo) with a (?) marker giving
+//    its doc and range; returns true when the user changed it.
+bool drawParam(Param& param);
+// 3. "RGBA32F", "R32UI", "DEPTH32F", ...
+const char* formatName(GLenum format);
+// 4. Continues the current line if an item `width` wide still fits, else starts a new one.
+void sameLineIfFits(float width);

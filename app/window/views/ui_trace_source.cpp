@@ -1,0 +1,104 @@
+#include "window/views/ui_trace_source.h"
+
+#include <cstdio>
+
+#include "cli/trace_command.h"
+#include "window/ui_state.h"
+#include "window/panels/ui_trace_panel.h"
+
+namespace {
+
+bool hasParameter(const Pipeline& pipeline, const std::string& key) {
+  for (const std::string& each : pipeline.paramKeys())
+    if (each == key) return true;
+  return false;
+}
+
+// 1. One gpu::TraceStep -> the panel's record (windows and points are GL texels already).
+RayStepRecord convert(const gpu::TraceStep& step) {
+  RayStepRecord record;
+  record.level = step.header.y;
+  record.windowLo = {step.window.x, step.window.y};
+  record.windowHi = {step.window.z, step.window.w};
+  record.zNearMin = step.depths.x;
+  record.zFarMax = step.depths.y;
+  record.rayDepthEnter = step.depths.z;
+  record.rayDepthExit = step.depths.w;
+  record.texelPoint = step.window.x >= 0 ? glm::vec2(step.stepping.z, step.stepping.w) : glm::vec2(-1);
+  record.decision = stepDecisionName(step.header.z);
+  record.stepping = step.stepping.y;
+  // Linear search records each sample as a one-texel window without a level (search_linear.glsl).
+  record.refinement = step.header.z == STEP_REFINE;
+  record.point = step.header.y < 0 && step.window.x >= 0 &&
+                 (step.header.z == STEP_SAMPLE || step.header.z == STEP_REFINE || step.header.z == STEP_HIT);
+  return record;
+}
+
+// 1b. A point sample's band: the near and far layers at its texel (one read-back per layer
+//     over the rectangle the samples cover, not one per sample).
+void addLayerBands(const Frame& frame, std::vector<RayStepRecord>& steps) {
+  if (!frame.has("light_layers.near") || !frame.has("light_layers.far")) return;
+  glm::ivec2 lo{1 << 30}, hi{-1};
+  for (const RayStepRecord& s : steps)
+    if (s.point) {
+      lo = glm::min(lo, s.windowLo);
+      hi = glm::max(hi, s.windowLo);
+    }
+  if (hi.x < 0) return;
+  const GlTexture& near = frame.input("light_layers.near");
+  const GlTexture& far = frame.input("light_layers.far");
+  lo = glm::clamp(lo, glm::ivec2(0), glm::ivec2(near.width() - 1, near.height() - 1));
+  hi = glm::clamp(hi, lo, glm::ivec2(near.width() - 1, near.height() - 1));
+  const glm::ivec2 size = hi - lo + 1;
+  const std::vector<float> nearValues = readRegion(near, lo.x, lo.y, size.x, size.y);
+  const std::vector<float> farValues = readRegion(far, lo.x, lo.y, size.x, size.y);
+  for (RayStepRecord& s : steps) {
+    if (!s.point) continue;
+    const glm::ivec2 at = glm::clamp(s.windowLo, lo, hi) - lo;
+    const size_t index = size_t(at.y) * size_t(size.x) + size_t(at.x);
+    if (index >= nearValues.size() || index >= farValues.size()) continue;
+    s.zNearMin = nearValues[index];
+    s.zFarMax = farValues[index];
+  }
+}
+
+// 2. The steps of ray `ray` of the recorded pixel, if the recorded pixel is `pixel`.
+RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
+  RayTraceInfo info;
+  if (!hasParameter(frame.pipeline, "trace.record_x")) return info;
+  const int n = frame.pipeline.param("trace.rays").asInt();
+  info.raysPerPixel = n * n;
+  const int recordX = frame.pipeline.param("trace.record_x").asInt();
+  const int recordY = frame.pipeline.param("trace.record_y").asInt();
+  if (recordX != pixel.x || recordY != frame.eyeHeight - 1 - pixel.y) {
+    info.result = "recording this pixel on the next run";
+    return info;
+  }
+  for (const gpu::TraceStep& step : frame.traceSteps)
+    if (step.header.x == ray) info.steps.push_back(convert(step));
+  addLayerBands(frame, info.steps);
+  if (frame.has("trace.visibility")) {
+    char text[96];
+    std::snprintf(text, sizeof text, "ray %d of %d; pixel visibility %.4g", ray, n * n,
+                  double(readTexel(frame.input("trace.visibility"), pixel.x, pixel.y)[0]));
+    info.result = text;
+  }
+  return info;
+}
+
+}  // namespace
+
+void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
+
+// 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top).
+void recordPickedPixel(UiState& state) {
+  if (!state.pick || !state.frame || !hasParameter(state.pipeline, "trace.record_x")) return;
+  if (state.pickSpace != glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight)) return;
+  const glm::ivec2 image{state.pick->x, state.pickSpace.y - 1 - state.pick->y};
+  Param& x = state.pipeline.param("trace.record_x");
+  Param& y = state.pipeline.param("trace.record_y");
+  if (x.asInt() == image.x && y.asInt() == image.y) return;
+  x.value = image.x;
+  y.value = image.y;
+  state.dirty = true;
+}

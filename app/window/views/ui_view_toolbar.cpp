@@ -1,0 +1,175 @@
+#include "window/views/ui_view_toolbar.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "window/panels/ui_export.h"
+#include "window/views/ui_view_difference.h"
+#include "window/ui_state.h"
+#include "window/ui_widgets.h"
+
+// 1. Autofit reads back only the visible rectangle.
+void autofitView(ViewPanel& view, const GlTexture& texture) {
+  glm::ivec2 lo{0, 0}, hi{texture.width(), texture.height()};  // about to fit: everything
+  if (!view.fitPending)
+    view.transform.visibleTexels(view.regionSize, {texture.width(), texture.height()}, lo, hi);
+  const std::vector<float> values =
+      readRegion(texture, lo.x, lo.y, hi.x - lo.x, hi.y - lo.y, view.settings.layer);
+  float low = 0, high = 1;
+  if (!finiteRange(values, texture.channelCount(), view.settings, low, high)) return;
+  if (view.settings.colormap == Colormap::Diverging) {  // signed data: white stays at 0
+    high = std::max(std::abs(low), std::abs(high));
+    low = -high;
+  }
+  if (high - low < 1e-12f * std::max(1.0f, std::abs(low))) {  // constant: centre it
+    low -= 0.5f;
+    high += 0.5f;
+  }
+  view.settings.black = low;
+  view.settings.white = high;
+}
+
+void resetView(UiState& state, ViewPanel& view, const GlTexture& texture) {
+  const Output* output = state.outputOf(view.output);
+  if (!output) return;
+  const int layer = view.settings.layer;
+  view.settings = defaultViewSettings(*output, texture.channelCount());
+  view.settings.layer = layer;
+}
+
+namespace {
+
+// 2a. "minus": the difference view (app/window/views/ui_view_difference.h), with the thickness preset.
+void drawDifferenceControls(UiState& state, ViewPanel& view) {
+  sameLineIfFits(170);
+  ImGui::SetNextItemWidth(130);
+  const std::string current = view.minus.empty() ? "- (nothing)" : "- " + view.minus;
+  if (ImGui::BeginCombo("##minus", current.c_str())) {
+    if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
+      setViewDifference(state, view, "");
+    if (state.outputOf("light_layers.far") && ImGui::Selectable("thickness: far - near"))
+      state.status = showThickness(state);
+    const GlTexture* a = state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+    for (const std::string& key : state.outputKeys()) {
+      if (key == view.output || !a || !state.frame->has(key)) continue;
+      const GlTexture& b = state.frame->input(key);
+      if (b.width() != a->width() || b.height() != a->height()) continue;
+      if (ImGui::Selectable(("- " + key).c_str(), key == view.minus))
+        state.status = setViewDifference(state, view, key);
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Difference view: this output minus another of the same size, in the\n"
+                      "diverging colormap (red: this one is larger). 'thickness': far - near\n"
+                      "light layer, the occluders' extent along the light (thesis §3.3).");
+  if (view.minus.empty()) return;
+  ImGui::SameLine();
+  ImGui::Checkbox("neg->0", &view.clipNegative);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Show negative differences as 0. For far - near these are exactly the\n"
+                      "texels no occluder covers (far cleared to 0, near to 1).");
+}
+
+// 2. Line 1: what is shown (output, lock, channels, colormap, level).
+void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
+  ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - 170, 120.0f, 210.0f));
+  if (ImGui::BeginCombo("##output", view.output.c_str())) {
+    for (const std::string& key : state.outputKeys())
+      if (ImGui::Selectable(key.c_str(), key == view.output)) {
+        view.output = key;
+        view.fitPending = true;
+        setViewDifference(state, view, "");
+      }
+    ImGui::EndCombo();
+  }
+  sameLineIfFits(60);
+  ImGui::Checkbox("lock", &view.locked);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A locked view keeps its output when stages are selected on the left.");
+  drawDifferenceControls(state, view);
+  if (!texture) return;
+  // Channel toggles as small buttons, lit when on.
+  const char* names[4] = {"R", "G", "B", "A"};
+  const ImVec4 lit[4] = {{0.75f, 0.2f, 0.2f, 1}, {0.2f, 0.6f, 0.25f, 1}, {0.25f, 0.35f, 0.8f, 1},
+                         {0.55f, 0.55f, 0.55f, 1}};
+  for (int c = 0; c < std::min(texture->channelCount(), 4); ++c) {
+    if (c == 0) sameLineIfFits(26.0f * float(std::min(texture->channelCount(), 4)));
+    else ImGui::SameLine(0, 2);
+    const bool on = view.settings.channels[size_t(c)];
+    ImGui::PushStyleColor(ImGuiCol_Button, on ? lit[c] : ImVec4(0.2f, 0.2f, 0.22f, 1));
+    if (ImGui::Button(names[c], {22, 0})) view.settings.channels[size_t(c)] = !on;
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Channel %s on/off. One channel alone: shown through the colormap.", names[c]);
+  }
+  const bool single = singleChannel(view.settings, texture->channelCount()) >= 0;
+  sameLineIfFits(100);
+  ImGui::SetNextItemWidth(100);
+  ImGui::BeginDisabled(!single);
+  int map = int(view.settings.colormap);
+  const auto maps = colormapNames();
+  if (ImGui::BeginCombo("##colormap", maps[size_t(map)].c_str())) {
+    for (int m = 0; m < int(maps.size()); ++m)
+      if (ImGui::Selectable(maps[size_t(m)].c_str(), m == map)) view.settings.colormap = Colormap(m);
+    ImGui::EndCombo();
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Colormap for a single channel (colour shows each channel in gray).");
+  const GlTexture& source = state.frame->input(view.output);  // a difference view is 2D
+  if (source.isArray()) {
+    sameLineIfFits(170);
+    ImGui::SetNextItemWidth(110);
+    ImGui::SliderInt("level", &view.settings.layer, 0, source.layers() - 1);
+    helpMarker("Array layer: for the N-buffer, level n holds min/max over 2^n x 2^n texels.");
+  }
+}
+
+// 3. Line 2: the value range, overlay, zoom, exports.
+void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture) {
+  ViewSettings& s = view.settings;
+  const float speed = std::max(1e-6f, std::abs(s.white - s.black) * 0.005f);
+  ImGui::SetNextItemWidth(80);
+  ImGui::DragFloat("##black", &s.black, speed, 0, 0, "%.4g");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Black point: drag, or double-click to type.");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  ImGui::DragFloat("##white", &s.white, speed, 0, 0, "%.4g");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("White point: drag, or double-click to type.");
+  sameLineIfFits(60);
+  if (ImGui::Button("Autofit")) autofitView(view, texture);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Black/white = min/max of the visible texels (A)");
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) resetView(state, view, texture);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The stage's declared range and colormap (R)");
+  sameLineIfFits(60);
+  ImGui::Checkbox("NaN", &s.overlay);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Overlay: NaN magenta, Inf green, negative blue (shown channels).");
+  sameLineIfFits(140);
+  if (ImGui::Button("Fit")) view.fitPending = true;
+  ImGui::SameLine();
+  if (ImGui::Button("1:1")) {
+    view.transform.oneToOne();
+    view.fitted = false;
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("%.0f%%", view.transform.zoom * 100);
+  sameLineIfFits(90);
+  if (ImGui::Button("PNG")) state.status = exportViewFiles(state, view, "", ExportKind::Png);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Export this view as displayed (PNG)");
+  ImGui::SameLine();
+  if (ImGui::Button("EXR")) state.status = exportViewFiles(state, view, "", ExportKind::Exr);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Export this view's raw values (EXR)");
+}
+
+}  // namespace
+
+// 4. Both lines; the second only once the output has a texture.
+void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture) {
+  drawSourceControls(state, view, texture);
+  if (texture) drawRangeControls(state, view, *texture);
+}

@@ -1,0 +1,340 @@
+#include "window/window_app.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "gl/gl_context.h"
+#include "io/image_export.h"
+#include "scene/scene_builtin.h"
+#include "window/panels/ui_export.h"
+#include "window/ui_help.h"
+#include "window/panels/ui_inspector.h"
+#include "window/script/ui_lesson.h"
+#include "window/panels/ui_pipeline_panel.h"
+#include "window/panels/ui_scene_panel.h"
+#include "window/script/ui_script.h"
+#include "window/watchdog.h"
+#include "window/script/ui_settings.h"
+#include "window/panels/ui_speed_error.h"
+#include "window/ui_state.h"
+#include "window/views/ui_texture_view.h"
+#include "window/views/ui_trace_source.h"
+#include "window/views/ui_view_toolbar.h"
+
+namespace {
+
+constexpr ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+    ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+// 1. Fixed layout: panels scale with the window, within limits.
+struct Layout {
+  float width, height, left, right, status;
+  float centerWidth() const { return width - left - right; }
+  float panelHeight() const { return height - status; }
+};
+
+Layout layoutFor(float width, float height) {
+  return {width, height, std::clamp(width * 0.27f, 220.0f, 360.0f),
+          std::clamp(width * 0.23f, 200.0f, 330.0f), ImGui::GetFrameHeight() + 6};
+}
+
+void saveScreenshot(GLFWwindow* window, const std::string& path) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window, &width, &height);
+  std::vector<std::uint8_t> rgb(size_t(width) * height * 3), flipped(rgb.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+  const size_t row = size_t(width) * 3;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&rgb[size_t(height - 1 - y) * row], row, &flipped[size_t(y) * row]);
+  writePng(path, flipped, width, height);
+}
+
+// 2. Keyboard shortcuts (listed by ui_help.cpp); none while a text field has the keyboard.
+void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  bool question = false;
+  for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
+  if (ImGui::IsKeyPressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F5)) state.reloadShaders();
+  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  if (ImGui::IsKeyPressed(GLFW_KEY_F12))
+    state.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
+  if (io.KeyCtrl) {
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false))
+      state.status = saveSettingsFile(state, "penumbra_settings.json");
+    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.status = exportAllStages(state, "");
+    return;
+  }
+  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false) && state.twoViews) state.activeView = 1 - state.activeView;
+  if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) {
+    state.twoViews = !state.twoViews;
+    if (!state.twoViews) state.activeView = 0;
+  }
+  ViewPanel& view = state.views[state.activeView];
+  const GlTexture* texture = shownTexture(state, view);
+  if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) view.fitPending = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) {
+    view.transform.oneToOne();
+    view.fitted = false;
+  }
+  if (ImGui::IsKeyPressed(GLFW_KEY_A, false) && texture) autofitView(view, *texture);
+  if (ImGui::IsKeyPressed(GLFW_KEY_R, false) && texture) resetView(state, view, *texture);
+  const int step = io.KeyShift ? 10 : 1;
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) state.movePick({-step, 0});
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) state.movePick({step, 0});
+  if (ImGui::IsKeyPressed(GLFW_KEY_UP)) state.movePick({0, step});  // GL: y grows upwards
+  if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) state.movePick({0, -step});
+}
+
+// 3. The status line: what happened last, and how fast things are.
+void drawStatusLine(const UiState& state, const Layout& layout) {
+  ImGui::SetNextWindowPos({0, layout.panelHeight()});
+  ImGui::SetNextWindowSize({layout.width, layout.status});
+  ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoScrollbar);
+  char speed[200];
+  const double pipelineMs = state.medianPipelineMs();
+  std::snprintf(speed, sizeof speed, "eye %dx%d | pipeline %.1f ms (%.1f/s) | UI %.0f fps | %s%s",
+                state.frame ? state.frame->eyeWidth : 0, state.frame ? state.frame->eyeHeight : 0,
+                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.framesPerSecond(),
+                state.runEveryFrame ? "runs every frame" : "runs on change",
+                state.previewing && state.previewDivisor > 1
+                    ? (" | PREVIEW at 1/" + std::to_string(state.previewDivisor) +
+                       " resolution while the camera moves").c_str()
+                    : "");
+  const float speedWidth = ImGui::CalcTextSize(speed).x;
+  ImGui::PushClipRect(ImGui::GetCursorScreenPos(),
+                      {layout.width - speedWidth - 20, layout.height}, true);
+  ImGui::TextUnformatted(state.status.empty() ? "F1: help" : state.status.c_str());
+  ImGui::PopClipRect();
+  ImGui::SameLine(layout.width - speedWidth - 10);
+  ImGui::TextUnformatted(speed);
+  ImGui::End();
+}
+
+// 4. One UI frame: left, centre, right, status line, floating windows.
+bool drawUi(UiState& state, const Layout& layout) {
+  ImGui::SetNextWindowPos({0, 0});
+  ImGui::SetNextWindowSize({layout.left, layout.panelHeight()});
+  ImGui::Begin("Pipeline (thesis Algorithm 1)", nullptr, kPanelFlags);
+  drawScenePanel(state);
+  drawPipelinePanel(state);
+  ImGui::End();
+
+  ImGui::SetNextWindowPos({layout.left, 0});
+  ImGui::SetNextWindowSize({layout.centerWidth(), layout.panelHeight()});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {4, 4});
+  ImGui::Begin("##views", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
+                                       ImGuiWindowFlags_NoScrollbar);
+  ImGui::PopStyleVar();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  bool movingCamera = false;
+  if (state.twoViews) {
+    const float half = (avail.x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+    movingCamera |= drawTextureView(state, 0, {half, avail.y});
+    ImGui::SameLine();
+    movingCamera |= drawTextureView(state, 1, {half, avail.y});
+  } else {
+    movingCamera |= drawTextureView(state, 0, avail);
+  }
+  ImGui::End();
+
+  ImGui::SetNextWindowPos({layout.width - layout.right, 0});
+  ImGui::SetNextWindowSize({layout.right, layout.panelHeight()});
+  ImGui::Begin("Inspector", nullptr, kPanelFlags);
+  drawInspector(state);
+  ImGui::End();
+
+  drawStatusLine(state, layout);
+  drawLessonWindow(state, layout.left + 0.5f * layout.centerWidth(), layout.centerWidth() - 24,
+                   layout.panelHeight());
+  drawSpeedErrorPanel(state, layout.left + 8, std::max(30.0f, layout.panelHeight() - 400),
+                      std::min(layout.centerWidth() - 16, 520.0f));
+  drawHelpWindow(state);
+  drawShaderLogWindow(state);
+  return movingCamera;
+}
+
+// A script's drag or wheel: this frame's mouse and modifiers, over what the backend read.
+void applySyntheticInput(UiState& state) {
+  if (state.syntheticInput.empty()) return;
+  const SyntheticInput input = state.syntheticInput.front();
+  state.syntheticInput.pop_front();
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = {input.mouse.x, input.mouse.y};
+  for (int b = 0; b < 3; ++b) io.MouseDown[b] = input.buttons[size_t(b)];
+  io.KeyAlt = input.alt;
+  io.KeyShift = input.shift;
+  io.KeyCtrl = input.ctrl;
+  io.MouseWheel = input.wheel;
+}
+
+// 5. What can be checked before a window opens: scene, --set, script.
+int checkOptions(const WindowOptions& options, Scene& scene, std::vector<ScriptAction>& script) {
+  std::vector<std::string> warnings;
+  try {
+    scene = loadScene(options.scene, warnings);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "penumbra: %s\n", error.what());
+    return 2;
+  }
+  Pipeline check;
+  for (const std::string& assignment : options.sets)
+    if (std::string problem = check.set(assignment); !problem.empty()) {
+      std::fprintf(stderr, "penumbra: --set %s\n", problem.c_str());
+      return 2;
+    }
+  if (!options.script.empty())
+    if (std::string problem = parseScriptFile(options.script, script); !problem.empty()) {
+      std::fprintf(stderr, "penumbra: --script %s\n", problem.c_str());
+      return 2;
+    }
+  return 0;
+}
+
+// 6. State after the context exists: scene, --config, then --set, then the final image.
+int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
+  state.adoptScene(std::move(scene), options.scene);
+  if (!options.config.empty()) {
+    bool ok = false;
+    const std::string message = loadSettingsFile(state, options.config, ok);
+    if (!ok) {
+      std::fprintf(stderr, "penumbra: --config %s\n", message.c_str());
+      return 2;
+    }
+    state.status = message;
+  }
+  for (const std::string& assignment : options.sets) state.pipeline.set(assignment);
+  if (state.outputOf("composite.color")) state.selectOutput("composite.color");
+  else state.selectStage(state.pipeline.stages().back()->name());
+  state.scrollToStage.clear();  // open on the top of the pipeline panel
+  return 0;
+}
+
+}  // namespace
+
+// 7. Setup, the frame loop, teardown.
+int runWindow(const WindowOptions& options) {
+  Scene scene;
+  std::vector<ScriptAction> actions;
+  if (int status = checkOptions(options, scene, actions)) return status;
+  // Unattended runs end with a message rather than hang (tests, lesson exports).
+  std::unique_ptr<Watchdog> watchdog;
+  if (!options.interactiveLesson && (!options.script.empty() || !options.screenshot.empty()))
+    watchdog = std::make_unique<Watchdog>(options.script.empty() ? "--screenshot" : "--script " + options.script, 300);
+  std::string error;
+  std::unique_ptr<GlContext> context = GlContext::createWindow(options.width, options.height, "penumbra", error);
+  if (!context) {
+    std::fprintf(stderr, "penumbra: %s\nWithout a display, run: penumbra export --scene %s --out out\n",
+                 error.c_str(), options.scene.c_str());
+    return 1;
+  }
+  GLFWwindow* window = context->window();
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+
+  int result = 0;
+  try {
+    auto state = std::make_unique<UiState>();  // GL objects: destroyed before the context
+    state->renderer = context->renderer();
+    installFrameTraceSource();
+    result = prepareState(*state, options, std::move(scene));
+    std::unique_ptr<ScriptRunner> runner;
+    if (!options.script.empty())
+      runner = std::make_unique<ScriptRunner>(
+          std::move(actions), ScriptOptions{options.interactiveLesson, options.exportDirectory});
+    int framesRendered = 0, screenshotCount = 0;
+    bool draggingSlider = false;
+    auto last = std::chrono::steady_clock::now();
+    while (result == 0 && !glfwWindowShouldClose(window)) {
+      // 7a. Events: wait when idle, so an idle window costs no CPU.
+      const bool busy = (runner && !state->lesson.waiting) || !options.screenshot.empty() ||
+                        state->dirty || state->runEveryFrame || !state->syntheticInput.empty();
+      if (busy) glfwPollEvents();
+      else glfwWaitEventsTimeout(0.1);
+      const auto now = std::chrono::steady_clock::now();
+      state->recordFrameInterval(std::chrono::duration<double>(now - last).count());
+      last = now;
+      // 7b. Script actions, once the first run and the layout have settled.
+      if (runner && framesRendered >= 2 && state->pipelineRuns > 0) {
+        const ScriptRunner::Step step = runner->step(*state);
+        if (step == ScriptRunner::Step::Failed) {
+          std::fprintf(stderr, "penumbra: %s\n", runner->error().c_str());
+          result = 2;
+          break;
+        }
+        if (step == ScriptRunner::Step::Done) {
+          if (!options.interactiveLesson) break;
+          runner.reset();  // a student's lesson ends; the window stays theirs
+          state->lesson.finished = true;
+        }
+      }
+      if (state->cursorRequest) {  // a script's "mouse": as if the user moved it there
+        glfwSetCursorPos(window, state->cursorRequest->x, state->cursorRequest->y);
+        state->cursorRequest.reset();
+      }
+      // 7c. The pipeline, only when something changed.
+      int width = 0, height = 0;
+      glfwGetFramebufferSize(window, &width, &height);
+      recordPickedPixel(*state);
+      state->runIfNeeded(glm::ivec2(state->views[0].eyeRegion));
+      // 7d. The UI.
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      applySyntheticInput(*state);
+      ImGui::NewFrame();
+      handleShortcuts(*state, window, screenshotCount);
+      const bool wasDirty = state->dirty;
+      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y));
+      // A slider dragged since its press counts as moving too: preview until released.
+      if (!ImGui::IsAnyItemActive()) draggingSlider = false;
+      else if (!wasDirty && state->dirty) draggingSlider = true;
+      state->setCameraMoving(moving || draggingSlider || state->scriptMovesCamera);
+      ImGui::Render();
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glViewport(0, 0, width, height);
+      glClearColor(0.1f, 0.1f, 0.1f, 1);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      ++framesRendered;
+      // 7e. Screenshots: requested (script, F12), or --screenshot after --frames.
+      if (!state->screenshotRequest.empty()) {
+        saveScreenshot(window, state->screenshotRequest);
+        std::printf("penumbra: wrote %s\n", state->screenshotRequest.c_str());
+        state->status = "screenshot " + state->screenshotRequest;
+        state->screenshotRequest.clear();
+      }
+      // (An interactive lesson waits for the student: its screenshot shows where it waits.)
+      if ((!runner || options.interactiveLesson) && !options.screenshot.empty() &&
+          framesRendered >= options.frames) {
+        saveScreenshot(window, options.screenshot);
+        std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(), framesRendered);
+        break;
+      }
+      glfwSwapBuffers(window);
+    }
+  } catch (const std::exception& failure) {
+    std::fprintf(stderr, "penumbra: %s\n", failure.what());
+    result = 1;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return result;
+}

@@ -1,0 +1,84 @@
+// Stage `error` (DESIGN.md §7): a method's visibility minus the exact reference, as images
+// (signed, with a diverging colormap; absolute) and as numbers in frame.counters (RMSE, max,
+// mean |error| in shadow after Atty et al. 2006 §4.2.1, 99th percentile). Only receivers
+// inside the light's map count: the background has no shadow and, outside the map, no
+// method knows anything (classify marks both). Runs only while the reference does.
+//
+// On the CPU: the reference is a CPU image anyway, and the percentile and OIIO's compare
+// need the values there; at 512x512 the read-back costs a few milliseconds.
+#include <cmath>
+
+#include "reference/error_metrics.h"
+#include "core/frame.h"
+#include "core/pipeline.h"
+
+namespace gpu {
+#include "shared/classes.h"
+}  // namespace gpu
+
+namespace {
+
+class ErrorStage final : public Stage {
+public:
+  ErrorStage() {
+    outputs_ = {
+        {"signed", "Method minus reference: > 0 too bright (missed occluders), < 0 too dark "
+                   "(over-occlusion). 0 where the pixel does not count.",
+         GL_R32F, {"error"}, {0, -1, 1, Colormap::Diverging}},
+        {"absolute", "|method - reference| (0 where the pixel does not count).", GL_R32F,
+         {"error"}, {0, 0, 1, Colormap::Perceptual}},
+    };
+    params_ = {
+        Param::choice("method", "Whose visibility is compared with the reference.",
+                      {"filter", "trace", "hard_shadow"}, 0),
+    };
+  }
+  std::string name() const override { return "error"; }
+  std::string summary() const override {
+    return "Difference between a method's visibility and the exact reference, with RMSE, max, "
+           "mean error in shadow and p99.";
+  }
+  std::string thesisSection() const override { return ""; }
+
+  void run(Frame& frame) override {
+    if (!frame.pipeline.param("reference.enabled").asBool() ||
+        !frame.has("reference.visibility")) {
+      frame.textures.erase("error.signed");  // nothing to compare with (or still pending)
+      frame.textures.erase("error.absolute");
+      return;
+    }
+    const int w = frame.eyeWidth, h = frame.eyeHeight;
+    const std::vector<float> method = frame.input(param("method").asEnum() + ".visibility").readFloats();
+    const std::vector<float> reference = frame.input("reference.visibility").readFloats();
+    const std::vector<float> mask = frame.input("classify.mask").readFloats();
+    std::vector<std::uint8_t> counted(mask.size());
+    for (size_t i = 0; i < mask.size(); ++i) {
+      const int pixelClass = int(std::lround(mask[i]));
+      counted[i] = pixelClass != CLASS_BACKGROUND && pixelClass != CLASS_OUTSIDE;
+    }
+    std::vector<float> signedError;
+    const ErrorMetrics metrics = computeErrorMetrics(method, reference, counted, w, h, &signedError);
+    std::vector<float> absolute(signedError.size());
+    for (size_t i = 0; i < signedError.size(); ++i) absolute[i] = std::fabs(signedError[i]);
+    upload(frame.output(*this, "signed", w, h), signedError);
+    upload(frame.output(*this, "absolute", w, h), absolute);
+
+    frame.counters["error.rmse"] = metrics.rmse;
+    frame.counters["error.max"] = metrics.max;
+    frame.counters["error.meanAbsInShadow"] = metrics.meanAbsInShadow;
+    frame.counters["error.p99"] = metrics.p99;
+    frame.counters["error.meanSigned"] = metrics.meanSigned;
+    frame.counters["error.pixels"] = double(metrics.pixels);
+    frame.counters["error.pixelsInShadow"] = double(metrics.pixelsInShadow);
+  }
+
+private:
+  static void upload(GlTexture& texture, const std::vector<float>& values) {
+    glTextureSubImage2D(texture.id(), 0, 0, 0, texture.width(), texture.height(), GL_RED,
+                        GL_FLOAT, values.data());
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeErrorStage() { return std::make_unique<ErrorStage>(); }

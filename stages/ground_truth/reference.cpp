@@ -1,0 +1,233 @@
+// Stage `reference` (DESIGN.md §7): the exact visibility every method is measured against,
+// ray traced through the scene's real triangles on the CPU (app/reference/reference_trace.h explains
+// the occluder set, the origin offset and the sampling), cached in memory and on disk
+// (app/reference/reference_cache.h). Off by default: at 512x512 with 16x16 samples it costs seconds
+// per new view on two cores (bench/results.md has the measurement); export, bench and the
+// tests turn it on.
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "core/frame.h"
+#include "core/pipeline.h"
+#include "reference/reference_cache.h"
+#include "reference/reference_request.h"
+#include "reference/reference_trace.h"
+
+ReferenceProgress& referenceStageProgress() {
+  static ReferenceProgress progress;
+  return progress;
+}
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A hash of the occluders alone: the Embree scene is rebuilt only when they change.
+std::string occluderKey(const Scene& scene) {
+  ContentHash hash;
+  for (const SceneObject& object : scene.objects) {
+    if (object.receiverOnly) continue;
+    hash.bytes(object.mesh.positions.data(), object.mesh.positions.size() * sizeof(glm::vec3));
+    hash.bytes(object.mesh.indices.data(), object.mesh.indices.size() * sizeof(std::uint32_t));
+  }
+  return hash.hex();
+}
+
+class ReferenceStage final : public Stage {
+public:
+  ReferenceStage() {
+    outputs_ = {{"visibility", "Exact visibility: the fraction of the m x m light samples that "
+                               "the scene's real triangles do not hide (1 on the background).",
+                 GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray}}};
+    params_ = {
+        Param::boolean("enabled", "Compute the ground truth (seconds per new view on the CPU; "
+                                  "cached on disk, so an unchanged view is instant).", false),
+        Param::integer("samples", "m: light samples per side, m x m rays per pixel.", 16, 1, 64),
+        Param::choice("sampling", "stratified: one jittered sample per cell of the m x m grid "
+                                  "(unbiased); uniform: the cell centres (a fixed quadrature, "
+                                  "to compare with exact methods).",
+                      {"stratified", "uniform"}, 0),
+        Param::boolean("cache", "Reuse and store results under ~/.cache/penumbra/reference "
+                                "($PENUMBRA_CACHE).", true),
+        Param::integer("threads", "CPU threads tracing rows (0: every core).", 0, 0, 256),
+        Param::boolean("background", "Trace on a background thread and leave the output "
+                                     "unwritten until done (for the window: it stays "
+                                     "responsive and can cancel).", false),
+    };
+  }
+  ~ReferenceStage() override { stopJob(); }
+  std::string name() const override { return "reference"; }
+  std::string summary() const override {
+    return "Ground truth: visibility of the area light through the real triangles, ray traced "
+           "on the CPU (Embree).";
+  }
+  std::string thesisSection() const override { return ""; }
+
+  void run(Frame& frame) override {
+    const std::string key = "reference.visibility";
+    if (!param("enabled").asBool()) {
+      stopJob();
+      frame.textures.erase(key);  // a stale truth must not be compared against
+      return;
+    }
+    ReferenceRequest request = makeReferenceRequest(
+        frame, param("samples").asInt(), param("sampling").asEnum() == "stratified");
+    const std::string cacheKey = referenceCacheKey(frame.scene, request);
+    frame.counters["reference.samples"] = double(request.samplesPerSide) * request.samplesPerSide;
+    frame.counters["reference.seconds"] = 0;
+
+    std::optional<std::vector<float>> visibility;
+    if (cacheKey == memoryKey_) {
+      visibility = memory_;
+      frame.counters["reference.cacheHit"] = 1;  // memory
+    } else if (param("cache").asBool() &&
+               (visibility = loadCachedReference(cacheKey, request.width, request.height))) {
+      frame.counters["reference.cacheHit"] = 2;  // disk
+      remember(cacheKey, *visibility);
+    } else {
+      frame.counters["reference.cacheHit"] = 0;
+      visibility = compute(frame, std::move(request), cacheKey);
+    }
+    if (visibility && job_ && job_->key != cacheKey) stopJob();  // back to a known view
+    if (!visibility) {
+      frame.textures.erase(key);  // pending (background) or cancelled
+      return;
+    }
+    GlTexture& texture = frame.output(*this, "visibility", frame.eyeWidth, frame.eyeHeight);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, frame.eyeWidth, frame.eyeHeight, GL_RED, GL_FLOAT,
+                        visibility->data());
+  }
+
+private:
+  struct Job {
+    std::thread thread;
+    std::string key;
+    std::vector<float> visibility;
+    double seconds = 0;
+    std::atomic<bool> done{false};
+    bool completed = false;  // not cancelled
+  };
+
+  const ReferenceTracer& tracer(const Scene& scene) {
+    const std::string key = occluderKey(scene);
+    if (!tracer_ || key != tracerKey_) {
+      tracer_ = std::make_shared<ReferenceTracer>(scene);
+      tracerKey_ = key;
+    }
+    return *tracer_;
+  }
+
+  void remember(const std::string& key, const std::vector<float>& visibility) {
+    memoryKey_ = key;
+    memory_ = visibility;
+  }
+
+  std::optional<std::vector<float>> compute(Frame& frame, ReferenceRequest request,
+                                            const std::string& cacheKey) {
+    tracer(frame.scene);
+    frame.counters["reference.occluderTriangles"] = double(tracer_->occluderTriangles());
+    if (param("background").asBool()) return computeInBackground(frame, std::move(request), cacheKey);
+    stopJob();
+    ReferenceProgress& progress = referenceStageProgress();
+    progress.cancel = false;
+    progress.running = true;
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<float> visibility;
+    bool completed = false;
+    {
+      TerminalProgress bar("reference " + frame.scene.name + " " + std::to_string(request.width) +
+                               "x" + std::to_string(request.height) + " m=" +
+                               std::to_string(request.samplesPerSide), progress);
+      std::atomic<bool> workerDone{false};
+      std::exception_ptr failure;
+      std::thread worker([&] {
+        try {
+          completed = tracer_->trace(request, visibility, &progress, param("threads").asInt());
+        } catch (...) {
+          failure = std::current_exception();
+        }
+        workerDone = true;
+      });
+      while (!workerDone) {
+        bar.update();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      worker.join();
+      progress.running = false;
+      if (failure) std::rethrow_exception(failure);
+      bar.finish(secondsSince(start), !completed);
+    }
+    if (!completed) {
+      frame.counters["reference.cancelled"] = 1;
+      return std::nullopt;
+    }
+    ++progress.finished;
+    return finish(frame, cacheKey, std::move(visibility), request, secondsSince(start));
+  }
+
+  std::vector<float> finish(Frame& frame, const std::string& cacheKey,
+                            std::vector<float> visibility, const ReferenceRequest& request,
+                            double seconds) {
+    frame.counters["reference.seconds"] = seconds;
+    if (param("cache").asBool())
+      storeCachedReference(cacheKey, visibility, request, frame.scene.name, seconds);
+    remember(cacheKey, visibility);
+    return visibility;
+  }
+
+  std::optional<std::vector<float>> computeInBackground(Frame& frame, ReferenceRequest request,
+                                                        const std::string& cacheKey) {
+    if (job_ && job_->done) {
+      job_->thread.join();
+      auto job = std::move(job_);
+      if (job->completed && job->key == cacheKey)
+        return finish(frame, cacheKey, std::move(job->visibility), request, job->seconds);
+    }
+    if (job_ && job_->key == cacheKey) {
+      frame.counters["reference.pending"] = 1;
+      return std::nullopt;
+    }
+    stopJob();  // the inputs changed: the running job's answer is of no use
+    ReferenceProgress& progress = referenceStageProgress();
+    progress.cancel = false;
+    progress.running = true;
+    job_ = std::make_unique<Job>();
+    job_->key = cacheKey;
+    Job* job = job_.get();
+    auto tracer = tracer_;
+    const int threads = param("threads").asInt();
+    job->thread = std::thread([job, tracer, threads, request = std::move(request), &progress] {
+      const auto start = std::chrono::steady_clock::now();
+      job->completed = tracer->trace(request, job->visibility, &progress, threads);
+      job->seconds = secondsSince(start);
+      progress.running = false;
+      if (job->completed) ++progress.finished;
+      job->done = true;
+    });
+    frame.counters["reference.pending"] = 1;
+    return std::nullopt;
+  }
+
+  void stopJob() {
+    if (!job_) return;
+    referenceStageProgress().cancel = true;
+    job_->thread.join();
+    job_.reset();
+    referenceStageProgress().cancel = false;
+  }
+
+  std::shared_ptr<ReferenceTracer> tracer_;
+  std::string tracerKey_;
+  std::string memoryKey_;
+  std::vector<float> memory_;
+  std::unique_ptr<Job> job_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeReferenceStage() { return std::make_unique<ReferenceStage>(); }

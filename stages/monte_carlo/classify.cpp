@@ -1,0 +1,111 @@
+// Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): lit / penumbra / umbra per eye
+// pixel from occluder-depth bounds over the region of the light map that the pixel's rays
+// can cross, refined iteratively over the N-buffer (after Guennebaud et al. 2006). The
+// bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
+#include <cstddef>
+#include <stdexcept>
+
+#include "core/frame.h"
+#include "core/pipeline.h"
+#include "gl/shader_program.h"
+
+namespace gpu {
+#include "shared/classes.h"
+#include "shared/classify_layout.h"
+}  // namespace gpu
+
+static_assert(offsetof(gpu::ClassifyCounts, pixels) == 0);
+static_assert(sizeof(gpu::ClassifyCounts) == 32);  // std430: uint[8], stride 4
+static_assert(CLASS_OUTSIDE + 1 == CLASSIFY_CLASS_COUNT);
+
+namespace {
+
+class ClassifyStage final : public Stage {
+public:
+  ClassifyStage() {
+    outputs_ = {
+        {"mask", "Class per pixel: 0 background, 1 lit, 2 penumbra, 3 umbra, 4 outside the "
+                 "light's frustum.",
+         GL_R32F, {"class"}, {0, 0, 4, Colormap::Categorical}},
+        {"zRange", "Occluder depth bounds over the region the pixel's rays can cross (linear "
+                   "light depth): min near, max near, max far; w: the receiver's depth.",
+         GL_RGBA32F, {"zNearMin", "zNearMax", "zFarMax", "receiverLsDepth"},
+         {0, 0, 1, Colormap::Gray}},
+    };
+    params_ = {
+        Param::integer("iterations", "Refinements of zNearMin by Eq 3.3: each shrinks the "
+                                     "region of the map the rays can cross to the part "
+                                     "beyond the current zNearMin (§3.6; two usually suffice).",
+                       2, 0, 4),
+        Param::boolean("umbra", "Classify umbra (receiver behind zNearMax), as the thesis "
+                                "does (§3.6). Exact for a single depth layer; with two layers "
+                                "a ray can slip between occluders whose map images touch "
+                                "(measured: tests/stages/test_classify.cpp, stacked plates), so it "
+                                "is a heuristic there; always off with three layers.", true),
+    };
+  }
+  std::string name() const override { return "classify"; }
+  std::string summary() const override {
+    return "Marks pixels fully lit, fully shadowed or in penumbra, so rays are traced only "
+           "in the penumbra.";
+  }
+  std::string thesisSection() const override { return "3.6, Eq 3.3"; }
+
+  void run(Frame& frame) override {
+    const int w = frame.eyeWidth, h = frame.eyeHeight;
+    GlTexture& mask = frame.output(*this, "mask", w, h);
+    GlTexture& zRange = frame.output(*this, "zRange", w, h);
+
+    const gpu::ClassifyCounts zero{};
+    counts_.upload(&zero, sizeof zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_COUNTS_BINDING, counts_.id());
+    GlBuffer& tracedPixels = frame.buffer("classify.tracedPixels");
+    const size_t listBytes = CLASSIFY_LIST_HEADER_BYTES + size_t(w) * h * sizeof(std::uint32_t);
+    GLint64 currentBytes = 0;
+    glGetNamedBufferParameteri64v(tracedPixels.id(), GL_BUFFER_SIZE, &currentBytes);
+    if (size_t(currentBytes) != listBytes) tracedPixels.upload(nullptr, listBytes);
+    const std::uint32_t zeroCount = 0;
+    glNamedBufferSubData(tracedPixels.id(), 0, sizeof zeroCount, &zeroCount);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
+
+    program_.use();
+    glBindTextureUnit(0, frame.input("gbuffer.wsPosition").id());
+    glBindTextureUnit(1, frame.input("gbuffer.wsNormal").id());
+    glBindTextureUnit(2, frame.input("nbuffer.levels").id());
+    glBindImageTexture(0, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(1, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glUniform1i(1, param("iterations").asInt());
+    glUniform1i(2, param("umbra").asBool() && !threeLayers(frame));
+    // The rays' bias is the trace's (one declaration): classification must bound it.
+    const Pipeline& pipeline = frame.pipeline;
+    glUniform3f(3, pipeline.param("trace.bias").asFloat(),
+                pipeline.param("trace.adaptive_bias").asBool() ? 1.0f : 0.0f,
+                pipeline.param("trace.min_cosine").asFloat());
+    dispatchRows(w, h);
+
+    gpu::ClassifyCounts counts{};
+    glGetNamedBufferSubData(counts_.id(), 0, sizeof counts, &counts);
+    frame.counters["classify.lit"] = counts.pixels[CLASS_LIT];
+    frame.counters["classify.penumbra"] = counts.pixels[CLASS_PENUMBRA];
+    frame.counters["classify.umbra"] = counts.pixels[CLASS_UMBRA];
+    frame.counters["classify.outside"] = counts.pixels[CLASS_OUTSIDE];
+    frame.counters["classify.background"] = counts.pixels[CLASS_BACKGROUND];
+  }
+
+private:
+  // §3.6: with three layers rays may pass between occluders, so the umbra test is invalid.
+  static bool threeLayers(const Frame& frame) {
+    try {
+      return frame.pipeline.param("trace.layers").asEnum() == "three";
+    } catch (const std::out_of_range&) {
+      return false;  // no trace stage in this pipeline
+    }
+  }
+
+  ShaderProgram program_{{{GL_COMPUTE_SHADER, "classify.comp"}}};
+  GlBuffer counts_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeClassifyStage() { return std::make_unique<ClassifyStage>(); }

@@ -1,0 +1,62 @@
+// Stage `filter` (thesis §3, Fig 3.2): a separable depth-sensitive Gaussian over the
+// trace's unfiltered visibility, horizontal then vertical.
+#include "core/frame.h"
+#include "gl/shader_program.h"
+
+namespace {
+
+class FilterStage final : public Stage {
+public:
+  FilterStage() {
+    outputs_ = {
+        {"horizontal", "After the horizontal pass.", GL_R32F, {"visibility"},
+         {0, 0, 1, Colormap::Gray}},
+        {"visibility", "Filtered visibility (both passes).", GL_R32F, {"visibility"},
+         {0, 0, 1, Colormap::Gray}},
+    };
+    params_ = {
+        Param::boolean("enabled", "Blur the shadows (off: the visibility passes through).", true),
+        Param::integer("radius", "Filter radius in pixels (sigma = radius / 2).", 4, 0, 32),
+        Param::real("depth_scale", "Depth sensitivity per world unit: a sample's weight is "
+                                   "divided by 1 + depth_scale x |depth difference| (§3).",
+                    20, 0, 1000),
+        Param::boolean("normal_sensitive", "Also weight by the normals' agreement, so shadows "
+                                           "do not bleed over sharp edges (§3).", false),
+        Param::real("normal_power", "Exponent of max(n_c . n_s, 0) when normal_sensitive.", 8, 1,
+                    64),
+    };
+  }
+  std::string name() const override { return "filter"; }
+  std::string summary() const override {
+    return "Depth-aware separable Gaussian blur of the traced visibility.";
+  }
+  std::string thesisSection() const override { return "3 (Fig 3.2)"; }
+
+  void run(Frame& frame) override {
+    const int w = frame.eyeWidth, h = frame.eyeHeight;
+    const int radius = param("enabled").asBool() ? param("radius").asInt() : 0;
+    const float normalPower =
+        param("normal_sensitive").asBool() ? param("normal_power").asFloat() : 0.0f;
+    program_.use();
+    glUniform1i(2, radius);
+    glUniform1f(3, param("depth_scale").asFloat());
+    glUniform1f(4, normalPower);
+    glBindTextureUnit(1, frame.input("gbuffer.wsPosition").id());
+    glBindTextureUnit(2, frame.input("gbuffer.wsNormal").id());
+    pass(frame.input("trace.visibility"), frame.output(*this, "horizontal", w, h), {1, 0}, w, h);
+    pass(frame.input("filter.horizontal"), frame.output(*this, "visibility", w, h), {0, 1}, w, h);
+  }
+
+private:
+  void pass(const GlTexture& source, GlTexture& target, glm::ivec2 direction, int w, int h) {
+    glBindTextureUnit(0, source.id());
+    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform2i(1, direction.x, direction.y);
+    dispatchRows(w, h);
+  }
+  ShaderProgram program_{{{GL_COMPUTE_SHADER, "filter.comp"}}};
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeFilterStage() { return std::make_unique<FilterStage>(); }

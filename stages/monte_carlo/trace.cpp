@@ -1,0 +1,234 @@
+// Stage `trace` (thesis §3-3.7, Algorithms 1 and 2): n x n rays per receiver through the
+// light's depth layers, in the deferred form (a compute pass over the G-buffer) or the
+// forward form (every rasterized fragment traces; thesis Table 4.1).
+#include <cmath>
+
+#include "core/frame.h"
+#include "gl/gpu_layout_trace.h"
+
+namespace gpu {
+#include "shared/classify_layout.h"
+}  // namespace gpu
+#include "core/pipeline.h"
+#include "gl/shader_program.h"
+
+namespace {
+
+class TraceStage final : public Stage {
+public:
+  TraceStage() {
+    outputs_ = {
+        {"visibility", "Unfiltered visibility: the fraction of this pixel's rays that reach the "
+                       "light.", GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray}},
+        {"cost", "Per pixel: texel fetches, search iterations, rays searched, rays ended by an "
+                 "early out.", GL_RGBA32F, {"fetches", "iterations", "raysSearched", "earlyOuts"},
+         {0, 0, 200, Colormap::Perceptual}},
+    };
+    params_ = {
+        Param::integer("rays", "Rays per pixel along each side of the light: n x n rays (§3.1).",
+                       2, 1, 8),
+        Param::choice("sampling", "jittered: one random sample in each cell of an n x n grid on "
+                                  "the light; random: anywhere on the light (§3.1, Fig 3.3).",
+                      {"jittered", "random"}, 0),
+        Param::choice("search", "How a ray is traced: linear (fixed step), linear_binary "
+                                "(binary refinement on suspicious transitions, §3.3) or "
+                                "hierarchical (Algorithm 2 over the N-buffer, §3.5).",
+                      {"linear", "linear_binary", "hierarchical"}, 2),
+        Param::choice("layers", "Depth layers that model the occluders: one (near only, "
+                                "§3.2), two (near + far, §3.3) or three (+ the eye's depth: "
+                                "a point seen by the eye is free space, §3.4).",
+                      {"one", "two", "three"}, 1),
+        Param::real("linear_step", "Step of the linear search, in shadow-map texels.", 1.0,
+                    0.25, 16),
+        Param::integer("binary_steps", "Bisections per suspicious transition (linear_binary).",
+                       6, 0, 16),
+        Param::boolean("early_out_backface", "A light sample behind the surface (n.l <= 0) "
+                                             "blocks the ray without tracing (§3.7).", true),
+        Param::boolean("early_out_inside", "An end point inside a solid blocks the ray after one "
+                                           "fetch (§3.7).", true),
+        Param::boolean("early_out_region", "One N-buffer fetch over the ray's projection; if it "
+                                           "holds no occluder at the ray's depths, the ray is "
+                                           "free (§3.7).", true),
+        Param::boolean("shorten_rays", "Clip each ray to the depths [zNearMin, zFarMax] that "
+                                       "classification found for its pixel (§3.7, Fig 3.9).",
+                       true),
+        Param::boolean("use_classification", "Skip pixels classified lit or umbra (§3.6).",
+                       true),
+        Param::boolean("deferred", "Trace per G-buffer pixel (deferred, Algorithm 1) or per "
+                                   "rasterized fragment (forward; Table 4.1).", true),
+        Param::real("bias", "Constant bias in world units: the ray's end moves this far "
+                            "towards the light.", 0.0, 0, 1),
+        Param::boolean("adaptive_bias", "Add the adaptive bias of Eq 3.2.", true),
+        Param::real("min_cosine", "Lower clamp of n.l in Eq 3.2.", 0.1, 0.001, 1),
+        Param::real("eye_tolerance", "Three layers: a point counts as free space (seen by the "
+                                     "eye) only if it lies at least this far (world units) in "
+                                     "front of the visible surface at its pixel.", 0.02, 0, 1),
+        Param::integer("max_iterations", "Cap on search iterations per ray (a safety net; "
+                                         "reaching it is counted and reported).", 512, 16, 4096),
+        Param::integer("record_x", "Pixel (x, image column) whose every step is recorded for "
+                                   "the inspector and `penumbra trace`; -1: none.", -1, -1, 8192),
+        Param::integer("record_y", "Pixel (y, row from the top) whose steps are recorded.", -1,
+                       -1, 8192),
+    };
+  }
+  std::string name() const override { return "trace"; }
+  std::string summary() const override {
+    return "Monte Carlo rays from each pixel to random points on the light, through the depth "
+           "layers.";
+  }
+  std::string thesisSection() const override { return "3.1-3.7, Alg. 2"; }
+
+  void run(Frame& frame) override {
+    const int w = frame.eyeWidth, h = frame.eyeHeight;
+    GlTexture& visibility = frame.output(*this, "visibility", w, h);
+    GlTexture& cost = frame.output(*this, "cost", w, h);
+    const GlTexture& levels = frame.input("nbuffer.levels");
+
+    // 1. Parameters -> the std140 block (shaders/shared/trace_layout.h).
+    gpu::TraceParams params{};
+    const int recordY = param("record_y").asInt();
+    params.config = {param("rays").asInt(), param("sampling").asInt(), param("search").asInt(),
+                     param("layers").asInt() + 1};
+    params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
+                       param("early_out_region").asBool(), param("shorten_rays").asBool()};
+    params.limits = {param("max_iterations").asInt(), param("binary_steps").asInt(),
+                     frame.pipeline.param("hash.function").asInt(),
+                     param("use_classification").asBool()};
+    params.bias = {param("bias").asFloat(), param("adaptive_bias").asBool() ? 1.f : 0.f,
+                   param("min_cosine").asFloat(), param("linear_step").asFloat()};
+    params.record = {param("record_x").asInt(), recordY < 0 ? -1 : h - 1 - recordY,
+                     kRecordCapacity, levels.layers() - 1};
+    params.eye = {param("eye_tolerance").asFloat(), 0, 0, 0};
+    paramsBuffer_.upload(&params, sizeof params);
+    glBindBufferBase(GL_UNIFORM_BUFFER, binding::kTraceParams, paramsBuffer_.id());
+
+    // 2. Cleared record and total buffers.
+    //    Allocated once; each frame only the record count and the totals are zeroed (the
+    //    records past the count are never read).
+    if (!buffersAllocated_) {
+      recordsBuffer_.upload(nullptr, 16 + kRecordCapacity * sizeof(gpu::TraceStep));
+      totalsBuffer_.upload(nullptr, TOTAL_COUNT * sizeof(std::uint32_t));
+      buffersAllocated_ = true;
+    }
+    const std::uint32_t zero = 0;
+    glClearNamedBufferSubData(recordsBuffer_.id(), GL_R32UI, 0, 16, GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glClearNamedBufferData(totalsBuffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceRecords, recordsBuffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceTotals, totalsBuffer_.id());
+
+    // 3. Inputs.
+    glBindTextureUnit(0, frame.input("gbuffer.wsPosition").id());
+    glBindTextureUnit(1, frame.input("gbuffer.wsNormal").id());
+    glBindTextureUnit(2, frame.input("light_layers.near").id());
+    glBindTextureUnit(3, frame.input("light_layers.far").id());
+    glBindTextureUnit(4, levels.id());
+    glBindTextureUnit(5, frame.input("classify.mask").id());
+    glBindTextureUnit(6, frame.input("classify.zRange").id());
+
+    // 4. The pass.
+    if (param("deferred").asBool()) {
+      runDeferred(frame, visibility, cost, params.record.x >= 0 && params.record.y >= 0);
+    } else {
+      runForward(frame, visibility, cost);
+    }
+
+    // 5. Totals and the recorded steps.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t totals[TOTAL_COUNT];
+    glGetNamedBufferSubData(totalsBuffer_.id(), 0, sizeof totals, totals);
+    const char* names[] = {"rays", "raysSearched", "fetches", "iterations", "earlyOutBackface",
+                           "earlyOutInside", "earlyOutRegion", "iterationCapReached"};
+    for (int i = 0; i <= TOTAL_ITERATION_CAP; ++i)
+      frame.counters["trace." + std::string(names[i])] = totals[i];
+    // Pixels that classification spared: lit and umbra, counted by classify (no atomics here).
+    frame.counters["trace.pixelsClassified"] =
+        param("use_classification").asBool() && param("deferred").asBool()
+            ? frame.counters["classify.lit"] + frame.counters["classify.umbra"] : 0.0;
+    frame.counters["trace.fetchesPerRay"] =
+        totals[TOTAL_RAYS] ? double(totals[TOTAL_FETCHES]) / totals[TOTAL_RAYS] : 0.0;
+    readRecords(frame);
+  }
+
+private:
+  static constexpr int kRecordCapacity = 8192;
+  static constexpr int kRowsPerBand = 64;
+
+  // With classification, only the pixels classify listed are dispatched (64 per group, in
+  // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
+  void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
+    deferred_.use();
+    glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(1, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    if (!param("use_classification").asBool()) {
+      glUniform1i(1, 0);
+      dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
+      return;
+    }
+    const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
+    glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
+    glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING,
+                     frame.buffer("classify.tracedPixels").id());
+    const int listed = int(frame.counters.at("classify.penumbra") + frame.counters.at("classify.umbra"));
+    glUniform1i(1, 1);  // uPixels
+    const int groups = (listed + 63) / 64, groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
+    for (int first = 0; first < groups; first += groupsPerBand) {
+      glUniform1i(0, first);
+      glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
+    }
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    if (recording) {  // the recorded pixel once more, alone, with its steps (any class)
+      glUniform1i(1, 2);
+      glDispatchCompute(1, 1, 1);
+      glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    }
+  }
+
+  void runForward(Frame& frame, GlTexture& visibility, GlTexture& cost) {
+    if (forwardDepth_.width() != frame.eyeWidth || forwardDepth_.height() != frame.eyeHeight)
+      forwardDepth_ = GlTexture(GL_DEPTH_COMPONENT32F, frame.eyeWidth, frame.eyeHeight);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, visibility.id(), 0);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, cost.id(), 0);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, forwardDepth_.id(), 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(framebuffer_.id(), 2, buffers);
+    framebuffer_.checkComplete("trace (forward)");
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glViewport(0, 0, frame.eyeWidth, frame.eyeHeight);
+    const float one[4] = {1, 0, 0, 0}, zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, one);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    forward_.use();
+    frame.gpuScene.draw(/*includeReceivers=*/true);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  }
+
+  void readRecords(Frame& frame) {
+    frame.traceSteps.clear();
+    if (param("record_x").asInt() < 0 || param("record_y").asInt() < 0) return;
+    std::uint32_t header[4];
+    glGetNamedBufferSubData(recordsBuffer_.id(), 0, sizeof header, header);
+    const std::uint32_t count = std::min<std::uint32_t>(header[0], kRecordCapacity);
+    frame.traceSteps.resize(count);
+    glGetNamedBufferSubData(recordsBuffer_.id(), 16, GLsizeiptr(count * sizeof(gpu::TraceStep)),
+                            frame.traceSteps.data());
+    frame.counters["trace.recordedSteps"] = header[0];
+  }
+
+  ShaderProgram deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
+  ShaderProgram forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
+  GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
+  bool buffersAllocated_ = false;
+  GlFramebuffer framebuffer_;
+  GlTexture forwardDepth_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeTraceStage() { return std::make_unique<TraceStage>(); }

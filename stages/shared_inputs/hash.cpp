@@ -1,0 +1,57 @@
+// Stage `hash`: the random numbers of the trace, made visible (thesis §3.1, §4.3,
+// Appendix A). Owns the parameter `hash.function`, which the trace stage reads through
+// frame.pipeline to call hashRand() of shaders/shared/hash.glsl with the same function.
+#include "core/frame.h"
+#include "gl/hash_kind.h"
+#include "gl/shader_program.h"
+
+namespace {
+
+class HashStage final : public Stage {
+public:
+  HashStage() {
+    outputs_ = {
+        {"samples",
+         "First light sample (u, v) in [0,1)^2 of each pixel: the top 24 bits of the first two "
+         "hash words, seed = (x, y, 0, 0) (\"screen coordinates are used for the seed\", "
+         "Appendix A), key = frame key. Shown as colour: red u, green and blue v. Any "
+         "pattern here would show as a pattern in the soft shadows.",
+         GL_RG32F, {"u", "v"}, {-1, 0, 1, Colormap::Gray}},
+        {"bits",
+         "The first hash word of each pixel as a gray level: its top 24 bits / 2^24. Good "
+         "hashes look like white noise; changing the frame key changes every pixel.",
+         GL_R32F, {"bits"}, {0, 0, 1, Colormap::Gray}},
+    };
+    params_ = {Param::choice(
+        "function",
+        "Hash that turns (pixel, ray, frame key) into light samples. md5_16: the thesis's "
+        "reduced 16-round MD5, as printed in Appendix A (passes 11 of 15 DIEHARD tests, "
+        "§3.1; costs < 10% of the frame, §4.3). md5_64: the full MD5 of Tzeng & Wei 2008, "
+        "about 4x the work. pcg3d: Jarzynski & Olano 2020, a few multiplies.",
+        {kHashKindNames.begin(), kHashKindNames.end()}, int(HashKind::Md5_16))};
+  }
+  std::string name() const override { return "hash"; }
+  std::string summary() const override {
+    return "Per-pixel random numbers from a hash of the screen coordinates: the first "
+           "light sample and the raw bits.";
+  }
+  std::string thesisSection() const override { return "3.1, App. A"; }
+
+  void run(Frame& frame) override {
+    program_.use();
+    GlTexture& samples = frame.output(*this, "samples", frame.eyeWidth, frame.eyeHeight);
+    GlTexture& bits = frame.output(*this, "bits", frame.eyeWidth, frame.eyeHeight);
+    glBindImageTexture(0, samples.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(1, bits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    // The option index is the HashKind, which equals the GLSL HASH_* number (hash_kind.h).
+    glUniform1i(1, param("function").asInt());
+    dispatchRows(frame.eyeWidth, frame.eyeHeight);
+  }
+
+private:
+  ShaderProgram program_{{{GL_COMPUTE_SHADER, "hash.comp"}}};
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeHashStage() { return std::make_unique<HashStage>(); }

@@ -1,0 +1,69 @@
+// Stage `light_layers` (thesis §3.3): near and far depth layers seen from the projection
+// point behind the light (Eq 3.1), occluders only (receivers excluded).
+//
+// Departure from the thesis: both layers are rendered without face culling. For closed
+// meshes this gives exactly the thesis's layers (the nearest surface is a front face, the
+// farthest a back face), and it keeps open meshes and zero-thickness sheets (glTF files,
+// the `plate` scene) as occluders with near == far instead of losing them from the far layer.
+#include "core/frame.h"
+#include "core/pipeline.h"
+#include "gl/shader_program.h"
+
+namespace {
+
+class LightLayersStage final : public Stage {
+public:
+  LightLayersStage() {
+    outputs_ = {
+        {"near", "Nearest occluder: linear light depth in [0,1]; 1 where no occluder.",
+         GL_DEPTH_COMPONENT32F, {"lsDepthNear"}, {0, 0, 1, Colormap::Gray}},
+        {"far", "Farthest occluder surface: linear light depth; 0 where no occluder.",
+         GL_DEPTH_COMPONENT32F, {"lsDepthFar"}, {0, 0, 1, Colormap::Gray}},
+    };
+    params_ = {
+        Param::integer("resolution", "Shadow-map size in texels (square); also the N-buffer size.",
+                       512, 128, 2048),
+        Param::real("fov_degrees",
+                    "Field of view of the light's frustum (Eq 3.1). Wider covers more of the "
+                    "scene at lower resolution; the light's projection point moves closer.",
+                    90, 10, 150),
+    };
+  }
+  std::string name() const override { return "light_layers"; }
+  std::string summary() const override {
+    return "Near (nearest surface) and far (farthest surface) depth layers from the light.";
+  }
+  std::string thesisSection() const override { return "3.3, Eq 3.1"; }
+
+  void run(Frame& frame) override {
+    const int size = param("resolution").asInt();
+    renderLayer(frame, frame.output(*this, "near", size, size), GL_LESS, 1.0f);
+    renderLayer(frame, frame.output(*this, "far", size, size), GL_GREATER, 0.0f);
+  }
+
+private:
+  void renderLayer(Frame& frame, GlTexture& target, GLenum depthTest, float clearDepth) {
+    glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, target.id(), 0);
+    glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
+    framebuffer_.checkComplete("light_layers");
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glViewport(0, 0, target.width(), target.height());
+    glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, clearDepth, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(depthTest);
+    glDisable(GL_CULL_FACE);
+    program_.use();
+    frame.gpuScene.draw(/*includeReceivers=*/false);
+    glDepthFunc(GL_LESS);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  ShaderProgram program_{{{GL_VERTEX_SHADER, "scene.vert"},
+                          {GL_FRAGMENT_SHADER, "light_layers.frag"}},
+                         "#define LIGHT_PASS\n"};
+  GlFramebuffer framebuffer_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeLightLayersStage() { return std::make_unique<LightLayersStage>(); }

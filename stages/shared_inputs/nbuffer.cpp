@@ -1,0 +1,42 @@
+// Stage `nbuffer` (thesis §3.5, Fig 3.6): the N-buffer over the light layers, after Décoret
+// (2005) with Schwarz & Stamminger's (2007) changes: windows moved to the texel's center
+// and three channels (zNearMin, zNearMax, zFarMax). Layout: shaders/shared/nbuffer.glsl.
+#include "core/frame.h"
+#include "gl/nbuffer_build.h"
+
+namespace {
+
+class NBufferStage final : public Stage {
+public:
+  NBufferStage() {
+    outputs_ = {{"levels",
+                 "N-buffer: layer n holds min/max light depths over a 2^n x 2^n window "
+                 "around each texel (x: min near, y: max near, z: max far).",
+                 GL_RGBA32F,
+                 {"zNearMin", "zNearMax", "zFarMax", "unused"},
+                 {0, 0, 1, Colormap::Gray}}};
+  }
+  std::string name() const override { return "nbuffer"; }
+  std::string summary() const override {
+    return "Min/max occluder depths over growing windows of the light layers, for fast "
+           "region queries.";
+  }
+  std::string thesisSection() const override { return "3.5"; }
+
+  void run(Frame& frame) override {
+    const GlTexture& nearLayer = frame.input("light_layers.near");
+    const GlTexture& farLayer = frame.input("light_layers.far");
+    const int count = nbufferLevelCount(nearLayer.width(), nearLayer.height());
+    GlTexture& levels =
+        frame.output(*this, "levels", nearLayer.width(), nearLayer.height(), count);
+    builder_.build(nearLayer, farLayer, levels);
+    frame.counters["nbuffer.levels"] = count;
+  }
+
+private:
+  NBufferBuilder builder_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeNBufferStage() { return std::make_unique<NBufferStage>(); }

@@ -1,0 +1,180 @@
+// `penumbra bench` (app/bench_*.h, app/bench/plot_png.h): a tiny real run through the binary, its
+// CSV's columns and numbers, the refusal when the reference would take too long, the Pareto
+// frontier, the setup modifiers of the presets, and the plot's text in both font modes.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "bench/bench_configs.h"
+#include "bench/bench_output.h"
+#include "scene/light_frame.h"
+#include "bench/plot_png.h"
+#include "scene/scene_builtin.h"
+#include "support/command.h"
+
+namespace {
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("penumbra-bench-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(path);
+  return path;
+}
+
+std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(file, line);) {
+    std::vector<std::string> fields;
+    std::string field;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) { fields.push_back(field); field.clear(); }
+      else field += c;
+    }
+    fields.push_back(field);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+glm::vec3 occluderCentre(const Scene& scene) {
+  const Bounds b = scene.bounds(true);
+  return 0.5f * (b.min + b.max);
+}
+
+}  // namespace
+
+TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
+  const auto out = scratch("tiny"), cache = scratch("tiny-cache");
+  setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // inherited by the command
+  const CommandResult result = runPenumbra(
+      "bench --scene plate --preset minimal --sweep trace.rays=1,2 --width 64 --height 48 "
+      "--frames 2 --warmup 1 --reference-samples 4 --out " + out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("references: 1 to compute"), std::string::npos) << result.output;
+  ASSERT_TRUE(std::filesystem::exists(out / "results.csv")) << result.output;
+  const auto rows = readCsv(out / "results.csv");
+  ASSERT_EQ(rows.size(), 4u) << result.output;  // header + hard shadow + hierarchical x 2 rays
+  EXPECT_EQ(rows[0], benchCsvColumns());
+  const std::vector<std::string> numeric = {"ms_median", "ms_min", "ms_max", "fetches_per_ray",
+                                            "rmse", "max_error", "mean_abs_error_in_shadow",
+                                            "p99_abs_error", "mean_signed_error", "pixels"};
+  for (size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), rows[0].size());
+    for (const std::string& column : numeric) {
+      const size_t c = size_t(std::find(rows[0].begin(), rows[0].end(), column) - rows[0].begin());
+      const double value = std::stod(rows[r][c]);
+      EXPECT_TRUE(std::isfinite(value) && value >= -1) << column << " row " << r;
+    }
+    const size_t ms = size_t(std::find(rows[0].begin(), rows[0].end(), "ms_median") - rows[0].begin());
+    EXPECT_GT(std::stod(rows[r][ms]), 0);
+  }
+  EXPECT_EQ(rows[1][7], "hard_shadow");
+  EXPECT_EQ(rows[2][11], "1");  // rays_per_side of the swept rows
+  EXPECT_EQ(rows[3][11], "2");
+  EXPECT_TRUE(std::filesystem::exists(out / "results.md"));
+  EXPECT_TRUE(std::filesystem::exists(out / "speed_vs_error.png"));
+  std::filesystem::remove_all(out);
+  std::filesystem::remove_all(cache);
+}
+
+TEST(BenchReport, RefusesWhenTheReferenceWouldExceedTheTimeLimit) {
+  const auto out = scratch("refuse"), cache = scratch("refuse-cache");
+  setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // nothing cached: the estimate decides
+  const CommandResult result = runPenumbra(
+      "bench --scene plate --preset minimal --width 64 --height 48 --frames 1 "
+      "--reference-samples 64 --time-limit 0.000001 --out " + out.string());
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("refusing to start"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "results.csv"));
+}
+
+TEST(BenchReport, UnknownPresetAndBadSweepAreRefused) {
+  CommandResult result = runPenumbra("bench --scene plate --preset nope --out /tmp/x");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.output.find("thesis-table-4.1"), std::string::npos) << result.output;
+  result = runPenumbra("bench --scene plate --sweep trace.rays=1,99 --out /tmp/x");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.output.find("trace.rays"), std::string::npos) << result.output;
+}
+
+TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
+  const Scene plate = makeBuiltinScene("plate");
+  const auto thesis = makeBenchPlan(plate, {"thesis-table-4.1", {}, 0, 0});
+  ASSERT_EQ(thesis.size(), 3u);  // map sweep at 512x384, then 400x300 and 640x512
+  EXPECT_EQ(thesis[0].configs.size(), 1u + 6u * 3u);
+  EXPECT_EQ(thesis[1].width, 400);
+  EXPECT_EQ(thesis[2].height, 512);
+  const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0});
+  EXPECT_EQ(atty.size(), 1u + 6u + 7u + 5u);
+  const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light_layers.resolution=128,256"}, 0, 0});
+  ASSERT_EQ(swept.size(), 2u);
+  EXPECT_EQ(swept[1].width, 64);
+  EXPECT_EQ(swept[0].configs.size(), 4u);  // both methods use the shadow map
+  EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}), std::invalid_argument);
+}
+
+// Oracles from the plate's geometry: ground at y = 0, light 1 x 1 at y = 3 facing down.
+TEST(BenchPlan, SetupModifiersMoveTheOccludersWhereTheyClaim) {
+  Scene plate = makeBuiltinScene("plate");
+  placeOccludersVertically(plate, 0.5);  // the plate has no thickness: halfway is y = 1.5
+  EXPECT_NEAR(occluderCentre(plate).y, 1.5f, 1e-5f);
+  placeOccludersVertically(plate, 0.0);
+  EXPECT_NEAR(occluderCentre(plate).y, 0.0f, 1e-5f);
+
+  Scene moved = makeBuiltinScene("plate");
+  placeOccludersLaterally(moved, 0.5);
+  const LightFrame frame = computeLightFrame(moved.light, moved.bounds(), 90);
+  const glm::vec3 offset = occluderCentre(moved) - moved.light.center;
+  EXPECT_NEAR(glm::dot(offset, frame.right), 0.5f, 1e-5f);
+  EXPECT_NEAR(glm::dot(offset, frame.up), 0.0f, 1e-5f);
+  EXPECT_NEAR(occluderCentre(moved).y, 1.0f, 1e-5f);  // same depth along the light axis
+
+  Scene bigger = makeBuiltinScene("plate");
+  scaleLight(bigger, 2);
+  EXPECT_EQ(bigger.light.width, 2.0f);
+  EXPECT_EQ(bigger.objects[0].mesh.positions, makeBuiltinScene("plate").objects[0].mesh.positions);
+}
+
+TEST(Pareto, FrontierKeepsOnlyUndominatedPoints) {
+  //            fast+bad  slow+good  dominated  tie-in-x-better-y  duplicate of 0
+  const std::vector<double> ms = {1, 10, 5, 1, 1};
+  const std::vector<double> error = {0.5, 0.1, 0.6, 0.4, 0.4};
+  const auto frontier = paretoFrontier(ms, error);
+  EXPECT_EQ(frontier, (std::vector<bool>{false, true, false, true, true}));
+}
+
+// Text must appear whether a font is found or the built-in bitmap font draws it.
+TEST(Plot, AxisLabelsAreDrawnWithAFontOrTheBitmapFont) {
+  for (bool bitmap : {false, true}) {
+    PlotSpec spec;
+    spec.title = "t";
+    spec.xLabel = "milliseconds per frame";
+    spec.yLabel = "error";
+    spec.seriesNames = {"a"};
+    spec.points = {{2, 0.5, 0, "p", true}, {20, 0.1, 0, "q", true}, {30, 0.3, 0, "r", false}};
+    spec.forceBitmapFont = bitmap;
+    const std::filesystem::path path = scratch(bitmap ? "plot-bitmap" : "plot-font").string() + ".png";
+    const std::string how = writeScatterPlot(path, spec);
+    if (bitmap) EXPECT_NE(how.find("bitmap"), std::string::npos);
+    std::printf("plot text: %s\n", how.c_str());
+    OIIO::ImageBuf image(path.string());
+    ASSERT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::FLOAT)) << how;
+    const int w = image.spec().width, h = image.spec().height;
+    int dark = 0;  // the x label's band, centred under the axes
+    for (int y = h - 40; y < h - 10; ++y)
+      for (int x = 96; x < spec.width - 24; ++x) dark += image.getchannel(x, y, 0, 0) < 0.5f;
+    EXPECT_GT(dark, 40) << how;
+    EXPECT_LT(dark, 20000) << how;
+    (void)w;
+    std::filesystem::remove(path);
+  }
+}

@@ -1,0 +1,138 @@
+// Properties of the trace stage that need no oracle: the recorded steps add up, stepping
+// never decreases, the iteration cap is never reached, a point light reproduces the hard
+// shadow, and no stage writes NaN or Inf, on every built-in and stress scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "scene/scene_builtin.h"
+#include "scene/scene_stress.h"
+#include "support/gl_test.h"
+
+namespace {
+
+bool isTerminal(int decision) {
+  return decision == STEP_HIT || decision == STEP_MISS || decision == STEP_EARLY_BACKFACE ||
+         decision == STEP_EARLY_INSIDE || decision == STEP_EARLY_REGION;
+}
+
+// A pixel (image coordinates, row 0 on top) whose unfiltered visibility is strictly
+// between 0 and 1: a penumbra pixel.
+bool findPenumbraPixel(const PipelineRun& run, int& x, int& y) {
+  const auto visibility = run.read("trace.visibility");
+  const int w = run.frame->eyeWidth, h = run.frame->eyeHeight;
+  for (int row = h / 2; row < h; ++row)
+    for (int column = 0; column < w; ++column) {
+      const float v = visibility[size_t(row) * w + column];
+      if (v > 0.2f && v < 0.8f) {
+        x = column;
+        y = h - 1 - row;
+        return true;
+      }
+    }
+  return false;
+}
+
+Scene loadSceneForTest(const std::string& name) {
+  std::vector<std::string> warnings;
+  return loadScene(name, warnings);
+}
+
+}  // namespace
+
+class TraceRecords : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TraceRecords, DecisionsAddUpToTheVisibilityAndSteppingNeverDecreases) {
+  const std::string search = GetParam();
+  const std::vector<std::string> sets = {"trace.search=" + search, "trace.rays=3",
+                                         "trace.use_classification=false",
+                                         "light_layers.resolution=256"};
+  PipelineRun first(makeBuiltinScene("cube"), sets, 160, 160);
+  int x = -1, y = -1;
+  ASSERT_TRUE(findPenumbraPixel(first, x, y));
+  auto recordSets = sets;
+  recordSets.push_back("trace.record_x=" + std::to_string(x));
+  recordSets.push_back("trace.record_y=" + std::to_string(y));
+  PipelineRun run(makeBuiltinScene("cube"), recordSets, 160, 160);
+  const auto visibility = run.read("trace.visibility");
+  const float pixelVisibility = visibility[size_t(159 - y) * 160 + x];
+  EXPECT_EQ(pixelVisibility, first.read("trace.visibility")[size_t(159 - y) * 160 + x]);
+
+  std::map<int, std::vector<gpu::TraceStep>> byRay;
+  for (const gpu::TraceStep& step : run.frame->traceSteps) byRay[step.header.x].push_back(step);
+  ASSERT_EQ(byRay.size(), 9u) << "every one of the 3 x 3 rays leaves a record";
+  int unblocked = 0;
+  for (const auto& [ray, steps] : byRay) {
+    int terminals = 0;
+    for (const auto& step : steps) terminals += isTerminal(step.header.z);
+    EXPECT_EQ(terminals, 1) << "ray " << ray << " has exactly one terminal decision";
+    const int last = steps.back().header.z;
+    EXPECT_TRUE(isTerminal(last)) << "ray " << ray << " ends with a terminal decision";
+    unblocked += last == STEP_MISS || last == STEP_EARLY_REGION;
+    if (search != "hierarchical") continue;  // bisection steps go back and forth by design
+    for (size_t i = 0; i < steps.size(); ++i) {
+      EXPECT_GE(steps[i].stepping.y, steps[i].stepping.x) << "ray " << ray << " step " << i;
+      if (i > 0) {
+        EXPECT_GE(steps[i].stepping.x, steps[i - 1].stepping.y - 1e-6f) << "ray " << ray;
+      }
+    }
+  }
+  EXPECT_FLOAT_EQ(pixelVisibility, unblocked / 9.0f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Searches, TraceRecords,
+                         ::testing::Values("hierarchical", "linear_binary", "linear"));
+
+TEST(TraceStability, EveryOutputFiniteAndVisibilityInRangeOnEveryScene) {
+  std::vector<std::string> scenes = {"cube", "plate", "spheres", "engine"};
+  for (const std::string& stress : stressSceneNames()) scenes.push_back(stress);
+  for (const std::string& name : scenes)
+    for (const char* search : {"hierarchical", "linear_binary"})
+      for (const char* layers : {"two", "three"}) {
+        PipelineRun run(loadSceneForTest(name),
+                        {std::string("trace.search=") + search, std::string("trace.layers=") + layers,
+                         "light_layers.resolution=128"},
+                        96, 96);
+        const std::string where = name + " " + search + " " + layers;
+        for (const auto& [key, texture] : run.frame->textures)
+          for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer)
+            for (float value : texture.readFloats(layer))
+              ASSERT_TRUE(std::isfinite(value)) << key << " on " << where;
+        for (const char* key : {"trace.visibility", "filter.visibility", "hard_shadow.visibility"})
+          for (float value : run.read(key)) {
+            ASSERT_GE(value, 0.0f) << key << " on " << where;
+            ASSERT_LE(value, 1.0f) << key << " on " << where;
+          }
+        EXPECT_EQ(run.frame->counters.at("trace.iterationCapReached"), 0) << where;
+      }
+}
+
+TEST(TraceStability, IterationCapNeverReachedOnTheEngine) {
+  for (const char* search : {"hierarchical", "linear_binary"}) {
+    PipelineRun run(makeBuiltinScene("engine"),
+                    {std::string("trace.search=") + search, "trace.rays=2"}, 128, 128);
+    EXPECT_EQ(run.frame->counters.at("trace.iterationCapReached"), 0) << search;
+    EXPECT_GT(run.frame->counters.at("trace.raysSearched"), 100) << search;
+  }
+}
+
+// A light of (almost) zero size: every ray goes to the same point, so the trace is the
+// hard shadow (up to the different bias: along the ray vs along the light axis).
+TEST(TraceVersusHardShadow, PointLightGivesTheHardShadow) {
+  for (const char* name : {"plate", "cube"}) {
+    Scene scene = makeBuiltinScene(name);
+    scene.light.width = scene.light.height = 1e-3f;
+    PipelineRun run(scene, {"trace.rays=2", "light_layers.resolution=512"}, 200, 200);
+    const auto traced = run.read("trace.visibility");
+    const auto hard = run.read("hard_shadow.visibility");
+    int differ = 0, shadowed = 0;
+    for (size_t i = 0; i < traced.size(); ++i) {
+      differ += (traced[i] >= 0.5f) != (hard[i] >= 0.5f);
+      shadowed += hard[i] < 0.5f;
+    }
+    EXPECT_GT(shadowed, 500) << name;
+    // Differences only where the biases disagree: a thin rim along shadow borders.
+    EXPECT_LT(differ, int(0.01 * traced.size())) << name << ": " << differ << " pixels differ";
+  }
+}
