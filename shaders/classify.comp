@@ -5,7 +5,7 @@
 //            a ray's end moves towards the light by the trace's bias along the *ray*, which
 //            may be almost parallel to the map, so the receiver's own depth is the only
 //            bound on the deepest end point that holds for every ray;
-//   umbra    receiver depth minus the largest bias any ray gets (trace.bias + Eq 3.2 with
+//   umbra    receiver depth minus the largest bias any ray gets (light.bias + Eq 3.2 with
 //            n.l at its clamp) >= zNearMax: every ray ends behind the near layer (valid for
 //            a single-layer height field; off with three layers, §3.6);
 //   penumbra otherwise; outside: the receiver is not in the light's frustum.
@@ -25,7 +25,6 @@ layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
 };
 layout(location = 1) uniform int uIterations;
 layout(location = 2) uniform bool uUmbraTest;
-layout(location = 3) uniform vec3 uTraceBias;  // trace.bias, adaptive (0/1), min cosine
 
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
   uint listCount;  // = penumbra + umbra
@@ -45,13 +44,13 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   float receiverLsDepth = zToLsDepth(map.z);
   zRange = vec4(bounds, receiverLsDepth);
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
-                   && map.z > frame.lightDepthRange.x;
+                   && map.z > light.lightDepthRange.x;
   if (!insideMap) {
     zRange.w = isinf(receiverLsDepth) || isnan(receiverLsDepth) ? 0.0 : receiverLsDepth;
     return CLASS_OUTSIDE;
   }
-  float largestBias = uTraceBias.x;
-  if (uTraceBias.y != 0.0) largestBias += adaptiveBias(map.z, vec3(0.0), vec3(0.0), uTraceBias.z);
+  float largestBias = light.bias.x;
+  if (light.bias.y != 0.0) largestBias += adaptiveBias(map.z, vec3(0.0), vec3(0.0), light.bias.z);
   float endLsDepth = receiverLsDepth;                         // the deepest any ray can end
   float shallowestEnd = zToLsDepth(map.z - largestBias);      // the shallowest
   for (int i = 0; i < uIterations && endLsDepth > bounds.x; ++i) {

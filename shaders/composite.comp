@@ -5,6 +5,7 @@ layout(binding = 1) uniform sampler2D wsNormalTexture;
 layout(binding = 2) uniform sampler2D wsPositionTexture;
 layout(binding = 3) uniform sampler2D visibilityTexture;
 layout(binding = 0, rgba32f) uniform writeonly image2D colorImage;
+layout(location = 1) uniform float uAmbient;  // light that reaches shadowed surfaces
 
 void main() {
   ivec2 pixel = screenPixel();
@@ -17,11 +18,11 @@ void main() {
   }
   vec3 albedo = texelFetch(albedoTexture, pixel, 0).rgb;
   vec3 n = texelFetch(wsNormalTexture, pixel, 0).xyz;
-  vec3 toLight = frame.wsLightCenter.xyz - wsPosition.xyz;
+  vec3 toLight = light.wsLightCenter.xyz - wsPosition.xyz;
   vec3 l = toLight / max(length(toLight), 1e-20);
   // Lit only from the light's emitting side.
-  float lambert = dot(-l, frame.wsLightForward.xyz) > 0.0 ? max(dot(n, l), 0.0) : 0.0;
+  float lambert = dot(-l, light.wsLightForward.xyz) > 0.0 ? max(dot(n, l), 0.0) : 0.0;
   float visibility = clamp(texelFetch(visibilityTexture, pixel, 0).r, 0.0, 1.0);
-  vec3 color = albedo * (frame.shading.x + (1.0 - frame.shading.x) * visibility * lambert);
+  vec3 color = albedo * (uAmbient + (1.0 - uAmbient) * visibility * lambert);
   imageStore(colorImage, pixel, vec4(color, 1.0));
 }

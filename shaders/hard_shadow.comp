@@ -7,9 +7,7 @@ layout(binding = 0) uniform sampler2D wsPositionTexture;
 layout(binding = 1) uniform sampler2D nearLayer;
 layout(binding = 2) uniform sampler2D wsNormalTexture;
 layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
-layout(location = 1) uniform float uConstantBias;  // world units
-layout(location = 2) uniform bool uAdaptiveBias;   // add Eq 3.2
-layout(location = 3) uniform float uMinCosine;
+layout(location = 1) uniform float uOffset;  // hard_shadow.offset: extra constant bias (world)
 
 void main() {
   ivec2 pixel = screenPixel();
@@ -18,14 +16,14 @@ void main() {
   float visibility = 1.0;
   vec3 map = lightMapCoords(wsPosition.xyz);
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
-                   && map.z >= frame.lightDepthRange.x;
+                   && map.z >= light.lightDepthRange.x;
   if (wsPosition.w > 0.0 && insideMap) {
-    ivec2 texel = ivec2(map.xy * vec2(frame.sizes.zw));
+    ivec2 texel = ivec2(map.xy * vec2(light.mapSize.xy));
     float nearDepth = texelFetch(nearLayer, texel, 0).r;
-    float bias = uConstantBias;
-    if (uAdaptiveBias) {
+    float bias = light.bias.x + uOffset;
+    if (light.bias.y != 0.0) {
       vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
-      bias += adaptiveBias(map.z, wsNormal, -frame.wsLightForward.xyz, uMinCosine);
+      bias += adaptiveBias(map.z, wsNormal, -light.wsLightForward.xyz, light.bias.z);
     }
     visibility = zToLsDepth(map.z - bias) <= nearDepth ? 1.0 : 0.0;
   }

@@ -5,12 +5,11 @@
 #include "shared/hash.glsl"
 layout(binding = 0, rg32f) uniform writeonly image2D samplesImage;
 layout(binding = 1, r32f) uniform writeonly image2D bitsImage;
-layout(location = 1) uniform int uHashKind;  // HASH_MD5_16, HASH_MD5_64, HASH_PCG3D
 
 void main() {
   ivec2 pixel = screenPixel();
   if (pixel.x < 0) return;
-  uvec4 h = hashRand(uvec4(uvec2(pixel), 0u, 0u), frame.keys.x, uHashKind);
+  uvec4 h = hashRand(uvec4(uvec2(pixel), 0u, 0u), frame.keys.x, int(light.sampling.x));
   imageStore(samplesImage, pixel, vec4(toUnitSquare(h.xy), 0.0, 0.0));
   // The first word alone, as a gray level in [0,1): structure here is structure in samples.
   imageStore(bitsImage, pixel, vec4(toUnitSquare(h.xx).x));

@@ -4,6 +4,6 @@
 #include "shared/frame.glsl"
 layout(location = 0) in vec3 wsPosition;
 void main() {
-  vec4 lsPosition = frame.lightViewFromWorld * vec4(wsPosition, 1.0);
+  vec4 lsPosition = light.lightViewFromWorld * vec4(wsPosition, 1.0);
   gl_FragDepth = clamp(zToLsDepth(-lsPosition.z), 0.0, 1.0);
 }

@@ -9,7 +9,7 @@ void main() {
   wsPosition = inPosition;
   wsNormal = inNormal;
 #ifdef LIGHT_PASS
-  gl_Position = frame.lightClipFromWorld * vec4(inPosition, 1.0);
+  gl_Position = light.lightClipFromWorld * vec4(inPosition, 1.0);
 #else
   gl_Position = frame.clipFromWorld * vec4(inPosition, 1.0);
 #endif

@@ -19,7 +19,7 @@ void main() {
   float visibility = 1.0;
   vec3 map = lightMapCoords(wsPosition);
   if (all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0))) &&
-      map.z >= frame.lightDepthRange.x)
+      map.z >= light.lightDepthRange.x)
     visibility = traceVisibility(wsPosition, n, pixel, whole.xz, counts);
   addTotals(counts, uint(trace.config.x * trace.config.x));
   outVisibility = visibility;

@@ -1,33 +1,43 @@
-// The pipeline, in execution order (thesis Algorithm 1, deferred form; DESIGN.md §2).
-#include <memory>
-#include <vector>
+// The registry: every stage, one line each, with the edges the pipeline cannot infer.
+// A slot without an edge is wired to the one output of its name (app/core/pipeline.h); the
+// pipeline derives the execution order from the edges and runs only what is asked for.
+// Thesis Algorithm 1 (deferred form) reads top to bottom; then the other methods, the
+// ground truth and the final image. A new shadow method is one more line here.
+#include "core/pipeline.h"
 
-#include "core/stage.h"
-
+// 1. Shared inputs: the light and the eye's G-buffer; the light's depth layers.
+std::unique_ptr<Stage> makeLightStage();
 std::unique_ptr<Stage> makeGBufferStage();
 std::unique_ptr<Stage> makeHashStage();
 std::unique_ptr<Stage> makeLightLayersStage();
 std::unique_ptr<Stage> makeNBufferStage();
+// 2. Monte Carlo soft shadows (Curtis & Olano).
 std::unique_ptr<Stage> makeClassifyStage();
-std::unique_ptr<Stage> makeHardShadowStage();
 std::unique_ptr<Stage> makeTraceStage();
 std::unique_ptr<Stage> makeFilterStage();
+// 3. Baselines.
+std::unique_ptr<Stage> makeHardShadowStage();
+// 4. Ground truth and its comparison; 5. the image.
 std::unique_ptr<Stage> makeReferenceStage();
 std::unique_ptr<Stage> makeErrorStage();
 std::unique_ptr<Stage> makeCompositeStage();
 
-std::vector<std::unique_ptr<Stage>> makeStages() {
-  std::vector<std::unique_ptr<Stage>> stages;
-  stages.push_back(makeGBufferStage());
-  stages.push_back(makeHashStage());
-  stages.push_back(makeLightLayersStage());
-  stages.push_back(makeNBufferStage());
-  stages.push_back(makeClassifyStage());
-  stages.push_back(makeHardShadowStage());
-  stages.push_back(makeTraceStage());
-  stages.push_back(makeFilterStage());
-  stages.push_back(makeReferenceStage());  // ground truth (off by default; DESIGN.md §7)
-  stages.push_back(makeErrorStage());
-  stages.push_back(makeCompositeStage());
-  return stages;
+std::vector<StageEntry> makeRegistry() {
+  std::vector<StageEntry> registry;
+  auto add = [&](std::unique_ptr<Stage> stage, std::vector<StageEntry::Edge> edges = {}) {
+    registry.push_back({std::move(stage), std::move(edges)});
+  };
+  add(makeLightStage());                             // §3, Eq 3.1-3.2
+  add(makeGBufferStage());                           // Alg. 1, step 1
+  add(makeHashStage());                              // §3.1, App. A
+  add(makeLightLayersStage());                       // §3.3
+  add(makeNBufferStage());                           // §3.5
+  add(makeClassifyStage());                          // §3.6
+  add(makeTraceStage());                             // §3.1-3.7, Alg. 2
+  add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2
+  add(makeHardShadowStage());                        // §2.3
+  add(makeReferenceStage());                         // ground truth (Embree)
+  add(makeErrorStage());                             // Atty 2006 §4.2.1
+  add(makeCompositeStage());                         // Alg. 1, last step
+  return registry;
 }

@@ -30,7 +30,7 @@ std::string number(double value) {
 
 BenchConfig hardShadow(int map) {
   return {"hard shadow map " + std::to_string(map), "hard_shadow",
-          {"light_layers.resolution=" + std::to_string(map), "composite.shadow=hard_shadow",
+          {"light.resolution=" + std::to_string(map), "composite.shadow=hard_shadow",
            "error.method=hard_shadow"}};
 }
 
@@ -44,11 +44,11 @@ BenchConfig monteCarlo(const std::string& search, int layers, int rays, int map 
   if (!filter) label += " unfiltered";
   label += " map " + std::to_string(map);
   return {label, "monte_carlo",
-          {"trace.search=" + search, std::string("trace.layers=") + layerNames[layers],
+          {"trace.search=" + search, std::string("light.layers=") + layerNames[layers],
            "trace.rays=" + std::to_string(rays),
            std::string("trace.deferred=") + (deferred ? "true" : "false"),
            std::string("filter.enabled=") + (filter ? "true" : "false"),
-           "light_layers.resolution=" + std::to_string(map),
+           "light.resolution=" + std::to_string(map),
            std::string("composite.shadow=") + (filter ? "filter" : "trace"),
            std::string("error.method=") + (filter ? "filter" : "trace")}};
 }

@@ -79,9 +79,9 @@ BenchResult measureError(Pipeline& pipeline, Frame& frame, size_t setup, const B
   r.label = config.label;
   r.method = config.method;
   r.search = pipeline.param("trace.search").asEnum();
-  r.layers = pipeline.param("trace.layers").asEnum();
+  r.layers = pipeline.param("light.layers").asEnum();
   r.rays = pipeline.param("trace.rays").asInt();
-  r.map = pipeline.param("light_layers.resolution").asInt();
+  r.map = pipeline.param("light.resolution").asInt();
   r.deferred = pipeline.param("trace.deferred").asBool();
   r.filter = pipeline.param("filter.enabled").asBool();
   r.family = family(r);
@@ -202,7 +202,8 @@ int runBench(const BenchOptions& options) {
       pipeline.param("reference.enabled").value = 0;  // only the G-buffer is needed here
       pipeline.run(frame);
       const ReferenceRequest request = makeReferenceRequest(
-          frame, options.referenceSamples, pipeline.param("reference.sampling").asEnum() == "stratified");
+          frame, frame.texture("gbuffer.wsPosition"), frame.texture("gbuffer.wsNormal"),
+          options.referenceSamples, pipeline.param("reference.sampling").asEnum() == "stratified");
       const std::string key = referenceCacheKey(setup.scene, request);
       if (std::filesystem::exists(referenceCacheDirectory() / (key + ".exr"))) {
         cachedSeconds[&setup - setups.data()] = cachedReferenceSeconds(key);

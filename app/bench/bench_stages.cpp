@@ -75,7 +75,7 @@ int runBenchStages(const BenchStagesOptions& options) {
       for (const std::string& each :
            {"trace.search=" + config.search, "trace.rays=" + std::to_string(config.rays),
             std::string("trace.deferred=") + (config.deferred ? "true" : "false"),
-            "light_layers.resolution=" + std::to_string(options.mapSize)})
+            "light.resolution=" + std::to_string(options.mapSize)})
         assignments.push_back(each);
       for (const std::string& assignment : assignments)
         if (std::string problem = pipeline.set(assignment); !problem.empty()) {

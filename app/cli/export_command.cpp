@@ -27,7 +27,7 @@ std::vector<std::string> exportFrame(const std::string& directory, const Frame& 
     for (const Output& output : stage->outputs()) {
       const std::string key = stage->name() + "." + output.name;
       if (!frame.has(key)) continue;
-      const GlTexture& texture = frame.input(key);
+      const GlTexture& texture = frame.texture(key);
       run["outputs"][key] = {{"size", {texture.width(), texture.height()}},
                              {"layers", std::max(texture.layers(), 1)},
                              {"channels", output.channels}};

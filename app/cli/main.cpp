@@ -10,6 +10,7 @@
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
 #include "cli/trace_command.h"
+#include "core/pipeline.h"
 #include "window/window_app.h"
 
 int main(int argc, char** argv) {
@@ -114,6 +115,10 @@ int main(int argc, char** argv) {
   benchCommand->add_option("--time-limit", report.timeLimit, "seconds of reference tracing allowed "
                            "(estimated before starting)")->check(CLI::PositiveNumber)->capture_default_str();
 
+  CLI::App* graphCommand = app.add_subcommand(
+      "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
+               "penumbra graph | dot -Tsvg > graph.svg");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -125,6 +130,10 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (*graphCommand) {
+    std::fputs(Pipeline().dot().c_str(), stdout);
+    return 0;
+  }
   if (*exportCommand) return runExport(exporting);
   if (*traceCommand) return runTraceCommand(tracing);
   if (*benchStagesCommand) return runBenchStages(benching);

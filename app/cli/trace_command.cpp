@@ -16,7 +16,7 @@ const char* stepDecisionName(int decision) {
 std::string traceStepsJson(const Frame& frame, int x, int y) {
   nlohmann::json result;
   result["pixel"] = {x, y};
-  const GlTexture& visibility = frame.input("trace.visibility");
+  const GlTexture& visibility = frame.texture("trace.visibility");
   const int glY = frame.eyeHeight - 1 - y;
   float value = 0;
   glGetTextureSubImage(visibility.id(), 0, x, glY, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof value,
@@ -25,7 +25,7 @@ std::string traceStepsJson(const Frame& frame, int x, int y) {
   result["rays"] = frame.pipeline.param("trace.rays").asInt() *
                    frame.pipeline.param("trace.rays").asInt();
   result["search"] = frame.pipeline.param("trace.search").asEnum();
-  result["layers"] = frame.pipeline.param("trace.layers").asEnum();
+  result["layers"] = frame.pipeline.param("light.layers").asEnum();
   nlohmann::json steps = nlohmann::json::array();
   for (const gpu::TraceStep& step : frame.traceSteps)
     steps.push_back({{"ray", step.header.x},

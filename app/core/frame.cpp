@@ -2,9 +2,13 @@
 
 #include <stdexcept>
 
+#include "core/pipeline.h"
+
 GlTexture& Frame::output(const Stage& stage, const std::string& name, int width, int height,
                          int layers) {
   const Output& declared = stage.output(name);  // throws for undeclared outputs
+  if (declared.isBuffer())
+    throw std::logic_error(stage.name() + "." + name + " is a buffer output (outputBuffer)");
   GlTexture& texture = textures[stage.name() + "." + name];
   if (texture.id() == 0 || texture.width() != width || texture.height() != height ||
       texture.layers() != layers || texture.internalFormat() != declared.format)
@@ -12,10 +16,50 @@ GlTexture& Frame::output(const Stage& stage, const std::string& name, int width,
   return texture;
 }
 
-const GlTexture& Frame::input(const std::string& stageDotOutput) const {
+GlBuffer& Frame::outputBuffer(const Stage& stage, const std::string& name) {
+  if (!stage.output(name).isBuffer())
+    throw std::logic_error(stage.name() + "." + name + " is a texture output (output)");
+  auto& slot = buffers[stage.name() + "." + name];
+  if (!slot) slot = std::make_unique<GlBuffer>();
+  return *slot;
+}
+
+namespace {
+std::string sourceOf(const Frame& frame, const Stage& stage, const std::string& slot) {
+  stage.input(slot);  // throws for undeclared slots
+  const std::string source = frame.pipeline.source(stage.name(), slot);
+  if (source.empty())
+    throw std::runtime_error(stage.name() + "." + slot + " is not connected (set to none)");
+  return source;
+}
+}  // namespace
+
+const GlTexture& Frame::input(const Stage& stage, const std::string& slot) const {
+  const std::string source = sourceOf(*this, stage, slot);
+  auto found = textures.find(source);
+  if (found == textures.end())
+    throw std::runtime_error("input " + stage.name() + "." + slot + ": its producer '" +
+                             source + "' has not written it this run");
+  return found->second;
+}
+
+const GlBuffer& Frame::inputBuffer(const Stage& stage, const std::string& slot) const {
+  const std::string source = sourceOf(*this, stage, slot);
+  auto found = buffers.find(source);
+  if (found == buffers.end() || !found->second)
+    throw std::runtime_error("input " + stage.name() + "." + slot + ": its producer '" +
+                             source + "' has not written it this run");
+  return *found->second;
+}
+
+bool Frame::connected(const Stage& stage, const std::string& slot) const {
+  const std::string source = pipeline.source(stage.name(), slot);
+  return !source.empty() && (textures.count(source) || buffers.count(source));
+}
+
+const GlTexture& Frame::texture(const std::string& stageDotOutput) const {
   auto found = textures.find(stageDotOutput);
   if (found == textures.end())
-    throw std::runtime_error("stage input '" + stageDotOutput +
-                             "' has not been written this frame (is its stage before this one?)");
+    throw std::runtime_error("output '" + stageDotOutput + "' has not been written this run");
   return found->second;
 }

@@ -1,39 +1,37 @@
-// Everything one run of the pipeline reads and writes: the scene on the GPU, the per-frame
-// uniforms, and every stage output by name ("stage.output").
+// Everything one run of the pipeline reads and writes: the scene on the GPU, the camera
+// uniforms, and every stage output by name ("stage.output"). Stages read only their own
+// declared input slots (input(), inputBuffer()); views, export and tests read outputs by
+// name (texture()).
 #pragma once
 #include <chrono>
 #include <map>
 #include <memory>
 #include <string>
 
+#include "core/stage.h"
 #include "gl/gl_texture.h"
 #include "gl/gpu_layout_trace.h"
 #include "gl/gpu_scene.h"
 #include "scene/light_frame.h"
-#include "core/stage.h"
 
 class Pipeline;
 
 struct Frame {
   const Scene& scene;
   const GpuScene& gpuScene;
-  const Pipeline& pipeline;  // for reading another stage's parameters
+  const Pipeline& pipeline;  // resolves input slots to producers; not for reading parameters
   int eyeWidth = 512, eyeHeight = 512;
   std::uint32_t frameKey = 0;  // scrambles the hash per frame (thesis Appendix A "key")
+  // CPU copy of the `light` stage's output (written by that stage; for the CPU-side readers:
+  // reference, views, the trace panel).
   LightFrame light{};
   gpu::FrameUniforms uniforms{};
   GlBuffer uniformBuffer;
 
   std::map<std::string, GlTexture> textures;  // "stage.output"
-  std::map<std::string, double> counters;     // "trace.rays", ...
+  std::map<std::string, double> counters;     // statistics for people: "trace.rays", ...
   std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
-  // Storage buffers one stage hands to a later one ("classify.tracedPixels"); not exported.
-  std::map<std::string, std::unique_ptr<GlBuffer>> buffers;
-  GlBuffer& buffer(const std::string& name) {
-    auto& slot = buffers[name];
-    if (!slot) slot = std::make_unique<GlBuffer>();
-    return *slot;
-  }
+  std::map<std::string, std::unique_ptr<GlBuffer>> buffers;  // buffer outputs, "stage.output"
 
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}
@@ -41,7 +39,16 @@ struct Frame {
   // Allocates (or reuses, when the shape matches) the texture of a declared output.
   GlTexture& output(const Stage& stage, const std::string& name, int width, int height,
                     int layers = 0);
-  // A texture written earlier in the frame; throws naming what is missing.
-  const GlTexture& input(const std::string& stageDotOutput) const;
+  // The storage buffer of a declared buffer output (created empty on first use).
+  GlBuffer& outputBuffer(const Stage& stage, const std::string& name);
+  // The texture wired to `slot` of `stage`; throws naming the slot and producer if the
+  // producer has not written it this run.
+  const GlTexture& input(const Stage& stage, const std::string& slot) const;
+  const GlBuffer& inputBuffer(const Stage& stage, const std::string& slot) const;
+  // Whether `slot` is wired and written this run (false for a choice slot set to "none").
+  bool connected(const Stage& stage, const std::string& slot) const;
+
+  // An output by name, for views, export and tests; throws naming what is missing.
+  const GlTexture& texture(const std::string& stageDotOutput) const;
   bool has(const std::string& stageDotOutput) const { return textures.count(stageDotOutput) > 0; }
 };

@@ -1,15 +1,180 @@
 #include "core/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <functional>
 #include <glm/gtc/matrix_transform.hpp>
+#include <set>
 #include <stdexcept>
+
+namespace {
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string formatName(GLenum format) {
+  switch (format) {
+    case kBufferFormat: return "buffer";
+    case GL_R32F: return "R32F";
+    case GL_RG32F: return "RG32F";
+    case GL_RGBA32F: return "RGBA32F";
+    case GL_RGBA8: return "RGBA8";
+    case GL_DEPTH_COMPONENT32F: return "DEPTH32F";
+    default: return "format 0x" + std::to_string(format);
+  }
+}
+
+}  // namespace
+
+Pipeline::Pipeline() : Pipeline(makeRegistry()) {}
+
+Pipeline::Pipeline(std::vector<StageEntry> registry) {
+  for (StageEntry& entry : registry) {
+    if (!entry.stage) throw std::invalid_argument("registry: empty stage entry");
+    if (hasStage(entry.stage->name()))
+      throw std::invalid_argument("registry: two stages named '" + entry.stage->name() + "'");
+    stages_.push_back(std::move(entry.stage));
+  }
+  wire(registry);
+  order();
+}
+
+// 1. Wiring: every input slot gets its producer(s); a missing or ambiguous producer or a
+//    format mismatch is an error naming the stage and slot.
+void Pipeline::wire(std::vector<StageEntry>& registry) {
+  std::map<std::string, const std::vector<StageEntry::Edge>*> edgesOf;
+  for (size_t i = 0; i < registry.size(); ++i) edgesOf[stages_[i]->name()] = &registry[i].edges;
+
+  for (const auto& consumer : stages_) {
+    const std::string where = "stage '" + consumer->name() + "'";
+    const auto& edges = *edgesOf.at(consumer->name());
+    for (const StageEntry::Edge& edge : edges) {
+      const auto& in = consumer->inputs();
+      if (std::none_of(in.begin(), in.end(), [&](const Input& i) { return i.name == edge.slot; }))
+        throw std::invalid_argument("registry: " + where + " has no input slot '" + edge.slot + "'");
+    }
+    for (const Input& input : consumer->inputs()) {
+      const std::string slot = where + ", input '" + input.name + "'";
+      Wire wire{consumer->name(), input.name, {}};
+      if (input.isChoice()) {
+        // A choice slot: every output carrying the role, one option per producing stage.
+        Param& choice = consumer->param(input.choiceParam);
+        choice.options.clear();
+        for (const auto& producer : stages_) {
+          if (producer.get() == consumer.get()) continue;
+          for (const Output& output : producer->outputs()) {
+            if (!(output.roles & input.chooseRole)) continue;
+            if (output.format != input.format)
+              throw std::invalid_argument(slot + ": candidate " + producer->name() + "." +
+                                          output.name + " is " + formatName(output.format) +
+                                          ", the slot needs " + formatName(input.format));
+            if (std::find(choice.options.begin(), choice.options.end(), producer->name()) !=
+                choice.options.end())
+              throw std::invalid_argument("stage '" + producer->name() +
+                                          "' has two outputs with the same role");
+            choice.options.push_back(producer->name());
+            wire.sources.push_back(producer->name() + "." + output.name);
+          }
+        }
+        if (input.allowNone) choice.options.push_back("none");
+        if (choice.options.empty())
+          throw std::invalid_argument(slot + ": no stage produces an output with its role");
+        auto initial = std::find(choice.options.begin(), choice.options.end(), input.defaultChoice);
+        choice.value = initial == choice.options.end() ? 0 : double(initial - choice.options.begin());
+        choice.type = Param::Type::Enum, choice.min = 0;
+        choice.max = double(choice.options.size() - 1);
+      } else {
+        // A fixed slot: the registry's edge, else the one output of the slot's name.
+        std::string source;
+        for (const StageEntry::Edge& edge : edges)
+          if (edge.slot == input.name) source = edge.source;
+        if (source.empty()) {
+          std::vector<std::string> found;
+          for (const auto& producer : stages_)
+            for (const Output& output : producer->outputs())
+              if (producer.get() != consumer.get() && output.name == input.name)
+                found.push_back(producer->name() + "." + output.name);
+          if (found.empty())
+            throw std::invalid_argument(slot + ": no stage has an output named '" + input.name +
+                                        "' (wire it in stages/registry.cpp)");
+          if (found.size() > 1)
+            throw std::invalid_argument(slot + ": ambiguous, several producers (" + joined(found) +
+                                        "); name one in stages/registry.cpp");
+          source = found.front();
+        }
+        const size_t dot = source.find('.');
+        if (dot == std::string::npos || !hasStage(source.substr(0, dot)))
+          throw std::invalid_argument(slot + ": unknown producer '" + source + "'");
+        const Stage& producer = stage(source.substr(0, dot));
+        const auto& outs = producer.outputs();
+        auto output = std::find_if(outs.begin(), outs.end(),
+                                   [&](const Output& o) { return o.name == source.substr(dot + 1); });
+        if (output == outs.end())
+          throw std::invalid_argument(slot + ": stage '" + producer.name() +
+                                      "' has no output '" + source.substr(dot + 1) + "'");
+        const bool wantBuffer = input.format == kBufferFormat;
+        if (wantBuffer != output->isBuffer() || (input.format != 0 && input.format != output->format))
+          throw std::invalid_argument(slot + ": format mismatch, " + source + " is " +
+                                      formatName(output->format) + ", the slot needs " +
+                                      (input.format ? formatName(input.format) : "a texture"));
+        wire.sources.push_back(source);
+      }
+      wires_.push_back(std::move(wire));
+    }
+  }
+}
+
+// 2. Execution order: a topological order of every possible edge (each choice slot counts
+//    all its candidates, so any choice runs in a valid order); registry order among equals.
+void Pipeline::order() {
+  const size_t n = stages_.size();
+  std::map<std::string, size_t> index;
+  for (size_t i = 0; i < n; ++i) index[stages_[i]->name()] = i;
+  std::vector<std::set<size_t>> consumers(n);
+  std::vector<int> pending(n, 0);
+  for (const Wire& wire : wires_)
+    for (const std::string& source : wire.sources) {
+      const size_t from = index.at(source.substr(0, source.find('.'))), to = index.at(wire.consumer);
+      if (consumers[from].insert(to).second) ++pending[to];
+    }
+  std::vector<size_t> ordered;
+  std::vector<bool> done(n, false);
+  while (ordered.size() < n) {
+    size_t next = n;
+    for (size_t i = 0; i < n && next == n; ++i)
+      if (!done[i] && pending[i] == 0) next = i;
+    if (next == n) {
+      std::vector<std::string> cycle;
+      for (size_t i = 0; i < n; ++i)
+        if (!done[i]) cycle.push_back(stages_[i]->name());
+      throw std::invalid_argument("stage graph has a cycle among: " + joined(cycle));
+    }
+    done[next] = true;
+    ordered.push_back(next);
+    for (size_t to : consumers[next]) --pending[to];
+  }
+  std::vector<std::unique_ptr<Stage>> sorted;
+  for (size_t i : ordered) sorted.push_back(std::move(stages_[i]));
+  stages_ = std::move(sorted);
+  times_.clear();
+  for (const auto& stage : stages_) times_.push_back({stage->name()});
+}
+
+bool Pipeline::hasStage(const std::string& name) const {
+  return std::any_of(stages_.begin(), stages_.end(),
+                     [&](const auto& stage) { return stage && stage->name() == name; });
+}
 
 Stage& Pipeline::stage(const std::string& name) const {
   for (const auto& stage : stages_)
     if (stage->name() == name) return *stage;
-  std::string valid;
-  for (const auto& stage : stages_) valid += (valid.empty() ? "" : ", ") + stage->name();
-  throw std::out_of_range("unknown stage '" + name + "'; valid: " + valid);
+  std::vector<std::string> valid;
+  for (const auto& stage : stages_) valid.push_back(stage->name());
+  throw std::out_of_range("unknown stage '" + name + "'; valid: " + joined(valid));
 }
 
 std::vector<std::string> Pipeline::paramKeys() const {
@@ -27,9 +192,8 @@ Param& Pipeline::param(const std::string& stageDotKey) const {
         for (Param& param : stage->params())
           if (param.key == stageDotKey.substr(dot + 1)) return param;
   }
-  std::string valid;
-  for (const std::string& key : paramKeys()) valid += (valid.empty() ? "" : ", ") + key;
-  throw std::out_of_range("unknown parameter '" + stageDotKey + "'; valid keys: " + valid);
+  throw std::out_of_range("unknown parameter '" + stageDotKey + "'; valid keys: " +
+                          joined(paramKeys()));
 }
 
 std::string Pipeline::set(const std::string& assignment) {
@@ -45,12 +209,87 @@ std::string Pipeline::set(const std::string& assignment) {
   }
 }
 
-void Pipeline::prepare(Frame& frame) const {
-  const Scene& scene = frame.scene;
-  frame.light = computeLightFrame(scene.light, scene.bounds(),
-                                  param("light_layers.fov_degrees").asFloat());
-  const int layerSize = param("light_layers.resolution").asInt();
+std::vector<std::string> Pipeline::methods(unsigned role) const {
+  std::vector<std::string> names;
+  for (const auto& stage : stages_)
+    for (const Output& output : stage->outputs())
+      if (output.roles & role) {
+        names.push_back(stage->name());
+        break;
+      }
+  return names;
+}
 
+std::string Pipeline::methodOutput(const std::string& method) const {
+  for (const Output& output : stage(method).outputs())
+    if (output.roles != kRoleNone) return method + "." + output.name;
+  throw std::out_of_range("stage '" + method + "' is not a shadow method; methods: " +
+                          joined(methods(kRoleShadowMethod | kRoleGroundTruth)));
+}
+
+const Pipeline::Wire& Pipeline::wireOf(const std::string& stage, const std::string& slot) const {
+  for (const Wire& wire : wires_)
+    if (wire.consumer == stage && wire.slot == slot) return wire;
+  throw std::out_of_range("stage '" + stage + "' has no input slot '" + slot + "'");
+}
+
+std::string Pipeline::source(const std::string& stageName, const std::string& slot) const {
+  const Wire& wire = wireOf(stageName, slot);
+  const Input& input = stage(stageName).input(slot);
+  if (!input.isChoice()) return wire.sources.front();
+  const std::string& chosen = stage(stageName).param(input.choiceParam).asEnum();
+  return chosen == "none" ? "" : methodOutput(chosen);
+}
+
+std::vector<std::string> Pipeline::dependencies(const std::vector<std::string>& outputs) const {
+  std::set<std::string> needed;
+  std::function<void(const std::string&)> visit = [&](const std::string& stageName) {
+    if (!needed.insert(stageName).second) return;
+    for (const Input& input : stage(stageName).inputs()) {
+      const std::string producer = source(stageName, input.name);
+      if (!producer.empty()) visit(producer.substr(0, producer.find('.')));
+    }
+  };
+  for (const std::string& output : outputs) visit(output.substr(0, output.find('.')));
+  std::vector<std::string> ordered;
+  for (const auto& stage : stages_)
+    if (needed.count(stage->name())) ordered.push_back(stage->name());
+  return ordered;
+}
+
+std::vector<std::string> Pipeline::allOutputs() const {
+  std::vector<std::string> keys;
+  for (const auto& stage : stages_)
+    for (const Output& output : stage->outputs())
+      if (!output.isBuffer()) keys.push_back(stage->name() + "." + output.name);
+  return keys;
+}
+
+std::uint64_t Pipeline::revision() const {
+  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over every key and value
+  auto mix = [&](const void* data, size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+  };
+  for (const auto& stage : stages_)
+    for (const Param& param : stage->params()) {
+      mix(param.key.data(), param.key.size());
+      mix(&param.value, sizeof param.value);
+    }
+  return hash;
+}
+
+const StageTime& Pipeline::lastTime(const std::string& stageName) const {
+  for (const StageTime& time : times_)
+    if (time.stage == stageName) return time;
+  stage(stageName);  // throws naming the valid stages
+  throw std::logic_error("no timing slot for stage " + stageName);
+}
+
+// The eye camera (Algorithm 1's eye pass) and the per-frame key: the only uniforms that are
+// not a stage's output.
+void Pipeline::prepareCamera(Frame& frame) const {
+  const Scene& scene = frame.scene;
   gpu::FrameUniforms& u = frame.uniforms;
   const float aspect = float(frame.eyeWidth) / float(frame.eyeHeight);
   const Bounds bounds = scene.bounds();
@@ -64,33 +303,77 @@ void Pipeline::prepare(Frame& frame) const {
       glm::perspective(glm::radians(scene.camera.fovYDegrees), aspect, eyeNear, eyeFar);
   u.clipFromWorld = clipFromView * viewFromWorld;
   u.worldFromClip = glm::inverse(u.clipFromWorld);
-  u.lightClipFromWorld = frame.light.lightClipFromWorld;
-  u.lightViewFromWorld = frame.light.lightViewFromWorld;
   u.wsEyePosition = glm::vec4(scene.camera.position, 1);
-  u.wsLightCenter = glm::vec4(scene.light.center, scene.light.width * scene.light.height);
-  u.wsLightRight = glm::vec4(frame.light.right, 0.5f * scene.light.width);
-  u.wsLightUp = glm::vec4(frame.light.up, 0.5f * scene.light.height);
-  u.wsLightForward = glm::vec4(frame.light.forward, frame.light.lightDepth);
-  u.lightDepthRange = glm::vec4(frame.light.zNear, frame.light.zFar, frame.light.tanHalfFovX,
-                                frame.light.tanHalfFovY);
-  u.sizes = glm::uvec4(frame.eyeWidth, frame.eyeHeight, layerSize, layerSize);
-  u.shading = glm::vec4(param("composite.ambient").asFloat(), 0, 0, 0);
+  u.sizes = glm::uvec4(frame.eyeWidth, frame.eyeHeight, 0, 0);
   u.keys = glm::uvec4(frame.frameKey, 0, 0, 0);
   frame.uniformBuffer.upload(&u, sizeof u);
   glBindBufferBase(GL_UNIFORM_BUFFER, binding::kFrameUniforms, frame.uniformBuffer.id());
 }
 
-void Pipeline::run(Frame& frame) {
-  prepare(frame);
+std::string Pipeline::timingKey(const Frame& frame) const {
+  return std::to_string(revision()) + "/" + frame.scene.name + "/" +
+         std::to_string(frame.eyeWidth) + "x" + std::to_string(frame.eyeHeight);
+}
+
+void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
+  // 1. What runs: the dependency closure of the requested outputs (everything if none).
+  std::vector<std::string> needed;
+  if (requested.empty()) {
+    for (const auto& stage : stages_) needed.push_back(stage->name());
+  } else {
+    needed = dependencies(requested);
+  }
+  const std::set<std::string> willRun(needed.begin(), needed.end());
+
+  // 2. A new timing series whenever parameters, scene or size change.
+  const std::string key = timingKey(frame);
+  if (key != seriesKey_) series_.clear(), seriesKey_ = key;
+
+  prepareCamera(frame);
   frame.counters.clear();
-  times_.clear();
   glFinish();
-  for (const auto& stage : stages_) {
+  for (size_t i = 0; i < stages_.size(); ++i) {
+    Stage& stage = *stages_[i];
+    StageTime& time = times_[i];
+    if (!willRun.count(stage.name())) {
+      // Not needed: its old outputs go, so nothing downstream or on screen is stale.
+      for (const Output& output : stage.outputs()) {
+        frame.textures.erase(stage.name() + "." + output.name);
+        frame.buffers.erase(stage.name() + "." + output.name);
+      }
+      time.ran = false, time.milliseconds = 0;
+      continue;
+    }
     const auto start = std::chrono::steady_clock::now();
-    stage->run(frame);
+    stage.run(frame);
     glFinish();
     const std::chrono::duration<double, std::milli> elapsed =
         std::chrono::steady_clock::now() - start;
-    times_.push_back({stage->name(), elapsed.count()});
+    std::vector<double>& runs = series_[stage.name()];
+    runs.push_back(elapsed.count());
+    std::vector<double> sorted = runs;
+    std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+    time.ran = true, time.milliseconds = elapsed.count();
+    time.median = sorted[sorted.size() / 2], time.runs = int(runs.size());
   }
+}
+
+std::string Pipeline::dot() const {
+  std::string text = "digraph penumbra {\n  rankdir=LR;\n  node [shape=box, fontname=\"sans\"];\n";
+  for (const auto& stage : stages_) {
+    std::string shape;
+    for (const Output& output : stage->outputs())
+      if (output.roles & kRoleShadowMethod) shape = ", style=bold";
+    text += "  \"" + stage->name() + "\" [label=\"" + stage->name() + "\"" + shape + "];\n";
+  }
+  for (const Wire& wire : wires_) {
+    const bool choice = stage(wire.consumer).input(wire.slot).isChoice();
+    for (const std::string& source : wire.sources) {
+      const std::string producer = source.substr(0, source.find('.'));
+      text += "  \"" + producer + "\" -> \"" + wire.consumer + "\" [label=\"" +
+              source.substr(source.find('.') + 1) + (source.substr(source.find('.') + 1) == wire.slot ? "" : " : " + wire.slot) +
+              "\"" + (choice ? ", style=dashed" : "") + "];\n";
+    }
+  }
+  return text + "}\n";
 }

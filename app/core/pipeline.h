@@ -1,6 +1,9 @@
-// The stages in execution order (thesis Algorithm 1, deferred form; DESIGN.md §2), their
-// parameters addressed as "stage.key", and per-stage timing.
+// The stage graph (DESIGN.md §2, changed: NOTES.md "stage graph"): the registry's stages,
+// their slots wired to producers, checked and ordered when built; parameters addressed as
+// "stage.key"; demand-driven runs; per-stage timing.
 #pragma once
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,32 +11,87 @@
 #include "core/frame.h"
 #include "core/stage.h"
 
-// Defined in stages/registry.cpp: the list of stages, in order.
-std::vector<std::unique_ptr<Stage>> makeStages();
+// One registry line: a stage and the edges that wire its input slots. A slot without an
+// edge is wired to the one output of the same name elsewhere in the graph (gbuffer's
+// "wsPosition", light's "light", ...); an edge names the producer where that is ambiguous.
+struct StageEntry {
+  struct Edge {
+    std::string slot;    // "visibility"
+    std::string source;  // "trace.visibility"
+  };
+  std::unique_ptr<Stage> stage;
+  std::vector<Edge> edges;
+};
+
+// Defined in stages/registry.cpp: thesis Algorithm 1 in order, then the other methods.
+std::vector<StageEntry> makeRegistry();
 
 struct StageTime {
   std::string stage;
-  double milliseconds;
+  bool ran = false;          // false: not needed by the requested outputs ("not run")
+  double milliseconds = 0;   // this run (0 when not run)
+  double median = 0;         // over `runs` runs with identical parameters, scene and size
+  int runs = 0;
 };
 
 class Pipeline {
 public:
-  Pipeline() : stages_(makeStages()) {}
+  Pipeline();  // makeRegistry()
+  // Throws std::invalid_argument naming the stage and slot for a missing or ambiguous
+  // producer, a format mismatch or a cycle.
+  explicit Pipeline(std::vector<StageEntry> registry);
 
+  // Stages in execution order (derived from the edges; registry order among equals).
   const std::vector<std::unique_ptr<Stage>>& stages() const { return stages_; }
   Stage& stage(const std::string& name) const;  // throws naming the valid stages
+  bool hasStage(const std::string& name) const;
   Param& param(const std::string& stageDotKey) const;  // throws naming the valid keys
   std::vector<std::string> paramKeys() const;
   // "stage.key=value": returns "" or a message naming the valid keys or range.
   std::string set(const std::string& assignment);
 
-  // Fills the per-frame uniforms (camera, light frame of Eq 3.1) and runs every stage,
-  // timing each with glFinish + steady clock (GL_TIME_ELAPSED is wrong on llvmpipe).
-  void run(Frame& frame);
+  // Stages whose output carries `role` (kRoleShadowMethod, kRoleGroundTruth), in order;
+  // the method's visibility is "<stage>.<output>" as methodOutput() gives it.
+  std::vector<std::string> methods(unsigned role = kRoleShadowMethod) const;
+  std::string methodOutput(const std::string& method) const;  // "filter" -> "filter.visibility"
+
+  // The producer "stage.output" wired to `slot` of `stage` under the current parameters;
+  // "" for a choice slot set to "none".
+  std::string source(const std::string& stage, const std::string& slot) const;
+  // Every stage that `outputs` ("stage.output") depend on under the current parameters,
+  // the producers themselves included, in execution order.
+  std::vector<std::string> dependencies(const std::vector<std::string>& outputs) const;
+  std::vector<std::string> allOutputs() const;  // every texture output, "stage.output"
+
+  // Runs the stages that `requested` depends on (all stages when empty), timing each with
+  // glFinish + steady clock (GL_TIME_ELAPSED is wrong on llvmpipe). The per-frame camera
+  // uniforms are filled first.
+  void run(Frame& frame, const std::vector<std::string>& requested = {});
+  // One entry per stage in order; stages the last run skipped have ran == false.
   const std::vector<StageTime>& lastTimes() const { return times_; }
+  const StageTime& lastTime(const std::string& stage) const;
+
+  // Changes whenever any parameter changes (a fingerprint of every value): the window
+  // re-runs when it differs from the revision of its last run.
+  std::uint64_t revision() const;
+
+  // The graph in Graphviz dot: stages as nodes, wired slots as edges (choice slots dashed).
+  std::string dot() const;
 
 private:
-  void prepare(Frame& frame) const;
+  struct Wire {
+    std::string consumer, slot;
+    std::vector<std::string> sources;  // one for a fixed edge; every candidate for a choice
+  };
+  void wire(std::vector<StageEntry>& registry);
+  void order();
+  void prepareCamera(Frame& frame) const;
+  const Wire& wireOf(const std::string& stage, const std::string& slot) const;
+  std::string timingKey(const Frame& frame) const;
+
   std::vector<std::unique_ptr<Stage>> stages_;
+  std::vector<Wire> wires_;
   std::vector<StageTime> times_;
+  std::string seriesKey_;
+  std::map<std::string, std::vector<double>> series_;  // per stage, identical settings
 };

@@ -22,3 +22,6 @@ const Param& Stage::param(const std::string& key) const {
 const Output& Stage::output(const std::string& wanted) const {
   return findByName(outputs_, wanted, [](const Output& o) { return o.name; }, name() + " output");
 }
+const Input& Stage::input(const std::string& wanted) const {
+  return findByName(inputs_, wanted, [](const Input& i) { return i.name; }, name() + " input");
+}

@@ -1,6 +1,9 @@
-// A stage of the pipeline (DESIGN.md §3): declares its outputs and parameters once and
-// writes its outputs into the Frame. The UI, `--set`, export, lessons and tests all read
-// these declarations; no stage has UI or CLI code of its own.
+// A stage of the pipeline (DESIGN.md §3; Falcor's render passes are the model): it declares
+// its inputs, outputs and parameters once, and writes its outputs into the Frame. The
+// registry (stages/registry.cpp) wires input slots to other stages' outputs; the pipeline
+// checks the graph, orders it and runs only what the requested outputs depend on. The UI,
+// `--set`, export, bench, lessons and tests all read these declarations; no stage has UI or
+// CLI code of its own, and no stage reads another stage's parameters.
 #pragma once
 #include <epoxy/gl.h>
 
@@ -20,12 +23,58 @@ struct DisplayHint {
   Colormap colormap = Colormap::Gray;
 };
 
+// What an output is to the rest of the program. A *shadow method's visibility* is eye-sized,
+// GL_R32F, values in [0, 1]: composite, error, bench and the window list exactly these.
+// A *ground truth* is a visibility other methods are measured against.
+enum Role : unsigned { kRoleNone = 0, kRoleShadowMethod = 1, kRoleGroundTruth = 2 };
+
+// Format of an output or input that is a storage buffer rather than a texture.
+constexpr GLenum kBufferFormat = GL_BUFFER;
+
 struct Output {
   std::string name;  // "visibility"; addressed as "stage.visibility"
   std::string doc;
-  GLenum format;
+  GLenum format;                      // texture internal format, or kBufferFormat
   std::vector<std::string> channels;  // EXR channel names, one per texture channel
   DisplayHint display;
+  unsigned roles = kRoleNone;  // Role bits
+
+  bool isBuffer() const { return format == kBufferFormat; }
+  // A storage buffer handed to later stages (not a view, not exported).
+  static Output buffer(std::string name, std::string doc) {
+    return {std::move(name), std::move(doc), kBufferFormat, {}, {}, kRoleNone};
+  }
+};
+
+struct Input {
+  std::string name;  // slot name, "visibility"; the registry wires it to "producer.output"
+  std::string doc;
+  GLenum format = 0;  // expected format (0: any texture; kBufferFormat: a buffer)
+  // A *choice* slot is wired to one of the outputs carrying `chooseRole`, selected by this
+  // stage's Enum parameter `choiceParam` (composite.shadow, error.method). The pipeline fills
+  // that parameter's options with the producers' stage names, in registry order, plus "none"
+  // when `allowNone`; `defaultChoice` names the initial option.
+  unsigned chooseRole = kRoleNone;
+  std::string choiceParam;
+  std::string defaultChoice;
+  bool allowNone = false;
+
+  bool isChoice() const { return chooseRole != kRoleNone; }
+  static Input texture(std::string name, std::string doc, GLenum format = 0) {
+    Input input;
+    input.name = std::move(name), input.doc = std::move(doc), input.format = format;
+    return input;
+  }
+  static Input buffer(std::string name, std::string doc) {
+    return texture(std::move(name), std::move(doc), kBufferFormat);
+  }
+  static Input choice(std::string name, std::string doc, unsigned role, std::string param,
+                      std::string defaultChoice, bool allowNone) {
+    Input input = texture(std::move(name), std::move(doc), GL_R32F);
+    input.chooseRole = role, input.choiceParam = std::move(param);
+    input.defaultChoice = std::move(defaultChoice), input.allowNone = allowNone;
+    return input;
+  }
 };
 
 class Stage {
@@ -34,16 +83,19 @@ public:
   virtual std::string name() const = 0;           // "classify"
   virtual std::string summary() const = 0;        // one sentence for the UI
   virtual std::string thesisSection() const = 0;  // "3.6", "" where none
-  virtual void run(Frame& frame) = 0;             // reads inputs by name, writes its outputs
+  virtual void run(Frame& frame) = 0;             // reads its inputs, writes its outputs
 
+  const std::vector<Input>& inputs() const { return inputs_; }
   const std::vector<Output>& outputs() const { return outputs_; }
   std::vector<Param>& params() { return params_; }
   const std::vector<Param>& params() const { return params_; }
   Param& param(const std::string& key);  // throws std::out_of_range naming the valid keys
   const Param& param(const std::string& key) const;
   const Output& output(const std::string& name) const;
+  const Input& input(const std::string& name) const;
 
 protected:
+  std::vector<Input> inputs_;
   std::vector<Output> outputs_;
   std::vector<Param> params_;
 };

@@ -9,7 +9,7 @@ namespace gpu {
 static_assert(offsetof(gpu::TraceParams, config) == 0);
 static_assert(offsetof(gpu::TraceParams, switches) == 16);
 static_assert(offsetof(gpu::TraceParams, limits) == 32);
-static_assert(offsetof(gpu::TraceParams, bias) == 48);
+static_assert(offsetof(gpu::TraceParams, stepping) == 48);
 static_assert(offsetof(gpu::TraceParams, record) == 64);
 static_assert(offsetof(gpu::TraceParams, eye) == 80);
 static_assert(sizeof(gpu::TraceParams) == 96);

@@ -12,7 +12,7 @@ static_assert(int(HashKind::Md5_16) == HASH_MD5_16);
 static_assert(int(HashKind::Md5_64) == HASH_MD5_64);
 static_assert(int(HashKind::Pcg3d) == HASH_PCG3D);
 
-// Indexed by HashKind; also the options of the parameter `hash.function`, whose option
+// Indexed by HashKind; also the options of the parameter `light.hash`, whose option
 // index is therefore the HashKind (and the GLSL hashKind) itself.
 inline constexpr std::array<const char*, HASH_KIND_COUNT> kHashKindNames = {"md5_16", "md5_64",
                                                                             "pcg3d"};

@@ -1,11 +1,13 @@
 #include "reference/reference_request.h"
 
-ReferenceRequest makeReferenceRequest(const Frame& frame, int samplesPerSide, bool stratified) {
+ReferenceRequest makeReferenceRequest(const Frame& frame, const GlTexture& wsPosition,
+                                      const GlTexture& wsNormal, int samplesPerSide,
+                                      bool stratified) {
   ReferenceRequest request;
   request.width = frame.eyeWidth;
   request.height = frame.eyeHeight;
-  request.wsPosition = frame.input("gbuffer.wsPosition").readFloats();
-  request.wsNormal = frame.input("gbuffer.wsNormal").readFloats();
+  request.wsPosition = wsPosition.readFloats();
+  request.wsNormal = wsNormal.readFloats();
   request.samplesPerSide = samplesPerSide;
   request.stratified = stratified;
   request.wsLightCenter = frame.scene.light.center;

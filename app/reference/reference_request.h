@@ -5,5 +5,7 @@
 #include "core/frame.h"
 #include "reference/reference_trace.h"
 
-// Needs gbuffer.wsPosition and gbuffer.wsNormal written in `frame`.
-ReferenceRequest makeReferenceRequest(const Frame& frame, int samplesPerSide, bool stratified);
+// The receivers are the G-buffer's world positions and normals; the light is frame.light.
+ReferenceRequest makeReferenceRequest(const Frame& frame, const GlTexture& wsPosition,
+                                      const GlTexture& wsNormal, int samplesPerSide,
+                                      bool stratified);

@@ -13,6 +13,8 @@ struct LightFrame {
   glm::mat4 lightViewFromWorld;
   glm::mat4 lightClipFromWorld;
   glm::vec3 right, up, forward;  // orthonormal light frame
+  int mapSize = 0;  // texels per side of the light maps (set by the `light` stage)
+  int layers = 2;   // depth layers modelling the occluders, 1-3 (set by the `light` stage)
 };
 
 // Eq 3.1 for a square light of side `size`: light depth = size / (2 tan(fov / 2)).

@@ -96,7 +96,7 @@ std::string UiState::selectOutput(const std::string& stageDotOutput) {
   target->minus.clear();  // a difference belongs to the output it was made for
   target->clipNegative = false;
   if (frame && frame->has(stageDotOutput)) {
-    const GlTexture& texture = frame->input(stageDotOutput);
+    const GlTexture& texture = frame->texture(stageDotOutput);
     target->settings = defaultViewSettings(*declared, texture.channelCount());
     target->settingsFor = stageDotOutput;
     target->autofitPending = texture.isInteger() && target->settings.colormap != Colormap::Categorical;

@@ -11,7 +11,7 @@
 // The squares shrink towards B as d grows, each inside the one before, so the square at
 // d = occluderZ holds every crossing at depths >= occluderZ.
 ivec4 reachableTexels(vec2 receiverUv, float receiverZ, float occluderZ, ivec2 mapSize) {
-  float n = frame.lightDepthRange.x;
+  float n = light.lightDepthRange.x;
   float size = clamp(n * (receiverZ - occluderZ) / (occluderZ * (receiverZ - n)), 0.0, 1.0);
   vec2 lo = (1.0 - size) * clamp(receiverUv, 0.0, 1.0) * vec2(mapSize);
   vec2 hi = lo + size * vec2(mapSize);

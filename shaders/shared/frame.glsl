@@ -1,17 +1,20 @@
-// GLSL side of the per-frame block and the light-space helpers (see frame_block.h).
+// GLSL side of the per-frame camera block, the light block and the light-space helpers
+// (see frame_block.h and light_block.h).
 #include "frame_block.h"
-layout(std140, binding = 0) uniform FrameBlock { FrameUniforms frame; };
+#include "light_block.h"
+layout(std140, binding = FRAME_BLOCK_BINDING) uniform FrameBlock { FrameUniforms frame; };
+layout(std140, binding = LIGHT_BLOCK_BINDING) uniform LightBlock { LightUniforms light; };
 
-// Linear light-space depth conversions (encoding documented in frame_block.h).
+// Linear light-space depth conversions (encoding documented in light_block.h).
 float zToLsDepth(float z) {
-  return (z - frame.lightDepthRange.x) / (frame.lightDepthRange.y - frame.lightDepthRange.x);
+  return (z - light.lightDepthRange.x) / (light.lightDepthRange.y - light.lightDepthRange.x);
 }
 float lsDepthToZ(float lsDepth) {
-  return frame.lightDepthRange.x + lsDepth * (frame.lightDepthRange.y - frame.lightDepthRange.x);
+  return light.lightDepthRange.x + lsDepth * (light.lightDepthRange.y - light.lightDepthRange.x);
 }
 // World position -> (u, v in [0,1] over the map, z = distance along the light axis).
 vec3 lightMapCoords(vec3 wsPosition) {
-  vec4 clip = frame.lightClipFromWorld * vec4(wsPosition, 1.0);
+  vec4 clip = light.lightClipFromWorld * vec4(wsPosition, 1.0);
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   return vec3(uv, clip.w);  // perspective w is the view-space distance along the axis
 }

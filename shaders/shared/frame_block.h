@@ -1,29 +1,14 @@
-// Per-frame uniforms, read by C++ (app/gl/gpu_layout.h) and GLSL (#include "shared/frame_block.h").
-// std140: only 16-byte members (vec4, uvec4, mat4) so C++ and GLSL offsets agree trivially;
-// app/gl/gpu_layout.h checks every offset with static_assert. Bound at uniform binding 0.
-//
-// Light space (thesis §3, Eq 3.1). The light is a rectangle; its projection point sits
-// lightDepth = max(width, height) / (2 tan(fov/2)) behind the center, so the light
-// rectangle is exactly the frustum's cross-section at the near plane z = lightDepth.
-// Depth encoding (every stage): the layers store the normalized *linear* light depth
-//     lsDepth = (z - zNear) / (zFar - zNear),  z = distance along the light axis from the
-// projection point, zNear = lightDepth (the light plane), zFar = beyond the scene bounds.
-// Linear depth keeps float precision uniform over the range (a tiny light makes zNear tiny,
-// which ruins perspective NDC depth) and makes Eq 3.2 and Eq 3.3 direct; 1/z is what is
-// linear along a projected ray, and stages convert with lsDepthToZ / zToLsDepth.
-// Cleared values follow thesis §3.3: near layer 1 (nothing in front), far layer 0.
+// Per-frame camera uniforms, read by C++ (app/gl/gpu_layout.h) and GLSL
+// (#include "shared/frame.glsl"). std140: only 16-byte members (vec4, uvec4, mat4) so C++ and
+// GLSL offsets agree trivially; app/gl/gpu_layout.h checks every offset with static_assert.
+// Bound at FRAME_BLOCK_BINDING for the whole run. The light has its own block
+// (light_block.h), written by the `light` stage.
+#define FRAME_BLOCK_BINDING 0
+
 struct FrameUniforms {
   mat4 clipFromWorld;       // eye camera
   mat4 worldFromClip;
-  mat4 lightClipFromWorld;  // perspective from the projection point; xy in [-1,1] is the map
-  mat4 lightViewFromWorld;  // right-handed, looking down -z
   vec4 wsEyePosition;       // xyz, w = 1
-  vec4 wsLightCenter;       // xyz, w = light area (width * height)
-  vec4 wsLightRight;        // xyz unit, w = width / 2
-  vec4 wsLightUp;           // xyz unit, w = height / 2
-  vec4 wsLightForward;      // xyz unit (direction the light faces), w = lightDepth (Eq 3.1)
-  vec4 lightDepthRange;     // x = zNear (= lightDepth), y = zFar, z = tan(fovX/2), w = tan(fovY/2)
-  uvec4 sizes;              // x, y = eye image; z, w = light layers (texels)
-  vec4 shading;             // x = ambient light, yzw unused
+  uvec4 sizes;              // x, y = eye image; zw unused
   uvec4 keys;               // x = frame key (scrambles the hash per frame), yzw unused
 };

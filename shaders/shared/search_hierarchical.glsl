@@ -13,7 +13,7 @@
 
 // The window [lo, hi] per axis at `level` holding `cell`, extending in the ray's direction.
 ivec4 forwardWindow(ivec2 cell, int level, vec2 direction, out ivec2 texel) {
-  ivec2 size = ivec2(frame.sizes.zw);
+  ivec2 size = ivec2(light.mapSize.xy);
   int span = 1 << level;
   ivec4 window;
   for (int axis = 0; axis < 2; ++axis) {
@@ -99,7 +99,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
     ivec2 next = clamp(ivec2(floor(rayPoint(ray, sExit))), window.xy, window.zw);
     for (int axis = 0; axis < 2; ++axis)
       if (exitAxes[axis]) next[axis] = ray.d[axis] > 0.0 ? window[axis + 2] + 1 : window[axis] - 1;
-    if (any(lessThan(next, ivec2(0))) || any(greaterThanEqual(next, ivec2(frame.sizes.zw)))) {
+    if (any(lessThan(next, ivec2(0))) || any(greaterThanEqual(next, ivec2(light.mapSize.xy)))) {
       recordStep(level, STEP_MISS, iteration, window, vec4(bounds.x, bounds.z, depthIn, depthOut),
                  vec4(sExit, sExit, rayPoint(ray, sExit)));
       return false;  // left the map: nothing beyond

@@ -1,4 +1,4 @@
-// Linear and linear/binary search (thesis §2.2, §3.2-3.4): samples every `trace.bias.w`
+// Linear and linear/binary search (thesis §2.2, §3.2-3.4): samples every `trace.stepping.x`
 // texels along the projected ray.
 //   one layer:   a sample behind the near layer is a hit (§3.2; aliases, cannot refine);
 //   two layers:  a sample between near and far is a hit (§3.3);
@@ -44,7 +44,7 @@ bool sampleBlocks(Ray ray, float s, int layers, out LayerState state) {
 
 bool searchLinear(Ray ray, float sStart, float sEnd, int layers, bool refine) {
   float lengthTexels = length(ray.d) * (sEnd - sStart);
-  int steps = clamp(int(ceil(lengthTexels / trace.bias.w)), 1, trace.limits.x);
+  int steps = clamp(int(ceil(lengthTexels / trace.stepping.x)), 1, trace.limits.x);
   float ds = (sEnd - sStart) / float(steps);
   LayerState previous;
   float sPrevious = sStart;

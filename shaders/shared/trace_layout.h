@@ -38,10 +38,9 @@ struct TraceParams {
   ivec4 config;    // x = rays per side n, y = sampling, z = search, w = layers (1, 2, 3)
   ivec4 switches;  // x = early out backface, y = early out inside, z = early out region,
                    // w = shorten rays (§3.7)
-  ivec4 limits;    // x = iteration cap, y = binary refinement steps, z = hash function,
+  ivec4 limits;    // x = iteration cap, y = binary refinement steps, z unused,
                    // w = use classification (skip lit / umbra pixels)
-  vec4 bias;       // x = constant bias (world), y = adaptive Eq 3.2 (0/1), z = min cosine,
-                   // w = linear step (texels)
+  vec4 stepping;   // x = linear step (texels), yzw unused (the bias group is light.bias)
   ivec4 record;    // xy = pixel whose steps are recorded (-1: none), z = record capacity,
                    // w = N-buffer top level
   vec4 eye;        // x = eye-visibility tolerance (world units, three layers), yzw unused

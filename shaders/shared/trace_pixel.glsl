@@ -12,15 +12,15 @@
 // index, scrambled by the frame key (Appendix A); jittered: one sample per grid cell (§3.1).
 vec2 lightSampleUnit(ivec2 pixel, int rayIndex, int raysPerSide) {
   uvec4 bits = hashRand(uvec4(uint(pixel.x), uint(pixel.y), uint(rayIndex), 0u), frame.keys.x,
-                        trace.limits.z);
+                        int(light.sampling.x));
   vec2 r = toUnitSquare(bits.xy);
   if (trace.config.y == SAMPLING_RANDOM) return r;
   return (vec2(rayIndex % raysPerSide, rayIndex / raysPerSide) + r) / float(raysPerSide);
 }
 
 vec3 lightSampleWorld(vec2 unit) {
-  return frame.wsLightCenter.xyz + (2.0 * unit.x - 1.0) * frame.wsLightRight.w * frame.wsLightRight.xyz
-                                 + (2.0 * unit.y - 1.0) * frame.wsLightUp.w * frame.wsLightUp.xyz;
+  return light.wsLightCenter.xyz + (2.0 * unit.x - 1.0) * light.wsLightRight.w * light.wsLightRight.xyz
+                                 + (2.0 * unit.y - 1.0) * light.wsLightUp.w * light.wsLightUp.xyz;
 }
 
 // Early out "the ray's region holds no occluder" (§3.7): one N-buffer fetch at the level
@@ -30,7 +30,7 @@ bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   ivec2 lo = texelAt(min(p0, p1)), hi = texelAt(max(p0, p1));
   int span = max(hi.x - lo.x, hi.y - lo.y) + 1;
   int level = min(int(ceil(log2(float(span)))), trace.record.w);
-  ivec2 size = ivec2(frame.sizes.zw);
+  ivec2 size = ivec2(light.mapSize.xy);
   ivec2 texel = ivec2(nbufferTexelForWindow(level, lo.x, size.x),
                       nbufferTexelForWindow(level, lo.y, size.y));
   vec4 bounds = fetchNBuffer(texel, level);
@@ -61,8 +61,8 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
       recordStep(-1, STEP_EARLY_BACKFACE, 0, ivec4(-1), vec4(0.0), vec4(0.0));
       continue;  // 2. early out: the sample is behind the surface (§3.7)
     }
-    float bias = trace.bias.x;
-    if (trace.bias.y != 0.0) bias += adaptiveBias(receiverZ, wsNormal, direction, trace.bias.z);
+    float bias = light.bias.x;
+    if (light.bias.y != 0.0) bias += adaptiveBias(receiverZ, wsNormal, direction, light.bias.z);
     vec3 wsEnd = wsPosition + direction * min(bias, 0.999 * distanceToLight);
     Ray ray = makeRay(wsLightSample, wsEnd);
     float sStart = 0.0, sEnd = 1.0;

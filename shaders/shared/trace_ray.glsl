@@ -38,7 +38,7 @@ void recordStep(int level, int decision, int iteration, ivec4 window, vec4 depth
   records[slot].stepping = stepping;
 }
 
-vec2 mapSize() { return vec2(frame.sizes.zw); }
+vec2 mapSize() { return vec2(light.mapSize.xy); }
 
 vec2 rayPoint(Ray ray, float s) { return ray.a + s * ray.d; }
 float rayLsDepth(Ray ray, float s) { return zToLsDepth(1.0 / mix(ray.invZa, ray.invZb, s)); }
@@ -82,7 +82,7 @@ bool clipToMap(Ray ray, inout float s0, inout float s1) {
   return s0 <= s1;
 }
 
-ivec2 texelAt(vec2 p) { return clamp(ivec2(floor(p)), ivec2(0), ivec2(frame.sizes.zw) - 1); }
+ivec2 texelAt(vec2 p) { return clamp(ivec2(floor(p)), ivec2(0), ivec2(light.mapSize.xy) - 1); }
 
 vec2 fetchLayers(ivec2 texel) {
   gFetches += 2u;

@@ -10,7 +10,6 @@
 
 #include "reference/error_metrics.h"
 #include "core/frame.h"
-#include "core/pipeline.h"
 
 namespace gpu {
 #include "shared/classes.h"
@@ -21,6 +20,14 @@ namespace {
 class ErrorStage final : public Stage {
 public:
   ErrorStage() {
+    inputs_ = {
+        Input::choice("method", "The shadow method's visibility to measure.", kRoleShadowMethod,
+                      "method", "filter", /*allowNone=*/false),
+        Input::choice("truth", "The ground truth it is measured against.", kRoleGroundTruth,
+                      "against", "reference", /*allowNone=*/false),
+        Input::texture("mask", "Classes: background and receivers outside the light's map do "
+                               "not count.", GL_R32F),
+    };
     outputs_ = {
         {"signed", "Method minus reference: > 0 too bright (missed occluders), < 0 too dark "
                    "(over-occlusion). 0 where the pixel does not count.",
@@ -29,8 +36,9 @@ public:
          {"error"}, {0, 0, 1, Colormap::Perceptual}},
     };
     params_ = {
-        Param::choice("method", "Whose visibility is compared with the reference.",
-                      {"filter", "trace", "hard_shadow"}, 0),
+        Param::choice("method", "Which shadow method is measured (every stage whose output "
+                                "is a shadow method's visibility).", {}, 0),
+        Param::choice("against", "The ground truth (every stage whose output is one).", {}, 0),
     };
   }
   std::string name() const override { return "error"; }
@@ -41,16 +49,15 @@ public:
   std::string thesisSection() const override { return ""; }
 
   void run(Frame& frame) override {
-    if (!frame.pipeline.param("reference.enabled").asBool() ||
-        !frame.has("reference.visibility")) {
+    if (!frame.connected(*this, "truth")) {
       frame.textures.erase("error.signed");  // nothing to compare with (or still pending)
       frame.textures.erase("error.absolute");
       return;
     }
     const int w = frame.eyeWidth, h = frame.eyeHeight;
-    const std::vector<float> method = frame.input(param("method").asEnum() + ".visibility").readFloats();
-    const std::vector<float> reference = frame.input("reference.visibility").readFloats();
-    const std::vector<float> mask = frame.input("classify.mask").readFloats();
+    const std::vector<float> method = frame.input(*this, "method").readFloats();
+    const std::vector<float> reference = frame.input(*this, "truth").readFloats();
+    const std::vector<float> mask = frame.input(*this, "mask").readFloats();
     std::vector<std::uint8_t> counted(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) {
       const int pixelClass = int(std::lround(mask[i]));

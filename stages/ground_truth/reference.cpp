@@ -11,7 +11,6 @@
 #include <thread>
 
 #include "core/frame.h"
-#include "core/pipeline.h"
 #include "reference/reference_cache.h"
 #include "reference/reference_request.h"
 #include "reference/reference_trace.h"
@@ -41,9 +40,14 @@ std::string occluderKey(const Scene& scene) {
 class ReferenceStage final : public Stage {
 public:
   ReferenceStage() {
+    inputs_ = {
+        Input::texture("wsPosition", "Receivers (G-buffer).", GL_RGBA32F),
+        Input::texture("wsNormal", "Receiver normals (the ray origins' offset side).", GL_RGBA32F),
+        Input::buffer("light", "The light frame (its CPU copy orients the light samples)."),
+    };
     outputs_ = {{"visibility", "Exact visibility: the fraction of the m x m light samples that "
                                "the scene's real triangles do not hide (1 on the background).",
-                 GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray}}};
+                 GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray}, kRoleGroundTruth}};
     params_ = {
         Param::boolean("enabled", "Compute the ground truth (seconds per new view on the CPU; "
                                   "cached on disk, so an unchanged view is instant).", false),
@@ -76,7 +80,7 @@ public:
       return;
     }
     ReferenceRequest request = makeReferenceRequest(
-        frame, param("samples").asInt(), param("sampling").asEnum() == "stratified");
+        frame, frame.input(*this, "wsPosition"), frame.input(*this, "wsNormal"), param("samples").asInt(), param("sampling").asEnum() == "stratified");
     const std::string cacheKey = referenceCacheKey(frame.scene, request);
     frame.counters["reference.samples"] = double(request.samplesPerSide) * request.samplesPerSide;
     frame.counters["reference.seconds"] = 0;

@@ -3,10 +3,9 @@
 // can cross, refined iteratively over the N-buffer (after Guennebaud et al. 2006). The
 // bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
 #include <cstddef>
-#include <stdexcept>
 
 #include "core/frame.h"
-#include "core/pipeline.h"
+#include "shared_inputs/light_input.h"
 #include "gl/shader_program.h"
 
 namespace gpu {
@@ -23,6 +22,14 @@ namespace {
 class ClassifyStage final : public Stage {
 public:
   ClassifyStage() {
+    inputs_ = {
+        Input::texture("wsPosition", "Receivers (G-buffer).", GL_RGBA32F),
+        Input::texture("wsNormal", "Receiver normals (the bias bound of the umbra test).",
+                       GL_RGBA32F),
+        Input::texture("levels", "N-buffer: occluder depth bounds over windows (Eq 3.3).",
+                       GL_RGBA32F),
+        lightInput(),
+    };
     outputs_ = {
         {"mask", "Class per pixel: 0 background, 1 lit, 2 penumbra, 3 umbra, 4 outside the "
                  "light's frustum.",
@@ -31,6 +38,9 @@ public:
                    "light depth): min near, max near, max far; w: the receiver's depth.",
          GL_RGBA32F, {"zNearMin", "zNearMax", "zFarMax", "receiverLsDepth"},
          {0, 0, 1, Colormap::Gray}},
+        Output::buffer("tracedPixels", "The penumbra and umbra pixels, packed, after a header "
+                                       "holding their count (classify_layout.h): the trace "
+                                       "dispatches only these."),
     };
     params_ = {
         Param::integer("iterations", "Refinements of zNearMin by Eq 3.3: each shrinks the "
@@ -59,7 +69,7 @@ public:
     const gpu::ClassifyCounts zero{};
     counts_.upload(&zero, sizeof zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_COUNTS_BINDING, counts_.id());
-    GlBuffer& tracedPixels = frame.buffer("classify.tracedPixels");
+    GlBuffer& tracedPixels = frame.outputBuffer(*this, "tracedPixels");
     const size_t listBytes = CLASSIFY_LIST_HEADER_BYTES + size_t(w) * h * sizeof(std::uint32_t);
     GLint64 currentBytes = 0;
     glGetNamedBufferParameteri64v(tracedPixels.id(), GL_BUFFER_SIZE, &currentBytes);
@@ -69,18 +79,16 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
 
     program_.use();
-    glBindTextureUnit(0, frame.input("gbuffer.wsPosition").id());
-    glBindTextureUnit(1, frame.input("gbuffer.wsNormal").id());
-    glBindTextureUnit(2, frame.input("nbuffer.levels").id());
+    bindLightInput(frame, *this);
+    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(2, frame.input(*this, "levels").id());
     glBindImageTexture(0, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(1, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glUniform1i(1, param("iterations").asInt());
-    glUniform1i(2, param("umbra").asBool() && !threeLayers(frame));
-    // The rays' bias is the trace's (one declaration): classification must bound it.
-    const Pipeline& pipeline = frame.pipeline;
-    glUniform3f(3, pipeline.param("trace.bias").asFloat(),
-                pipeline.param("trace.adaptive_bias").asBool() ? 1.0f : 0.0f,
-                pipeline.param("trace.min_cosine").asFloat());
+    // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
+    // (§3.4) they can, so it is off there.
+    glUniform1i(2, param("umbra").asBool() && frame.light.layers < 3);
     dispatchRows(w, h);
 
     gpu::ClassifyCounts counts{};
@@ -93,15 +101,6 @@ public:
   }
 
 private:
-  // §3.6: with three layers rays may pass between occluders, so the umbra test is invalid.
-  static bool threeLayers(const Frame& frame) {
-    try {
-      return frame.pipeline.param("trace.layers").asEnum() == "three";
-    } catch (const std::out_of_range&) {
-      return false;  // no trace stage in this pipeline
-    }
-  }
-
   ShaderProgram program_{{{GL_COMPUTE_SHADER, "classify.comp"}}};
   GlBuffer counts_;
 };

@@ -8,11 +8,16 @@ namespace {
 class FilterStage final : public Stage {
 public:
   FilterStage() {
+    inputs_ = {
+        Input::texture("visibility", "The visibility to blur (the trace's, unfiltered).", GL_R32F),
+        Input::texture("wsPosition", "Receivers: depth differences weight the taps.", GL_RGBA32F),
+        Input::texture("wsNormal", "Receiver normals (normal_sensitive).", GL_RGBA32F),
+    };
     outputs_ = {
         {"horizontal", "After the horizontal pass.", GL_R32F, {"visibility"},
          {0, 0, 1, Colormap::Gray}},
         {"visibility", "Filtered visibility (both passes).", GL_R32F, {"visibility"},
-         {0, 0, 1, Colormap::Gray}},
+         {0, 0, 1, Colormap::Gray}, kRoleShadowMethod},
     };
     params_ = {
         Param::boolean("enabled", "Blur the shadows (off: the visibility passes through).", true),
@@ -41,10 +46,11 @@ public:
     glUniform1i(2, radius);
     glUniform1f(3, param("depth_scale").asFloat());
     glUniform1f(4, normalPower);
-    glBindTextureUnit(1, frame.input("gbuffer.wsPosition").id());
-    glBindTextureUnit(2, frame.input("gbuffer.wsNormal").id());
-    pass(frame.input("trace.visibility"), frame.output(*this, "horizontal", w, h), {1, 0}, w, h);
-    pass(frame.input("filter.horizontal"), frame.output(*this, "visibility", w, h), {0, 1}, w, h);
+    glBindTextureUnit(1, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(2, frame.input(*this, "wsNormal").id());
+    GlTexture& horizontal = frame.output(*this, "horizontal", w, h);
+    pass(frame.input(*this, "visibility"), horizontal, {1, 0}, w, h);
+    pass(horizontal, frame.output(*this, "visibility", w, h), {0, 1}, w, h);
   }
 
 private:

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "core/frame.h"
+#include "shared_inputs/light_input.h"
 #include "gl/gpu_layout_trace.h"
 
 namespace gpu {
 #include "shared/classify_layout.h"
 }  // namespace gpu
-#include "core/pipeline.h"
 #include "gl/shader_program.h"
 
 namespace {
@@ -17,9 +17,24 @@ namespace {
 class TraceStage final : public Stage {
 public:
   TraceStage() {
+    inputs_ = {
+        Input::texture("wsPosition", "Receivers (G-buffer).", GL_RGBA32F),
+        Input::texture("wsNormal", "Receiver normals (Eq 3.2 bias, back-face early out).",
+                       GL_RGBA32F),
+        Input::texture("near", "Near layer (§3.2).", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer (§3.3).", GL_DEPTH_COMPONENT32F),
+        Input::texture("levels", "N-buffer (Algorithm 2, early out of §3.7).", GL_RGBA32F),
+        Input::texture("mask", "Classes of §3.6 (lit and umbra pixels are not traced).", GL_R32F),
+        Input::texture("zRange", "Occluder depth bounds per pixel (ray shortening, §3.7).",
+                       GL_RGBA32F),
+        Input::buffer("tracedPixels", "The pixels classification left to trace, with their "
+                                      "count (classify_layout.h)."),
+        lightInput(),
+    };
     outputs_ = {
         {"visibility", "Unfiltered visibility: the fraction of this pixel's rays that reach the "
-                       "light.", GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray}},
+                       "light.", GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray},
+         kRoleShadowMethod},
         {"cost", "Per pixel: texel fetches, search iterations, rays searched, rays ended by an "
                  "early out.", GL_RGBA32F, {"fetches", "iterations", "raysSearched", "earlyOuts"},
          {0, 0, 200, Colormap::Perceptual}},
@@ -34,10 +49,6 @@ public:
                                 "(binary refinement on suspicious transitions, §3.3) or "
                                 "hierarchical (Algorithm 2 over the N-buffer, §3.5).",
                       {"linear", "linear_binary", "hierarchical"}, 2),
-        Param::choice("layers", "Depth layers that model the occluders: one (near only, "
-                                "§3.2), two (near + far, §3.3) or three (+ the eye's depth: "
-                                "a point seen by the eye is free space, §3.4).",
-                      {"one", "two", "three"}, 1),
         Param::real("linear_step", "Step of the linear search, in shadow-map texels.", 1.0,
                     0.25, 16),
         Param::integer("binary_steps", "Bisections per suspicious transition (linear_binary).",
@@ -56,10 +67,6 @@ public:
                        true),
         Param::boolean("deferred", "Trace per G-buffer pixel (deferred, Algorithm 1) or per "
                                    "rasterized fragment (forward; Table 4.1).", true),
-        Param::real("bias", "Constant bias in world units: the ray's end moves this far "
-                            "towards the light.", 0.0, 0, 1),
-        Param::boolean("adaptive_bias", "Add the adaptive bias of Eq 3.2.", true),
-        Param::real("min_cosine", "Lower clamp of n.l in Eq 3.2.", 0.1, 0.001, 1),
         Param::real("eye_tolerance", "Three layers: a point counts as free space (seen by the "
                                      "eye) only if it lies at least this far (world units) in "
                                      "front of the visible surface at its pixel.", 0.02, 0, 1),
@@ -82,20 +89,19 @@ public:
     const int w = frame.eyeWidth, h = frame.eyeHeight;
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
     GlTexture& cost = frame.output(*this, "cost", w, h);
-    const GlTexture& levels = frame.input("nbuffer.levels");
+    const GlTexture& levels = frame.input(*this, "levels");
 
     // 1. Parameters -> the std140 block (shaders/shared/trace_layout.h).
     gpu::TraceParams params{};
     const int recordY = param("record_y").asInt();
+    bindLightInput(frame, *this);
     params.config = {param("rays").asInt(), param("sampling").asInt(), param("search").asInt(),
-                     param("layers").asInt() + 1};
+                     frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
                        param("early_out_region").asBool(), param("shorten_rays").asBool()};
-    params.limits = {param("max_iterations").asInt(), param("binary_steps").asInt(),
-                     frame.pipeline.param("hash.function").asInt(),
+    params.limits = {param("max_iterations").asInt(), param("binary_steps").asInt(), 0,
                      param("use_classification").asBool()};
-    params.bias = {param("bias").asFloat(), param("adaptive_bias").asBool() ? 1.f : 0.f,
-                   param("min_cosine").asFloat(), param("linear_step").asFloat()};
+    params.stepping = {param("linear_step").asFloat(), 0, 0, 0};
     params.record = {param("record_x").asInt(), recordY < 0 ? -1 : h - 1 - recordY,
                      kRecordCapacity, levels.layers() - 1};
     params.eye = {param("eye_tolerance").asFloat(), 0, 0, 0};
@@ -118,13 +124,13 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceTotals, totalsBuffer_.id());
 
     // 3. Inputs.
-    glBindTextureUnit(0, frame.input("gbuffer.wsPosition").id());
-    glBindTextureUnit(1, frame.input("gbuffer.wsNormal").id());
-    glBindTextureUnit(2, frame.input("light_layers.near").id());
-    glBindTextureUnit(3, frame.input("light_layers.far").id());
+    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(2, frame.input(*this, "near").id());
+    glBindTextureUnit(3, frame.input(*this, "far").id());
     glBindTextureUnit(4, levels.id());
-    glBindTextureUnit(5, frame.input("classify.mask").id());
-    glBindTextureUnit(6, frame.input("classify.zRange").id());
+    glBindTextureUnit(5, frame.input(*this, "mask").id());
+    glBindTextureUnit(6, frame.input(*this, "zRange").id());
 
     // 4. The pass.
     if (param("deferred").asBool()) {
@@ -141,10 +147,6 @@ public:
                            "earlyOutInside", "earlyOutRegion", "iterationCapReached"};
     for (int i = 0; i <= TOTAL_ITERATION_CAP; ++i)
       frame.counters["trace." + std::string(names[i])] = totals[i];
-    // Pixels that classification spared: lit and umbra, counted by classify (no atomics here).
-    frame.counters["trace.pixelsClassified"] =
-        param("use_classification").asBool() && param("deferred").asBool()
-            ? frame.counters["classify.lit"] + frame.counters["classify.umbra"] : 0.0;
     frame.counters["trace.fetchesPerRay"] =
         totals[TOTAL_RAYS] ? double(totals[TOTAL_FETCHES]) / totals[TOTAL_RAYS] : 0.0;
     readRecords(frame);
@@ -168,11 +170,13 @@ private:
     const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
     glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
     glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING,
-                     frame.buffer("classify.tracedPixels").id());
-    const int listed = int(frame.counters.at("classify.penumbra") + frame.counters.at("classify.umbra"));
+    // The list's header holds its length (penumbra + umbra pixels; classify_layout.h).
+    const GlBuffer& tracedPixels = frame.inputBuffer(*this, "tracedPixels");
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
+    std::uint32_t listed = 0;
+    glGetNamedBufferSubData(tracedPixels.id(), 0, sizeof listed, &listed);
     glUniform1i(1, 1);  // uPixels
-    const int groups = (listed + 63) / 64, groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
+    const int groups = int((listed + 63) / 64), groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
     for (int first = 0; first < groups; first += groupsPerBand) {
       glUniform1i(0, first);
       glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);

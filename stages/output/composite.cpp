@@ -1,6 +1,7 @@
 // Stage `composite` (thesis Algorithm 1, last step): the lit scene times the chosen
 // shadow stage's visibility.
 #include "core/frame.h"
+#include "shared_inputs/light_input.h"
 #include "gl/shader_program.h"
 
 namespace {
@@ -8,11 +9,20 @@ namespace {
 class CompositeStage final : public Stage {
 public:
   CompositeStage() {
+    inputs_ = {
+        Input::choice("visibility", "The shadow method's visibility that shades the image.",
+                      kRoleShadowMethod, "shadow", "filter", /*allowNone=*/true),
+        Input::texture("albedo", "Surface colour (G-buffer).", GL_RGBA8),
+        Input::texture("wsNormal", "Normals (Lambert).", GL_RGBA32F),
+        Input::texture("wsPosition", "Positions (direction to the light).", GL_RGBA32F),
+        lightInput(),
+    };
     outputs_ = {{"color", "Final image: albedo x (ambient + visibility x Lambert).", GL_RGBA32F,
                  {"R", "G", "B", "A"}, {}}};
     params_ = {
-        Param::choice("shadow", "Which stage's visibility shades the image.",
-                      {"filter", "trace", "hard_shadow", "none"}, 0),
+        Param::choice("shadow", "Which shadow method's visibility shades the image (every "
+                                "stage whose output is a shadow method's visibility).",
+                      {}, 0),  // options: the graph's methods (Pipeline fills them)
         Param::real("ambient", "Light that reaches shadowed surfaces (fraction).", 0.2, 0, 1),
     };
   }
@@ -23,13 +33,15 @@ public:
   std::string thesisSection() const override { return "3 (Alg. 1)"; }
 
   void run(Frame& frame) override {
-    const std::string shadow = param("shadow").asEnum();
-    const GlTexture& visibility =
-        shadow == "none" ? unshadowed(frame) : frame.input(shadow + ".visibility");
+    const GlTexture& visibility = frame.connected(*this, "visibility")
+                                      ? frame.input(*this, "visibility")
+                                      : unshadowed(frame);
     program_.use();
-    glBindTextureUnit(0, frame.input("gbuffer.albedo").id());
-    glBindTextureUnit(1, frame.input("gbuffer.wsNormal").id());
-    glBindTextureUnit(2, frame.input("gbuffer.wsPosition").id());
+    bindLightInput(frame, *this);
+    glUniform1f(1, param("ambient").asFloat());
+    glBindTextureUnit(0, frame.input(*this, "albedo").id());
+    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(2, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(3, visibility.id());
     GlTexture& color = frame.output(*this, "color", frame.eyeWidth, frame.eyeHeight);
     glBindImageTexture(0, color.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);

@@ -1,8 +1,7 @@
 // Stage `hash`: the random numbers of the trace, made visible (thesis §3.1, §4.3,
-// Appendix A). Owns the parameter `hash.function`, which the trace stage reads through
-// frame.pipeline to call hashRand() of shaders/shared/hash.glsl with the same function.
+// Appendix A), with the hash the `light` stage selects (light.hash) for the trace.
 #include "core/frame.h"
-#include "gl/hash_kind.h"
+#include "shared_inputs/light_input.h"
 #include "gl/shader_program.h"
 
 namespace {
@@ -10,6 +9,7 @@ namespace {
 class HashStage final : public Stage {
 public:
   HashStage() {
+    inputs_ = {lightInput()};
     outputs_ = {
         {"samples",
          "First light sample (u, v) in [0,1)^2 of each pixel: the top 24 bits of the first two "
@@ -22,13 +22,6 @@ public:
          "hashes look like white noise; changing the frame key changes every pixel.",
          GL_R32F, {"bits"}, {0, 0, 1, Colormap::Gray}},
     };
-    params_ = {Param::choice(
-        "function",
-        "Hash that turns (pixel, ray, frame key) into light samples. md5_16: the thesis's "
-        "reduced 16-round MD5, as printed in Appendix A (passes 11 of 15 DIEHARD tests, "
-        "§3.1; costs < 10% of the frame, §4.3). md5_64: the full MD5 of Tzeng & Wei 2008, "
-        "about 4x the work. pcg3d: Jarzynski & Olano 2020, a few multiplies.",
-        {kHashKindNames.begin(), kHashKindNames.end()}, int(HashKind::Md5_16))};
   }
   std::string name() const override { return "hash"; }
   std::string summary() const override {
@@ -39,12 +32,11 @@ public:
 
   void run(Frame& frame) override {
     program_.use();
+    bindLightInput(frame, *this);
     GlTexture& samples = frame.output(*this, "samples", frame.eyeWidth, frame.eyeHeight);
     GlTexture& bits = frame.output(*this, "bits", frame.eyeWidth, frame.eyeHeight);
     glBindImageTexture(0, samples.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindImageTexture(1, bits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    // The option index is the HashKind, which equals the GLSL HASH_* number (hash_kind.h).
-    glUniform1i(1, param("function").asInt());
     dispatchRows(frame.eyeWidth, frame.eyeHeight);
   }
 

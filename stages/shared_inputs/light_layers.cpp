@@ -6,7 +6,7 @@
 // farthest a back face), and it keeps open meshes and zero-thickness sheets (glTF files,
 // the `plate` scene) as occluders with near == far instead of losing them from the far layer.
 #include "core/frame.h"
-#include "core/pipeline.h"
+#include "shared_inputs/light_input.h"
 #include "gl/shader_program.h"
 
 namespace {
@@ -20,14 +20,7 @@ public:
         {"far", "Farthest occluder surface: linear light depth; 0 where no occluder.",
          GL_DEPTH_COMPONENT32F, {"lsDepthFar"}, {0, 0, 1, Colormap::Gray}},
     };
-    params_ = {
-        Param::integer("resolution", "Shadow-map size in texels (square); also the N-buffer size.",
-                       512, 128, 2048),
-        Param::real("fov_degrees",
-                    "Field of view of the light's frustum (Eq 3.1). Wider covers more of the "
-                    "scene at lower resolution; the light's projection point moves closer.",
-                    90, 10, 150),
-    };
+    inputs_ = {lightInput()};
   }
   std::string name() const override { return "light_layers"; }
   std::string summary() const override {
@@ -36,7 +29,8 @@ public:
   std::string thesisSection() const override { return "3.3, Eq 3.1"; }
 
   void run(Frame& frame) override {
-    const int size = param("resolution").asInt();
+    bindLightInput(frame, *this);
+    const int size = frame.light.mapSize;
     renderLayer(frame, frame.output(*this, "near", size, size), GL_LESS, 1.0f);
     renderLayer(frame, frame.output(*this, "far", size, size), GL_GREATER, 0.0f);
   }

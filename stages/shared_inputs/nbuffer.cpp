@@ -9,6 +9,10 @@ namespace {
 class NBufferStage final : public Stage {
 public:
   NBufferStage() {
+    inputs_ = {
+        Input::texture("near", "Near layer: zNearMin and zNearMax.", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer: zFarMax.", GL_DEPTH_COMPONENT32F),
+    };
     outputs_ = {{"levels",
                  "N-buffer: layer n holds min/max light depths over a 2^n x 2^n window "
                  "around each texel (x: min near, y: max near, z: max far).",
@@ -24,8 +28,8 @@ public:
   std::string thesisSection() const override { return "3.5"; }
 
   void run(Frame& frame) override {
-    const GlTexture& nearLayer = frame.input("light_layers.near");
-    const GlTexture& farLayer = frame.input("light_layers.far");
+    const GlTexture& nearLayer = frame.input(*this, "near");
+    const GlTexture& farLayer = frame.input(*this, "far");
     const int count = nbufferLevelCount(nearLayer.width(), nearLayer.height());
     GlTexture& levels =
         frame.output(*this, "levels", nearLayer.width(), nearLayer.height(), count);

@@ -115,7 +115,7 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   EXPECT_EQ(thesis[2].height, 512);
   const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0});
   EXPECT_EQ(atty.size(), 1u + 6u + 7u + 5u);
-  const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light_layers.resolution=128,256"}, 0, 0});
+  const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light.resolution=128,256"}, 0, 0});
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_EQ(swept[1].width, 64);
   EXPECT_EQ(swept[0].configs.size(), 4u);  // both methods use the shadow map

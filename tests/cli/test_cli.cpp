@@ -17,7 +17,7 @@ TEST(Cli, ExportWritesEveryOutputAndRunJson) {
   const fs::path out = fs::temp_directory_path() / "penumbra_cli_export";
   fs::remove_all(out);
   const auto result = runPenumbra("export --scene cube --out " + out.string() +
-                                  " --width 128 --height 96 --set light_layers.resolution=128");
+                                  " --width 128 --height 96 --set light.resolution=128");
   ASSERT_EQ(result.exitCode, 0) << result.output;
   for (const char* stem : {"gbuffer.albedo", "gbuffer.wsNormal", "gbuffer.wsPosition",
                            "gbuffer.depth", "light_layers.near", "light_layers.far",
@@ -28,7 +28,7 @@ TEST(Cli, ExportWritesEveryOutputAndRunJson) {
   std::ifstream in(out / "run.json");
   const auto run = nlohmann::json::parse(in);
   EXPECT_EQ(run["scene"], "cube");
-  EXPECT_EQ(run["parameters"]["light_layers"]["resolution"], "128");
+  EXPECT_EQ(run["parameters"]["light"]["resolution"], "128");
   EXPECT_TRUE(run["renderer"].get<std::string>().size() > 3);
   EXPECT_TRUE(run["stage_milliseconds"].contains("trace") || run["stage_milliseconds"].contains("hard_shadow"));
   for (const auto& entry : fs::directory_iterator(out))
@@ -40,18 +40,18 @@ TEST(Cli, UnknownSetKeyExits2AndListsValidKeys) {
   const auto result = runPenumbra("export --scene cube --out /tmp/penumbra_never --set nope.key=1");
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.output.find("unknown parameter 'nope.key'"), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("light_layers.resolution"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("light.resolution"), std::string::npos) << result.output;
   EXPECT_FALSE(fs::exists("/tmp/penumbra_never"));
 }
 
 TEST(Cli, OutOfRangeValueExits2AndNamesTheRange) {
   const auto result = runPenumbra("export --scene cube --out /tmp/penumbra_never "
-                                  "--set light_layers.resolution=5000");
+                                  "--set light.resolution=5000");
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.output.find("[128, 2048]"), std::string::npos) << result.output;
-  const auto notNumber = runPenumbra("export --set hard_shadow.bias=abc --out /tmp/penumbra_never");
+  const auto notNumber = runPenumbra("export --set hard_shadow.offset=abc --out /tmp/penumbra_never");
   EXPECT_EQ(notNumber.exitCode, 2);
-  EXPECT_NE(notNumber.output.find("hard_shadow.bias"), std::string::npos) << notNumber.output;
+  EXPECT_NE(notNumber.output.find("hard_shadow.offset"), std::string::npos) << notNumber.output;
 }
 
 TEST(Cli, BadFlagsAndScenesExit2) {

@@ -18,7 +18,7 @@ TEST(GlContextTest, HeadlessContextIsGl45Core) {
 }
 
 TEST(LightLayers, NearBeforeFarWhereCoveredClearedElsewhere) {
-  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=256"});
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=256"});
   const auto nearLayer = run.read("light_layers.near");
   const auto farLayer = run.read("light_layers.far");
   int covered = 0, empty = 0;
@@ -36,7 +36,7 @@ TEST(LightLayers, NearBeforeFarWhereCoveredClearedElsewhere) {
 TEST(LightLayers, ReceiverOnlyObjectsAreAbsentFromBothLayers) {
   Scene scene = makeBuiltinScene("cube");
   for (SceneObject& object : scene.objects) object.receiverOnly = true;
-  PipelineRun run(scene, {"light_layers.resolution=128"});
+  PipelineRun run(scene, {"light.resolution=128"});
   for (float value : run.read("light_layers.near")) ASSERT_EQ(value, 1.0f);
   for (float value : run.read("light_layers.far")) ASSERT_EQ(value, 0.0f);
 }
@@ -71,7 +71,7 @@ TEST(HardShadow, PlateShadowEqualsAnalyticProjectionWithinOneTexel) {
   Scene scene = makeBuiltinScene("plate");
   scene.light.width = scene.light.height = 1e-3f;
   const int mapSize = 512;
-  PipelineRun run(scene, {"light_layers.resolution=" + std::to_string(mapSize)}, 320, 320);
+  PipelineRun run(scene, {"light.resolution=" + std::to_string(mapSize)}, 320, 320);
   const auto positions = run.read("gbuffer.wsPosition");
   const auto visibility = run.read("hard_shadow.visibility");
   // One shadow-map texel on the ground: the map spans 2 * depth * tan(fov/2) there.
@@ -96,13 +96,13 @@ TEST(HardShadow, PlateShadowEqualsAnalyticProjectionWithinOneTexel) {
 }
 
 TEST(Export, ExrReadBackEqualsGpuBufferBitForBit) {
-  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=128"}, 96, 64);
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, 96, 64);
   const auto directory = std::filesystem::temp_directory_path() / "penumbra_exr_test";
   std::filesystem::create_directories(directory);
   for (const std::string key : {"gbuffer.wsPosition", "light_layers.near", "hard_shadow.visibility"}) {
     const size_t dot = key.find('.');
     const Output& output = run.pipeline->stage(key.substr(0, dot)).output(key.substr(dot + 1));
-    const GlTexture& texture = run.frame->input(key);
+    const GlTexture& texture = run.frame->texture(key);
     exportTexture(directory, key, texture, output);
     int width = 0, height = 0;
     std::vector<std::string> channels;

@@ -23,7 +23,7 @@ public:
   explicit LightLayersOnCpu(const PipelineRun& run)
       : light_(run.frame->light), nearLs_(run.read("light_layers.near")),
         farLs_(run.read("light_layers.far")) {
-    const GlTexture& layer = run.frame->input("light_layers.near");
+    const GlTexture& layer = run.frame->texture("light_layers.near");
     width_ = layer.width();
     height_ = layer.height();
     double minNear = 1, maxFar = 0;

@@ -24,16 +24,16 @@ constexpr int kClassBackground = CLASS_BACKGROUND, kClassLit = CLASS_LIT,
               kClassPenumbra = CLASS_PENUMBRA, kClassUmbra = CLASS_UMBRA,
               kClassOutside = CLASS_OUTSIDE;
 
-// The largest bias any of the trace's rays gets at a receiver at light depth z: trace.bias
+// The largest bias any of the trace's rays gets at a receiver at light depth z: light.bias
 // plus Eq 3.2 with n.l at its clamp. A ray's end moves towards the light by its bias along
 // the ray, so its depth lies in [z - largestBias, z].
 double largestTraceBias(const PipelineRun& run, double z) {
   const Pipeline& pipeline = *run.pipeline;
   const LightFrame& light = run.frame->light;
-  double bias = pipeline.param("trace.bias").asFloat();
-  if (pipeline.param("trace.adaptive_bias").asBool())
+  double bias = pipeline.param("light.bias").asFloat();
+  if (pipeline.param("light.adaptive_bias").asBool())
     bias += std::sqrt(2.0) * z * std::max(light.tanHalfFovX, light.tanHalfFovY) /
-            (run.frame->uniforms.sizes.z * double(pipeline.param("trace.min_cosine").asFloat()));
+            (run.frame->light.mapSize * double(pipeline.param("light.min_cosine").asFloat()));
   return bias;
 }
 
@@ -205,7 +205,7 @@ TEST(Classify, TwoLayerUmbraRuleMissesRaysBetweenAbuttingOccluders) {
 // finite and ordered; outside and background follow the geometry; the mask and zRange agree.
 TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
   const int width = 200, height = 150;  // not square: catches swapped axes
-  PipelineRun run(makeBuiltinScene("spheres"), {"light_layers.resolution=256"}, width, height);
+  PipelineRun run(makeBuiltinScene("spheres"), {"light.resolution=256"}, width, height);
   const auto mask = run.read("classify.mask");
   const auto zRange = run.read("classify.zRange");
   const auto positions = run.read("gbuffer.wsPosition");
@@ -269,7 +269,7 @@ TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
 // Each iteration (Eq 3.3) only tightens the bounds: pixels move out of penumbra, never in.
 // With no iteration the bounds are the whole map's, the coarsest N-buffer level.
 TEST(Classify, MoreIterationsOnlyMovePixelsOutOfPenumbra) {
-  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=256"}, 160, 160);
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=256"}, 160, 160);
   std::vector<std::vector<int>> byIterations;
   for (int iterations = 0; iterations <= 4; ++iterations)
     byIterations.push_back(classesOf(run, iterations));
@@ -304,14 +304,14 @@ TEST(Classify, MoreIterationsOnlyMovePixelsOutOfPenumbra) {
 
 // §3.6: the umbra rule is invalid with three layers; the stage also has a switch for it.
 TEST(Classify, NoUmbraWithThreeLayersOrWhenSwitchedOff) {
-  PipelineRun run(makeBuiltinScene("plate"), {"light_layers.resolution=256"}, 128, 128);
+  PipelineRun run(makeBuiltinScene("plate"), {"light.resolution=256"}, 128, 128);
   const double lit = run.frame->counters.at("classify.lit");
   const double penumbra = run.frame->counters.at("classify.penumbra");
   const double umbra = run.frame->counters.at("classify.umbra");
   ASSERT_GT(umbra, 100);
-  for (const char* assignment : {"classify.umbra=false", "trace.layers=three"}) {
+  for (const char* assignment : {"classify.umbra=false", "light.layers=three"}) {
     PipelineRun changed(makeBuiltinScene("plate"),
-                        {"light_layers.resolution=256", std::string(assignment)}, 128, 128);
+                        {"light.resolution=256", std::string(assignment)}, 128, 128);
     EXPECT_EQ(changed.frame->counters.at("classify.umbra"), 0) << assignment;
     EXPECT_EQ(changed.frame->counters.at("classify.lit"), lit) << assignment;
     EXPECT_EQ(changed.frame->counters.at("classify.penumbra"), penumbra + umbra) << assignment;
@@ -322,7 +322,7 @@ TEST(Classify, NoUmbraWithThreeLayersOrWhenSwitchedOff) {
 // an occluder, far receiver, geometry outside the frustum): classification stays exact.
 TEST(Classify, LitIsConservativeOnStressScenes) {
   for (const std::string& name : stressSceneNames()) {
-    PipelineRun run(makeStressScene(name), {"light_layers.resolution=256"}, 128, 128);
+    PipelineRun run(makeStressScene(name), {"light.resolution=256"}, 128, 128);
     const Findings found = checkClassification(run);
     std::printf("[ %s ] lit %d, penumbra %d, umbra %d, outside %d\n", name.c_str(), found.lit,
                 found.penumbra, found.umbra, found.outside);

@@ -231,10 +231,10 @@ TEST(HashCommand, CliWritesLittleEndianWordsAndRejectsUnknownHashes) {
 // ~ 0.001); a new frame key changes (almost) every pixel.
 TEST(HashStage, SamplesAreTheHashOfThePixelInTheUnitSquare) {
   const int width = 320, height = 320;
-  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=128"}, width, height);
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, width, height);
   for (HashKind kind : kAllKinds) {
     const std::string name = kHashKindNames[int(kind)];
-    ASSERT_EQ(run.pipeline->set(std::string("hash.function=") + name), "");
+    ASSERT_EQ(run.pipeline->set(std::string("light.hash=") + name), "");
     const std::uint32_t key = 0xC0FFEEu;
     run.frame->frameKey = key;
     run.run();

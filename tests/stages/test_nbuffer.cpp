@@ -158,8 +158,8 @@ TEST(NBuffer, RejectsLevelsOfTheWrongShape) {
 // The stage builds from this frame's light layers: level 0 is (near, near, far, 0) and the
 // coarsest level holds the whole-map bounds at every texel.
 TEST(NBufferStage, BuiltFromTheLightLayersOfTheFrame) {
-  PipelineRun run(makeBuiltinScene("cube"), {"light_layers.resolution=128"}, 64, 64);
-  const GlTexture& levels = run.frame->input("nbuffer.levels");
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, 64, 64);
+  const GlTexture& levels = run.frame->texture("nbuffer.levels");
   ASSERT_EQ(levels.layers(), 8);
   EXPECT_EQ(run.frame->counters.at("nbuffer.levels"), 8.0);
   const auto nearLayer = run.read("light_layers.near");

@@ -18,8 +18,8 @@ constexpr int kEye = 48;
 // The oracle's ray model has one bias per receiver along the ray and no normal test, so
 // the stage runs with the same: constant bias, no Eq 3.2, no back-face early out.
 const std::vector<std::string> kSameModel = {
-    "light_layers.resolution=256", "trace.adaptive_bias=false", "trace.bias=0.01",
-    "trace.early_out_backface=false", "trace.layers=two"};
+    "light.resolution=256", "light.adaptive_bias=false", "light.bias=0.01",
+    "trace.early_out_backface=false", "light.layers=two"};
 constexpr float kBias = 0.01f;
 
 struct Dense {
@@ -31,7 +31,7 @@ const Dense& denseOf(const std::string& scene) {
   if (cache.count(scene)) return cache.at(scene);
   const Dense dense = [&] {
     PipelineRun run(makeBuiltinScene(scene), kSameModel, kEye, kEye);
-    const GlTexture& nearLayer = run.frame->input("light_layers.near");
+    const GlTexture& nearLayer = run.frame->texture("light_layers.near");
     const LayerMaps maps{nearLayer.width(), nearLayer.height(), run.read("light_layers.near"),
                          run.read("light_layers.far")};
     const auto positions = run.read("gbuffer.wsPosition");

@@ -28,7 +28,7 @@ gpu::RayQuery toQuery(const OracleRay& ray) {
 }
 
 LayerMaps layersOf(const PipelineRun& run) {
-  const GlTexture& nearLayer = run.frame->input("light_layers.near");
+  const GlTexture& nearLayer = run.frame->texture("light_layers.near");
   return {nearLayer.width(), nearLayer.height(), run.read("light_layers.near"),
           run.read("light_layers.far")};
 }
@@ -36,7 +36,7 @@ LayerMaps layersOf(const PipelineRun& run) {
 // Rays from random receivers (visible G-buffer points and points in the scene's box) to
 // random points of the light, built by the oracle's own light-space code.
 RaySet sceneRays(const std::string& name, int count, std::uint32_t seed) {
-  PipelineRun run(makeBuiltinScene(name), {"light_layers.resolution=512"}, 128, 128);
+  PipelineRun run(makeBuiltinScene(name), {"light.resolution=512"}, 128, 128);
   RaySet set{name, layersOf(run), run.frame->light.zNear, run.frame->light.zFar, {}};
   const auto positions = run.read("gbuffer.wsPosition");
   const Bounds bounds = run.scene.bounds(/*occludersOnly=*/true);

@@ -47,7 +47,7 @@ TEST_P(TraceRecords, DecisionsAddUpToTheVisibilityAndSteppingNeverDecreases) {
   const std::string search = GetParam();
   const std::vector<std::string> sets = {"trace.search=" + search, "trace.rays=3",
                                          "trace.use_classification=false",
-                                         "light_layers.resolution=256"};
+                                         "light.resolution=256"};
   PipelineRun first(makeBuiltinScene("cube"), sets, 160, 160);
   int x = -1, y = -1;
   ASSERT_TRUE(findPenumbraPixel(first, x, y));
@@ -91,8 +91,8 @@ TEST(TraceStability, EveryOutputFiniteAndVisibilityInRangeOnEveryScene) {
     for (const char* search : {"hierarchical", "linear_binary"})
       for (const char* layers : {"two", "three"}) {
         PipelineRun run(loadSceneForTest(name),
-                        {std::string("trace.search=") + search, std::string("trace.layers=") + layers,
-                         "light_layers.resolution=128"},
+                        {std::string("trace.search=") + search, std::string("light.layers=") + layers,
+                         "light.resolution=128"},
                         96, 96);
         const std::string where = name + " " + search + " " + layers;
         for (const auto& [key, texture] : run.frame->textures)
@@ -123,7 +123,7 @@ TEST(TraceVersusHardShadow, PointLightGivesTheHardShadow) {
   for (const char* name : {"plate", "cube"}) {
     Scene scene = makeBuiltinScene(name);
     scene.light.width = scene.light.height = 1e-3f;
-    PipelineRun run(scene, {"trace.rays=2", "light_layers.resolution=512"}, 200, 200);
+    PipelineRun run(scene, {"trace.rays=2", "light.resolution=512"}, 200, 200);
     const auto traced = run.read("trace.visibility");
     const auto hard = run.read("hard_shadow.visibility");
     int differ = 0, shadowed = 0;

@@ -24,6 +24,6 @@ struct PipelineRun {
               int height = 256);
   void run() { pipeline->run(*frame); }
   std::vector<float> read(const std::string& stageDotOutput, int layer = 0) const {
-    return frame->input(stageDotOutput).readFloats(layer);
+    return frame->texture(stageDotOutput).readFloats(layer);
   }
 };

@@ -22,16 +22,17 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
                                                  int search, int layers, float linearStep,
                                                  int binarySteps, int maxIterations) {
   static ShaderProgram program{{{GL_COMPUTE_SHADER, "tests/ray_query.comp"}}};
-  gpu::FrameUniforms frame{};
-  frame.lightDepthRange = {zNear_, zFar_, 1, 1};
-  frame.sizes = {1, 1, width_, height_};
+  gpu::LightUniforms light{};
+  light.lightDepthRange = {zNear_, zFar_, 1, 1};
+  light.mapSize = {width_, height_, 0, 0};
+  light.bias = {0, 0, 0.1f, 0};
   gpu::TraceParams trace{};
   trace.config = {1, 0, search, layers};
   trace.limits = {maxIterations, binarySteps, 0, 0};
-  trace.bias = {0, 0, 0.1f, linearStep};
+  trace.stepping = {linearStep, 0, 0, 0};
   trace.record = {-1, -1, 0, levels_.layers() - 1};
-  GlBuffer frameBuffer, traceBuffer, records, totals, queryBuffer, resultBuffer;
-  frameBuffer.upload(&frame, sizeof frame);
+  GlBuffer lightBuffer, traceBuffer, records, totals, queryBuffer, resultBuffer;
+  lightBuffer.upload(&light, sizeof light);
   traceBuffer.upload(&trace, sizeof trace);
   std::vector<std::uint32_t> zeros(64, 0);
   records.upload(zeros.data(), zeros.size() * 4);
@@ -39,7 +40,7 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   queryBuffer.upload(queries.data(), queries.size() * sizeof(gpu::RayQuery));
   std::vector<gpu::RayQueryResult> results(queries.size());
   resultBuffer.upload(results.data(), results.size() * sizeof(gpu::RayQueryResult));
-  glBindBufferBase(GL_UNIFORM_BUFFER, binding::kFrameUniforms, frameBuffer.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, binding::kLightUniforms, lightBuffer.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, binding::kTraceParams, traceBuffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceRecords, records.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceTotals, totals.id());

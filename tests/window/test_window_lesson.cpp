@@ -130,7 +130,7 @@ TEST(WindowLesson, ThicknessViewIsFarMinusNearWhereCovered) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("lesson_thickness");
   const auto script = writeScript(dir, R"([{"eye_size": [128, 96]},
-    {"set": {"light_layers.resolution": 256}}, {"export_all": ")" + (dir / "all").string() + R"("},
+    {"set": {"light.resolution": 256}}, {"export_all": ")" + (dir / "all").string() + R"("},
     {"thickness": true}, {"wait": 1}, {"export_view": ")" + (dir / "thickness.exr").string() + R"("},
     {"clip_negative": false}, {"export_view": ")" + (dir / "signed.exr").string() + R"("}])");
   const auto result = runPenumbra("--script " + script.string());

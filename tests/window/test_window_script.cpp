@@ -70,7 +70,7 @@ TEST(WindowScript, ExportsAreBitIdenticalToPenumbraExport) {
   const fs::path dir = scratchDirectory("window_export");
   const fs::path fromWindow = dir / "window", fromCli = dir / "cli";
   const auto script = writeScript(dir, R"([
-    {"eye_size": [128, 96]}, {"set": {"light_layers.resolution": 128, "trace.rays": 3}},
+    {"eye_size": [128, 96]}, {"set": {"light.resolution": 128, "trace.rays": 3}},
     {"export_all": ")" + fromWindow.string() + R"("},
     {"select_output": "trace.visibility"},
     {"export_view": ")" + (dir / "view.exr").string() + R"("},
@@ -79,7 +79,7 @@ TEST(WindowScript, ExportsAreBitIdenticalToPenumbraExport) {
   ASSERT_EQ(window.exitCode, 0) << window.output;
   EXPECT_NE(window.output.find("files into " + fromWindow.string()), std::string::npos) << window.output;
   const auto cli = runPenumbra("export --scene cube --width 128 --height 96 --set "
-                               "light_layers.resolution=128 --set trace.rays=3 --out " + fromCli.string());
+                               "light.resolution=128 --set trace.rays=3 --out " + fromCli.string());
   ASSERT_EQ(cli.exitCode, 0) << cli.output;
   int compared = 0;
   for (const auto& entry : fs::directory_iterator(fromCli)) {
@@ -108,7 +108,7 @@ TEST(WindowScript, SavedSettingsReproduceTheImageThroughConfig) {
   const fs::path dir = scratchDirectory("window_config");
   const fs::path settings = dir / "settings.json";
   const auto first = writeScript(dir, R"([
-    {"eye_size": [96, 72]}, {"set": {"light_layers.resolution": 128, "filter.radius": 2}},
+    {"eye_size": [96, 72]}, {"set": {"light.resolution": 128, "filter.radius": 2}},
     {"camera_orbit": [25, 5]}, {"settings": {"light": {"width": 0.6}}},
     {"save_settings": ")" + settings.string() + R"("},
     {"export_view": ")" + (dir / "first.exr").string() + R"("}])");
@@ -119,7 +119,7 @@ TEST(WindowScript, SavedSettingsReproduceTheImageThroughConfig) {
   ASSERT_EQ(loaded.exitCode, 0) << loaded.output;
   expectSameExr(dir / "first.exr", dir / "second.exr");
   // And the orbit mattered: the default camera gives another image.
-  std::ofstream(dir / "third.json") << R"([{"eye_size": [96, 72]}, {"set": {"light_layers.resolution": 128, "filter.radius": 2}},
+  std::ofstream(dir / "third.json") << R"([{"eye_size": [96, 72]}, {"set": {"light.resolution": 128, "filter.radius": 2}},
     {"export_view": ")" + (dir / "third.exr").string() + R"("}])";
   ASSERT_EQ(runPenumbra("--script " + (dir / "third.json").string()).exitCode, 0);
   int w = 0, h = 0;

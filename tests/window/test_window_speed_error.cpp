@@ -89,8 +89,8 @@ TEST(SpeedErrorPanel, MatchesTheCurrentPipelineParameters) {
   std::vector<SpeedErrorPoint> points;
   ASSERT_EQ(parseSpeedErrorCsv(text, points), "");
   Pipeline pipeline;
-  for (const char* s : {"trace.search=hierarchical", "trace.layers=two", "trace.rays=3",
-                        "light_layers.resolution=512", "trace.deferred=true", "filter.enabled=true"})
+  for (const char* s : {"trace.search=hierarchical", "light.layers=two", "trace.rays=3",
+                        "light.resolution=512", "trace.deferred=true", "filter.enabled=true"})
     ASSERT_EQ(pipeline.set(s), "") << s;
   EXPECT_EQ(matchingPoint(points, pipelineConfigOf(pipeline)), 2);
   ASSERT_EQ(pipeline.set("trace.deferred=false"), "");

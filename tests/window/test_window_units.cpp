@@ -115,10 +115,10 @@ TEST(WindowUnits, BadSettingsChangeNothingAndNameThePath) {
   const json before = settingsJson(state);
   const auto apply = [&](const json& settings) { return applySettingsJson(state, settings); };
   // A valid parameter first (keys are read in order), then a bad one: neither is applied.
-  std::string problem = apply({{"parameters", {{"light_layers.fov_degrees", 60}, {"nope.key", 1}}}});
+  std::string problem = apply({{"parameters", {{"light.fov_degrees", 60}, {"nope.key", 1}}}});
   EXPECT_NE(problem.find("/parameters/nope.key"), std::string::npos) << problem;
-  EXPECT_NE(problem.find("light_layers.resolution"), std::string::npos) << problem;  // valid keys
-  problem = apply({{"parameters", {{"light_layers.resolution", 5000}}}});
+  EXPECT_NE(problem.find("light.resolution"), std::string::npos) << problem;  // valid keys
+  problem = apply({{"parameters", {{"light.resolution", 5000}}}});
   EXPECT_NE(problem.find("[128, 2048]"), std::string::npos) << problem;
   problem = apply({{"camera", {{"position", {1, 2}}}}});
   EXPECT_NE(problem.find("/camera/position"), std::string::npos) << problem;
@@ -156,10 +156,10 @@ TEST(WindowUnits, ExportNamesSaySceneOutputAndChangedParameters) {
   UiState state;
   useCube(state);
   EXPECT_EQ(exportStem(state, "hard_shadow.visibility", 0), "cube_hard_shadow.visibility");
-  ASSERT_EQ(state.setParameter("hard_shadow.bias", "0.02"), "");
-  ASSERT_EQ(state.setParameter("light_layers.resolution", "256"), "");  // another stage's
+  ASSERT_EQ(state.setParameter("hard_shadow.offset", "0.02"), "");
+  ASSERT_EQ(state.setParameter("light.resolution", "256"), "");  // another stage's
   const std::string stem = exportStem(state, "hard_shadow.visibility", 0);
-  EXPECT_EQ(stem, "cube_hard_shadow.visibility_bias-0.02");
+  EXPECT_EQ(stem, "cube_hard_shadow.visibility_offset-0.02");
 }
 
 TEST(WindowUnits, NBufferHoverWindowSpansTwoToTheLevelInsideTheMap) {

@@ -30,7 +30,7 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 std::string exportStem(const UiState& state, const std::string& stageDotOutput, int layer) {
   std::string stem = state.scene.name + "_" + stageDotOutput;
   if (state.frame && state.frame->has(stageDotOutput) &&
-      state.frame->input(stageDotOutput).isArray())
+      state.frame->texture(stageDotOutput).isArray())
     stem += "_L" + std::to_string(layer);
   if (state.frame) {
     char size[40];
@@ -64,7 +64,7 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
     else if (endsWith(target, ".exr")) exr = target;
     else {
       const fs::path directory = target.empty() ? fs::path(kDefaultExportDirectory) : fs::path(target);
-      const GlTexture& source = state.frame->input(view.output);  // a difference is 2D
+      const GlTexture& source = state.frame->texture(view.output);  // a difference is 2D
       const int sourceLayer = source.isArray() ? std::clamp(view.settings.layer, 0, source.layers() - 1) : 0;
       std::string stem = exportStem(state, view.output, sourceLayer);
       if (!view.minus.empty())  // "cube_light_layers.far-minus-light_layers.near_..."

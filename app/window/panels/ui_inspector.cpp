@@ -33,7 +33,7 @@ const std::vector<PickRow>& pickRows(const UiState& state) {
     for (const Output& output : stage->outputs()) {
       const std::string key = stage->name() + "." + output.name;
       if (!state.frame->has(key)) continue;
-      const GlTexture& texture = state.frame->input(key);
+      const GlTexture& texture = state.frame->texture(key);
       if (texture.width() != state.pickSpace.x || texture.height() != state.pickSpace.y) continue;
       for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer)
         rows.push_back({texture.isArray() ? key + " L" + std::to_string(layer) : key, output.channels,
@@ -134,7 +134,7 @@ void drawRayTrace(UiState& state) {
   }
   glm::ivec2 lightMap{0};
   if (state.frame->has("light_layers.near"))
-    lightMap = {state.frame->input("light_layers.near").width(), state.frame->input("light_layers.near").height()};
+    lightMap = {state.frame->texture("light_layers.near").width(), state.frame->texture("light_layers.near").height()};
   if (ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels, zoomed
     if (ViewPanel* target = state.selectionTarget(); target && state.selectOutput("nbuffer.levels").empty()) {
       target->frameOverlays = true;
@@ -172,7 +172,7 @@ void drawInspector(UiState& state) {
   if (ImGui::CollapsingHeader("Picked texel", ImGuiTreeNodeFlags_DefaultOpen)) drawPick(state);
   for (int v = 0; v < (state.twoViews ? 2 : 1); ++v) {
     const ViewPanel& view = state.views[v];
-    const GlTexture* texture = state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+    const GlTexture* texture = state.frame && state.frame->has(view.output) ? &state.frame->texture(view.output) : nullptr;
     if (texture && view.settings.colormap == Colormap::Categorical &&
         singleChannel(view.settings, texture->channelCount()) >= 0 &&
         ImGui::CollapsingHeader(v == 0 ? "Categories (view A)" : "Categories (view B)",

@@ -19,7 +19,7 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
     if (state.views[v].output == key) shownIn += v == 0 ? "[A]" : "[B]";
   std::string size = "not written";
   if (state.frame && state.frame->has(key)) {
-    const GlTexture& texture = state.frame->input(key);
+    const GlTexture& texture = state.frame->texture(key);
     char text[64];
     std::snprintf(text, sizeof text, "%dx%d%s", texture.width(), texture.height(),
                   texture.isArray() ? (" x" + std::to_string(texture.layers())).c_str() : "");

@@ -103,9 +103,9 @@ int matchingPoint(const std::vector<SpeedErrorPoint>& points, const PipelineConf
 PipelineConfig pipelineConfigOf(const Pipeline& pipeline) {
   PipelineConfig c;
   c.search = pipeline.param("trace.search").asEnum();
-  c.layers = pipeline.param("trace.layers").asEnum();
+  c.layers = pipeline.param("light.layers").asEnum();
   c.rays = int(pipeline.param("trace.rays").value);
-  c.shadowMap = int(pipeline.param("light_layers.resolution").value);
+  c.shadowMap = int(pipeline.param("light.resolution").value);
   c.deferred = pipeline.param("trace.deferred").value != 0;
   c.filter = pipeline.param("filter.enabled").value != 0;
   return c;

@@ -23,7 +23,7 @@ std::string parseSpeedErrorCsv(const std::string& text, std::vector<SpeedErrorPo
 // Indices of the points no other point beats on both time and error, by increasing time.
 std::vector<size_t> paretoFrontier(const std::vector<SpeedErrorPoint>& points);
 // The point whose configuration equals the given parameters; -1 if none. search is the
-// trace.search option name, layers the trace.layers option name ("one".."three").
+// trace.search option name, layers the light.layers option name ("one".."three").
 struct PipelineConfig {
   std::string search, layers;
   int rays = 0, shadowMap = 0;

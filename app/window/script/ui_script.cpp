@@ -168,7 +168,7 @@ void printPick(const UiState& state, const std::string& label) {
               state.pickSpace.x, state.pickSpace.y);
   for (const std::string& key : state.outputKeys()) {
     if (!state.frame->has(key)) continue;
-    const GlTexture& texture = state.frame->input(key);
+    const GlTexture& texture = state.frame->texture(key);
     if (texture.width() != state.pickSpace.x || texture.height() != state.pickSpace.y) continue;
     const auto texel = readTexel(texture, pick.x, pick.y, 0);
     std::printf("  %s", key.c_str());

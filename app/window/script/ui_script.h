@@ -2,7 +2,7 @@
 // (for tests, reports and lesson figures). Each action is an object with one key:
 //
 //   {"select_stage": "hard_shadow"}          {"select_output": "light_layers.near"}
-//   {"set": {"hard_shadow.bias": 0.01}}      {"pick": [x, y]}   (active view; row 0 at top)
+//   {"set": {"hard_shadow.offset": 0.01}}      {"pick": [x, y]}   (active view; row 0 at top)
 //   {"select_ray": 3}                        {"wait": 2}        (frames)
 //   {"export_view": "dir" | "f.png" | "f.exr"}   {"export_all": "dir"}
 //   {"screenshot": "f.png"}                  {"view": 0 | 1}    (active view; 1 opens B)

@@ -5,7 +5,7 @@
 //   {"penumbra_settings": 1, "scene": "cube", "eye": "fit" | [640, 480],
 //    "camera": {"position": [x,y,z], "target": [..], "up": [..], "fov_y_degrees": 45},
 //    "light": {"center": [..], "forward": [..], "up": [..], "width": 1.6, "height": 1.6},
-//    "parameters": {"hard_shadow.bias": 0.005, "composite.shadow": "hard_shadow", ...}}
+//    "parameters": {"hard_shadow.offset": 0.005, "composite.shadow": "hard_shadow", ...}}
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>

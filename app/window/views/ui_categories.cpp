@@ -28,7 +28,7 @@ std::map<int, long> categoryCounts(const std::vector<float>& values, int channel
 // 3. The legend, counted once per pipeline run and view content.
 void drawCategoryLegend(const UiState& state, const ViewPanel& view) {
   if (!state.frame || !state.frame->has(view.output)) return;
-  const GlTexture& texture = state.frame->input(view.output);
+  const GlTexture& texture = state.frame->texture(view.output);
   const int channel = singleChannel(view.settings, texture.channelCount());
   if (channel < 0 || view.settings.colormap != Colormap::Categorical) return;
   static std::map<int, long> counts;

@@ -45,8 +45,8 @@ void addLayerBands(const Frame& frame, std::vector<RayStepRecord>& steps) {
       hi = glm::max(hi, s.windowLo);
     }
   if (hi.x < 0) return;
-  const GlTexture& near = frame.input("light_layers.near");
-  const GlTexture& far = frame.input("light_layers.far");
+  const GlTexture& near = frame.texture("light_layers.near");
+  const GlTexture& far = frame.texture("light_layers.far");
   lo = glm::clamp(lo, glm::ivec2(0), glm::ivec2(near.width() - 1, near.height() - 1));
   hi = glm::clamp(hi, lo, glm::ivec2(near.width() - 1, near.height() - 1));
   const glm::ivec2 size = hi - lo + 1;
@@ -80,7 +80,7 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
   if (frame.has("trace.visibility")) {
     char text[96];
     std::snprintf(text, sizeof text, "ray %d of %d; pixel visibility %.4g", ray, n * n,
-                  double(readTexel(frame.input("trace.visibility"), pixel.x, pixel.y)[0]));
+                  double(readTexel(frame.texture("trace.visibility"), pixel.x, pixel.y)[0]));
     info.result = text;
   }
   return info;

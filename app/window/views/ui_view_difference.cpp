@@ -55,14 +55,14 @@ const GlTexture* ViewDifference::update(const GlTexture& a, const GlTexture& b, 
 // 3. What a view shows.
 const GlTexture* shownTexture(const UiState& state, const ViewPanel& view, std::string* problem) {
   if (!state.frame || !state.frame->has(view.output)) return nullptr;
-  const GlTexture& a = state.frame->input(view.output);
+  const GlTexture& a = state.frame->texture(view.output);
   if (view.minus.empty()) return &a;
   if (!state.frame->has(view.minus)) {
     if (problem) *problem = "'" + view.minus + "' was not written this frame";
     return nullptr;
   }
   std::string why;
-  const GlTexture* result = view.difference.update(a, state.frame->input(view.minus), view.settings.layer,
+  const GlTexture* result = view.difference.update(a, state.frame->texture(view.minus), view.settings.layer,
                                                    view.clipNegative, state.pipelineRuns, why);
   if (problem) *problem = why;
   return result;
@@ -88,8 +88,8 @@ std::string setViewDifference(UiState& state, ViewPanel& view, const std::string
   }
   if (!state.outputOf(minus)) return "unknown output '" + minus + "'";
   if (state.frame && state.frame->has(minus) && state.frame->has(view.output)) {
-    const GlTexture& a = state.frame->input(view.output);
-    const GlTexture& b = state.frame->input(minus);
+    const GlTexture& a = state.frame->texture(view.output);
+    const GlTexture& b = state.frame->texture(minus);
     if (a.width() != b.width() || a.height() != b.height())
       return "'" + minus + "' is " + std::to_string(b.width()) + "x" + std::to_string(b.height()) +
              ", '" + view.output + "' " + std::to_string(a.width()) + "x" + std::to_string(a.height());

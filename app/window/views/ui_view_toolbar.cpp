@@ -51,10 +51,10 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
       setViewDifference(state, view, "");
     if (state.outputOf("light_layers.far") && ImGui::Selectable("thickness: far - near"))
       state.status = showThickness(state);
-    const GlTexture* a = state.frame && state.frame->has(view.output) ? &state.frame->input(view.output) : nullptr;
+    const GlTexture* a = state.frame && state.frame->has(view.output) ? &state.frame->texture(view.output) : nullptr;
     for (const std::string& key : state.outputKeys()) {
       if (key == view.output || !a || !state.frame->has(key)) continue;
-      const GlTexture& b = state.frame->input(key);
+      const GlTexture& b = state.frame->texture(key);
       if (b.width() != a->width() || b.height() != a->height()) continue;
       if (ImGui::Selectable(("- " + key).c_str(), key == view.minus))
         state.status = setViewDifference(state, view, key);
@@ -119,7 +119,7 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Colormap for a single channel (colour shows each channel in gray).");
-  const GlTexture& source = state.frame->input(view.output);  // a difference view is 2D
+  const GlTexture& source = state.frame->texture(view.output);  // a difference view is 2D
   if (source.isArray()) {
     sameLineIfFits(170);
     ImGui::SetNextItemWidth(110);

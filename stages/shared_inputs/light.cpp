@@ -1,0 +1,84 @@
+// Stage `light` (thesis §3, Eq 3.1 and Eq 3.2): the light as every later stage sees it. It
+// owns what the depth-map stages share, declared once: the light's frustum (projection
+// point behind the light's centre, field of view, map resolution), the bias group of Eq 3.2,
+// the number of depth layers that model the occluders (§3.2-3.4, read by classification and
+// the trace) and the hash that picks light samples (§3.1, Appendix A). Its output is the uniform block
+// of shaders/shared/light_block.h; a CPU copy goes to frame.light for the CPU-side readers.
+#include "core/frame.h"
+#include "gl/gpu_layout.h"
+#include "gl/hash_kind.h"
+
+namespace {
+
+class LightStage final : public Stage {
+public:
+  LightStage() {
+    outputs_ = {Output::buffer("light", "The light frame (Eq 3.1), the map size, the Eq 3.2 "
+                                        "bias group and the sample hash, as the uniform block "
+                                        "of shaders/shared/light_block.h.")};
+    params_ = {
+        Param::integer("resolution", "Shadow-map size in texels (square): the light layers, "
+                                     "the N-buffer and every depth-map method's maps.",
+                       512, 128, 2048),
+        Param::real("fov_degrees",
+                    "Field of view of the light's frustum (Eq 3.1). Wider covers more of the "
+                    "scene at lower resolution; the light's projection point moves closer.",
+                    90, 10, 150),
+        Param::real("bias", "Constant bias in world units: a receiver point moves this far "
+                            "towards the light before it is tested (every depth-map method).",
+                    0.0, 0, 1),
+        Param::boolean("adaptive_bias", "Add the adaptive bias of Eq 3.2: one texel's world "
+                                        "size at the receiver's depth, divided by n.l.", true),
+        Param::real("min_cosine", "Lower clamp of n.l in Eq 3.2, so grazing surfaces get a "
+                                  "large but finite bias (\"limited to some small, non-zero "
+                                  "value\", §3).", 0.1, 0.001, 1),
+        Param::choice("layers", "Depth layers that model the occluders, for classification and "
+                                "the trace: one (near only, §3.2), two (near + far, §3.3) or "
+                                "three (+ the eye's depth: a point seen by the eye is free "
+                                "space, §3.4; classification's umbra rule is then off).",
+                      {"one", "two", "three"}, 1),
+        Param::choice(
+            "hash",
+            "Hash that turns (pixel, ray, frame key) into light samples. md5_16: the thesis's "
+            "reduced 16-round MD5, as printed in Appendix A (passes 11 of 15 DIEHARD tests, "
+            "§3.1; costs < 10% of the frame, §4.3). md5_64: the full MD5 of Tzeng & Wei 2008, "
+            "about 4x the work. pcg3d: Jarzynski & Olano 2020, a few multiplies.",
+            {kHashKindNames.begin(), kHashKindNames.end()}, int(HashKind::Md5_16)),
+    };
+  }
+  std::string name() const override { return "light"; }
+  std::string summary() const override {
+    return "The light's frustum, map size, bias and sample hash, shared by every later stage.";
+  }
+  std::string thesisSection() const override { return "3, Eq 3.1-3.2"; }
+
+  void run(Frame& frame) override {
+    // 1. The light frame of Eq 3.1 (CPU copy for views, reference and the trace panel).
+    const Scene& scene = frame.scene;
+    frame.light = computeLightFrame(scene.light, scene.bounds(), param("fov_degrees").asFloat());
+    const LightFrame& l = frame.light;
+    frame.light.mapSize = param("resolution").asInt();
+    frame.light.layers = param("layers").asInt() + 1;
+    const unsigned size = unsigned(frame.light.mapSize);
+
+    // 2. The uniform block (layout: shaders/shared/light_block.h, checked in gpu_layout.h).
+    gpu::LightUniforms u{};
+    u.lightClipFromWorld = l.lightClipFromWorld;
+    u.lightViewFromWorld = l.lightViewFromWorld;
+    u.wsLightCenter = glm::vec4(scene.light.center, scene.light.width * scene.light.height);
+    u.wsLightRight = glm::vec4(l.right, 0.5f * scene.light.width);
+    u.wsLightUp = glm::vec4(l.up, 0.5f * scene.light.height);
+    u.wsLightForward = glm::vec4(l.forward, l.lightDepth);
+    u.lightDepthRange = glm::vec4(l.zNear, l.zFar, l.tanHalfFovX, l.tanHalfFovY);
+    u.mapSize = glm::uvec4(size, size, unsigned(frame.light.layers), 0);
+    u.bias = glm::vec4(param("bias").asFloat(), param("adaptive_bias").asBool() ? 1.f : 0.f,
+                       param("min_cosine").asFloat(), 0);
+    // The option index is the HashKind, which equals the GLSL HASH_* number (hash_kind.h).
+    u.sampling = glm::uvec4(unsigned(param("hash").asInt()), 0, 0, 0);
+    frame.outputBuffer(*this, "light").upload(&u, sizeof u);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeLightStage() { return std::make_unique<LightStage>(); }

@@ -1,0 +1,328 @@
+// The stage graph (app/core/pipeline.h): wiring checks, the derived order, demand-driven
+// runs, the shadow-method role, and a contract over every registered stage's parameters.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "bench/bench_configs.h"
+#include "core/pipeline.h"
+#include "scene/scene_builtin.h"
+#include "scene/scene_stress.h"
+#include "support/gl_test.h"
+
+namespace {
+
+// A stage with the given slots and outputs that writes nothing (graph structure only).
+class FakeStage final : public Stage {
+public:
+  FakeStage(std::string name, std::vector<Input> inputs, std::vector<Output> outputs,
+            std::vector<Param> params = {})
+      : name_(std::move(name)) {
+    inputs_ = std::move(inputs), outputs_ = std::move(outputs), params_ = std::move(params);
+  }
+  std::string name() const override { return name_; }
+  std::string summary() const override { return "test stage"; }
+  std::string thesisSection() const override { return ""; }
+  void run(Frame&) override {}
+
+private:
+  std::string name_;
+};
+
+Output texture(const std::string& name, GLenum format = GL_R32F, unsigned roles = kRoleNone) {
+  return {name, "test output", format, {"v"}, {}, roles};
+}
+
+StageEntry entry(std::string name, std::vector<Input> inputs, std::vector<Output> outputs,
+                 std::vector<StageEntry::Edge> edges = {}, std::vector<Param> params = {}) {
+  return {std::make_unique<FakeStage>(std::move(name), std::move(inputs), std::move(outputs),
+                                      std::move(params)),
+          std::move(edges)};
+}
+
+std::string buildError(std::vector<StageEntry> registry) {
+  try {
+    Pipeline pipeline(std::move(registry));
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+std::vector<std::string> stageNames(const Pipeline& pipeline) {
+  std::vector<std::string> names;
+  for (const auto& stage : pipeline.stages()) names.push_back(stage->name());
+  return names;
+}
+
+}  // namespace
+
+TEST(StageGraph, OrderIsDerivedFromTheEdgesNotTheRegistry) {
+  std::vector<StageEntry> registry;
+  registry.push_back(entry("consumer", {Input::texture("b", "", GL_R32F)}, {texture("c")}));
+  registry.push_back(entry("middle", {Input::texture("a", "", GL_R32F)}, {texture("b")}));
+  registry.push_back(entry("source", {}, {texture("a")}));
+  Pipeline pipeline(std::move(registry));
+  EXPECT_EQ(stageNames(pipeline), (std::vector<std::string>{"source", "middle", "consumer"}));
+  EXPECT_EQ(pipeline.source("consumer", "b"), "middle.b");
+  EXPECT_EQ(pipeline.dependencies({"consumer.c"}),
+            (std::vector<std::string>{"source", "middle", "consumer"}));
+  EXPECT_EQ(pipeline.dependencies({"middle.b"}), (std::vector<std::string>{"source", "middle"}));
+}
+
+TEST(StageGraph, BadGraphsAreRefusedNamingStageAndSlot) {
+  {  // no producer
+    std::vector<StageEntry> r;
+    r.push_back(entry("lonely", {Input::texture("missing", "")}, {texture("x")}));
+    const std::string error = buildError(std::move(r));
+    EXPECT_NE(error.find("lonely"), std::string::npos) << error;
+    EXPECT_NE(error.find("missing"), std::string::npos) << error;
+  }
+  {  // ambiguous producer
+    std::vector<StageEntry> r;
+    r.push_back(entry("one", {}, {texture("v")}));
+    r.push_back(entry("two", {}, {texture("v")}));
+    r.push_back(entry("reader", {Input::texture("v", "")}, {texture("out")}));
+    const std::string error = buildError(std::move(r));
+    EXPECT_NE(error.find("ambiguous"), std::string::npos) << error;
+    EXPECT_NE(error.find("one.v"), std::string::npos) << error;
+    EXPECT_NE(error.find("two.v"), std::string::npos) << error;
+  }
+  {  // format mismatch
+    std::vector<StageEntry> r;
+    r.push_back(entry("maker", {}, {texture("v", GL_RGBA32F)}));
+    r.push_back(entry("reader", {Input::texture("v", "", GL_R32F)}, {texture("out")}));
+    const std::string error = buildError(std::move(r));
+    EXPECT_NE(error.find("format mismatch"), std::string::npos) << error;
+    EXPECT_NE(error.find("reader"), std::string::npos) << error;
+  }
+  {  // buffer slot wired to a texture
+    std::vector<StageEntry> r;
+    r.push_back(entry("maker", {}, {texture("list")}));
+    r.push_back(entry("reader", {Input::buffer("list", "")}, {texture("out")}));
+    EXPECT_NE(buildError(std::move(r)).find("format mismatch"), std::string::npos);
+  }
+  {  // cycle
+    std::vector<StageEntry> r;
+    r.push_back(entry("a", {Input::texture("y", "")}, {texture("x")}));
+    r.push_back(entry("b", {Input::texture("x", "")}, {texture("y")}));
+    const std::string error = buildError(std::move(r));
+    EXPECT_NE(error.find("cycle"), std::string::npos) << error;
+    EXPECT_NE(error.find("a, b"), std::string::npos) << error;
+  }
+  {  // an edge naming a slot the stage does not have
+    std::vector<StageEntry> r;
+    r.push_back(entry("maker", {}, {texture("v")}));
+    r.push_back(entry("reader", {Input::texture("v", "")}, {texture("out")}, {{"typo", "maker.v"}}));
+    const std::string error = buildError(std::move(r));
+    EXPECT_NE(error.find("no input slot 'typo'"), std::string::npos) << error;
+  }
+}
+
+TEST(StageGraph, ChoiceSlotsListEveryMethodAndFollowTheirParameter) {
+  std::vector<StageEntry> r;
+  r.push_back(entry("alpha", {}, {texture("visibility", GL_R32F, kRoleShadowMethod)}));
+  r.push_back(entry("beta", {}, {texture("visibility", GL_R32F, kRoleShadowMethod)}));
+  r.push_back(entry("unrelated", {}, {texture("other")}));
+  r.push_back(entry("viewer",
+                    {Input::choice("visibility", "", kRoleShadowMethod, "shadow", "beta", true)},
+                    {texture("image")}, {}, {Param::choice("shadow", "which", {}, 0)}));
+  Pipeline pipeline(std::move(r));
+  const Param& shadow = pipeline.param("viewer.shadow");
+  EXPECT_EQ(shadow.options, (std::vector<std::string>{"alpha", "beta", "none"}));
+  EXPECT_EQ(shadow.asEnum(), "beta");  // the declared default
+  EXPECT_EQ(pipeline.source("viewer", "visibility"), "beta.visibility");
+  EXPECT_EQ(pipeline.dependencies({"viewer.image"}), (std::vector<std::string>{"beta", "viewer"}));
+  ASSERT_EQ(pipeline.set("viewer.shadow=alpha"), "");
+  EXPECT_EQ(pipeline.dependencies({"viewer.image"}), (std::vector<std::string>{"alpha", "viewer"}));
+  ASSERT_EQ(pipeline.set("viewer.shadow=none"), "");
+  EXPECT_EQ(pipeline.source("viewer", "visibility"), "");
+  EXPECT_EQ(pipeline.dependencies({"viewer.image"}), (std::vector<std::string>{"viewer"}));
+  EXPECT_NE(pipeline.set("viewer.shadow=unrelated"), "");  // not a method
+}
+
+TEST(StageGraph, RevisionChangesWithEveryParameter) {
+  Pipeline pipeline;
+  const auto before = pipeline.revision();
+  ASSERT_EQ(pipeline.set("trace.rays=3"), "");
+  const auto changed = pipeline.revision();
+  EXPECT_NE(changed, before);
+  ASSERT_EQ(pipeline.set("trace.rays=2"), "");
+  EXPECT_EQ(pipeline.revision(), before);  // a fingerprint: back to the same values
+}
+
+TEST(StageGraph, TheRegistryIsAValidGraphAndAlgorithmOneRunsInOrder) {
+  Pipeline pipeline;
+  const std::vector<std::string> names = stageNames(pipeline);
+  auto at = [&](const std::string& name) {
+    return std::find(names.begin(), names.end(), name) - names.begin();
+  };
+  EXPECT_LT(at("light"), at("light_layers"));
+  EXPECT_LT(at("light_layers"), at("nbuffer"));
+  EXPECT_LT(at("nbuffer"), at("classify"));
+  EXPECT_LT(at("classify"), at("trace"));
+  EXPECT_LT(at("trace"), at("filter"));
+  EXPECT_LT(at("filter"), at("composite"));
+  EXPECT_EQ(pipeline.methods(), (std::vector<std::string>{"trace", "filter", "hard_shadow"}));
+  EXPECT_EQ(pipeline.methods(kRoleGroundTruth), (std::vector<std::string>{"reference"}));
+  const std::string dot = pipeline.dot();
+  EXPECT_NE(dot.find("\"trace\" -> \"filter\""), std::string::npos) << dot;
+}
+
+// Demand-driven runs: only the dependency closure of what is asked for runs.
+TEST(StageGraph, OnlyWhatTheRequestedOutputsNeedRuns) {
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, 64, 48);
+  auto ran = [&] {
+    std::set<std::string> names;
+    for (const StageTime& time : run.pipeline->lastTimes())
+      if (time.ran) names.insert(time.stage);
+    return names;
+  };
+  run.pipeline->run(*run.frame, {"gbuffer.albedo"});
+  EXPECT_EQ(ran(), (std::set<std::string>{"gbuffer"}));
+  EXPECT_FALSE(run.frame->has("trace.visibility"));  // a stage that did not run leaves nothing
+
+  run.pipeline->run(*run.frame, {"filter.visibility"});
+  EXPECT_EQ(ran(), (std::set<std::string>{"light", "gbuffer", "light_layers", "nbuffer",
+                                          "classify", "trace", "filter"}));
+  const auto closure = run.pipeline->dependencies({"filter.visibility"});
+  EXPECT_EQ(std::set<std::string>(closure.begin(), closure.end()), ran());
+
+  run.pipeline->run(*run.frame, {"hard_shadow.visibility"});
+  EXPECT_EQ(ran(), (std::set<std::string>{"light", "gbuffer", "light_layers", "hard_shadow"}));
+  EXPECT_EQ(run.pipeline->lastTime("trace").ran, false);
+}
+
+// Timings: a median over runs with identical settings; any change starts a new series.
+TEST(StageGraph, TimingSeriesRestartWhenAParameterChanges) {
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, 48, 48);
+  run.run();
+  run.run();
+  EXPECT_EQ(run.pipeline->lastTime("trace").runs, 3);  // the constructor ran once
+  EXPECT_GT(run.pipeline->lastTime("trace").median, 0.0);
+  ASSERT_EQ(run.pipeline->set("filter.radius=2"), "");
+  run.run();
+  EXPECT_EQ(run.pipeline->lastTime("trace").runs, 1);
+}
+
+// The contract: every registered stage, every parameter at its minimum, its maximum and
+// every option, on `cube` and a stress scene: the graph runs, every output is finite and every
+// shadow method's visibility lies in [0, 1].
+namespace {
+void checkOutputs(PipelineRun& run, const std::string& what) {
+  for (const auto& stage : run.pipeline->stages())
+    for (const Output& output : stage->outputs()) {
+      const std::string key = stage->name() + "." + output.name;
+      if (output.isBuffer() || !run.frame->has(key)) continue;
+      const GlTexture& texture = run.frame->texture(key);
+      for (int layer = 0; layer < std::max(1, texture.layers()); ++layer) {
+        const std::vector<float> values = texture.readFloats(layer);
+        const bool visibility = (output.roles & (kRoleShadowMethod | kRoleGroundTruth)) != 0;
+        size_t bad = 0;
+        for (float v : values)
+          if (!std::isfinite(v) || (visibility && (v < 0.0f || v > 1.0f))) ++bad;
+        ASSERT_EQ(bad, 0u) << key << " layer " << layer << " with " << what;
+      }
+    }
+}
+}  // namespace
+
+TEST(StageGraph, ContractEveryParameterAtItsLimitsKeepsOutputsFinite) {
+  for (const std::string sceneName : {"cube", "stress_grazing"}) {
+    const Scene scene = sceneName == "cube" ? makeBuiltinScene("cube") : makeStressScene(sceneName);
+    // Small sizes keep the sweep short; parameters that set sizes are capped below.
+    PipelineRun run(scene, {"light.resolution=128"}, 40, 32);
+    const std::vector<std::string> keys = run.pipeline->paramKeys();
+    for (const std::string& key : keys) {
+      Param& param = run.pipeline->param(key);
+      const Param saved = param;
+      std::vector<double> values;
+      if (param.type == Param::Type::Enum) {
+        for (size_t i = 0; i < param.options.size(); ++i) values.push_back(double(i));
+      } else {
+        values = {param.min, param.max};
+      }
+      for (double value : values) {
+        // Sizes and sample counts at their maximum would only cost time here: cap them.
+        if (key == "light.resolution" && value > 256) value = 256;
+        if (key == "reference.samples" && value > 4) value = 4;
+        if (key == "reference.background" || key == "reference.cache") continue;
+        param.value = value;
+        if (key.rfind("reference.", 0) == 0 || key.rfind("error.", 0) == 0) {
+          run.pipeline->param("reference.enabled").value = 1;
+          run.pipeline->param("reference.cache").value = 0;
+          run.pipeline->param("reference.samples").value = std::min(
+              run.pipeline->param("reference.samples").value, 4.0);
+        }
+        run.run();
+        checkOutputs(run, sceneName + ": " + key + "=" + param.toString());
+        run.pipeline->param("reference.enabled").value = 0;
+      }
+      param = saved;
+    }
+  }
+}
+
+// A new shadow method is one stage and one registry line: this test-only method (half the
+// light everywhere) appears in composite's and error's method lists with no other edit.
+namespace {
+class HalfLightStage final : public Stage {
+public:
+  HalfLightStage() {
+    inputs_ = {Input::texture("wsPosition", "receivers", GL_RGBA32F)};
+    outputs_ = {{"visibility", "0.5 everywhere", GL_R32F, {"visibility"}, {}, kRoleShadowMethod}};
+  }
+  std::string name() const override { return "half_light"; }
+  std::string summary() const override { return "test-only method"; }
+  std::string thesisSection() const override { return ""; }
+  void run(Frame& frame) override {
+    frame.input(*this, "wsPosition");  // declared and wired
+    GlTexture& visibility = frame.output(*this, "visibility", frame.eyeWidth, frame.eyeHeight);
+    const float half = 0.5f;
+    glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &half);
+  }
+};
+
+std::unique_ptr<Pipeline> pipelineWithHalfLight() {
+  std::vector<StageEntry> registry = makeRegistry();
+  registry.push_back({std::make_unique<HalfLightStage>(), {}});
+  return std::make_unique<Pipeline>(std::move(registry));
+}
+}  // namespace
+
+TEST(StageGraph, AnExtraMethodAppearsInCompositeAndError) {
+  auto pipeline = pipelineWithHalfLight();
+  const auto methods = pipeline->methods();
+  EXPECT_NE(std::find(methods.begin(), methods.end(), "half_light"), methods.end());
+  for (const std::string key : {"composite.shadow", "error.method"}) {
+    const auto& options = pipeline->param(key).options;
+    EXPECT_NE(std::find(options.begin(), options.end(), "half_light"), options.end()) << key;
+  }
+  // Shading with it: the composite darkens lit receivers by the method's 0.5.
+  headlessContext();
+  const Scene scene = makeBuiltinScene("plate");
+  GpuScene gpuScene(scene);
+  Frame frame(scene, gpuScene, *pipeline);
+  frame.eyeWidth = 48, frame.eyeHeight = 32;
+  ASSERT_EQ(pipeline->set("composite.shadow=none"), "");
+  pipeline->run(frame, {"composite.color"});
+  const std::vector<float> unshadowed = frame.texture("composite.color").readFloats();
+  ASSERT_EQ(pipeline->set("composite.shadow=half_light"), "");
+  pipeline->run(frame, {"composite.color"});
+  EXPECT_TRUE(pipeline->lastTime("half_light").ran);
+  EXPECT_FALSE(pipeline->lastTime("trace").ran);
+  const std::vector<float> half = frame.texture("composite.color").readFloats();
+  const std::vector<float> albedo = frame.texture("gbuffer.albedo").readFloats();
+  const float ambient = pipeline->param("composite.ambient").asFloat();
+  int checked = 0;
+  for (size_t i = 0; i < half.size(); i += 4) {
+    if (albedo[i + 3] == 0 || albedo[i] <= 0) continue;  // background
+    // color = albedo (ambient + (1 - ambient) v lambert): with v = 1 and 0.5 the lit part halves.
+    const float full = unshadowed[i] / albedo[i] - ambient, halved = half[i] / albedo[i] - ambient;
+    EXPECT_NEAR(halved, 0.5f * full, 2e-2f) << "pixel " << i / 4;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+}
