@@ -9,6 +9,11 @@
 
 namespace {
 
+// Each file's lines are numbered from fileIndex * kLinesPerFile (and the #line source number
+// is the file index too): Mesa reports source string 0 whatever #line says, so the line
+// number alone must tell the file.
+constexpr long kLinesPerFile = 100000;
+
 std::vector<ShaderProgram*>& livePrograms() {
   static std::vector<ShaderProgram*> programs;
   return programs;
@@ -21,7 +26,7 @@ void expandIncludes(const std::filesystem::path& path, int fileIndex, std::set<s
   static const std::regex includeLine(R"re(^\s*#\s*include\s+"([^"]+)"\s*$)re");
   std::string line;
   int lineNumber = 0;
-  out << "#line 1 " << fileIndex << "\n";
+  out << "#line " << fileIndex * kLinesPerFile + 1 << " " << fileIndex << "\n";
   while (std::getline(in, line)) {
     ++lineNumber;
     std::smatch match;
@@ -34,15 +39,16 @@ void expandIncludes(const std::filesystem::path& path, int fileIndex, std::set<s
       files.push_back(included.string());
       expandIncludes(included, int(files.size()) - 1, seen, out, files);
     }
-    out << "#line " << lineNumber + 1 << " " << fileIndex << "\n";
+    out << "#line " << fileIndex * kLinesPerFile + lineNumber + 1 << " " << fileIndex << "\n";
   }
 }
 
 GLuint compile(GLenum type, const std::string& file, const std::string& defines,
                std::string& log) {
   std::string source;
+  std::vector<std::string> files;
   try {
-    source = loadShaderSource(file, defines);
+    source = loadShaderSource(file, defines, &files);
   } catch (const std::exception& error) {
     log += error.what();
     log += "\n";
@@ -59,7 +65,7 @@ GLuint compile(GLenum type, const std::string& file, const std::string& defines,
     glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
     std::string message(std::max(length, 1), '\0');
     glGetShaderInfoLog(shader, length, nullptr, message.data());
-    log += file + ": " + message.c_str() + "\n";
+    log += file + ":\n" + nameSourcesInLog(message.c_str(), files) + "\n";
     glDeleteShader(shader);
     return 0;
   }
@@ -73,13 +79,48 @@ std::filesystem::path shaderDirectory() {
   return std::filesystem::path(PENUMBRA_SOURCE_DIR) / "shaders";
 }
 
-std::string loadShaderSource(const std::string& file, const std::string& defines) {
+std::string loadShaderSource(const std::string& file, const std::string& defines,
+                             std::vector<std::string>* files) {
   std::ostringstream out;
   out << "#version 450 core\n" << defines << "\n";
   std::set<std::string> seen;
-  std::vector<std::string> files{file};
-  expandIncludes(shaderDirectory() / file, 0, seen, out, files);
+  std::vector<std::string> names{file};
+  expandIncludes(shaderDirectory() / file, 0, seen, out, names);
+  if (files) {
+    // Names relative to the shader directory, as a reader finds them in shaders/.
+    for (size_t i = 1; i < names.size(); ++i) {
+      const std::string relative =
+          std::filesystem::path(names[i]).lexically_relative(shaderDirectory()).string();
+      if (!relative.empty() && relative.rfind("..", 0) != 0) names[i] = relative;
+    }
+    *files = std::move(names);
+  }
   return out.str();
+}
+
+std::string nameSourcesInLog(const std::string& log, const std::vector<std::string>& files) {
+  // "0:200014(3): error" (Mesa) and "2(200014) : error" (NVIDIA): line 200014 is line 14 of
+  // files[2] (see kLinesPerFile).
+  static const std::regex mesa(R"re((^|\n)(\d+):(\d+)\((\d+)\))re");
+  static const std::regex nvidia(R"re((^|\n)(\d+)\((\d+)\))re");
+  auto rename = [&](const std::string& text, const std::regex& pattern, bool withColumn) {
+    std::string result;
+    size_t last = 0;
+    for (auto match = std::sregex_iterator(text.begin(), text.end(), pattern);
+         match != std::sregex_iterator(); ++match) {
+      const long encoded = std::stol((*match)[3].str());
+      const size_t index = size_t(encoded / kLinesPerFile);
+      const std::string place =
+          index < files.size()
+              ? files[index] + ":" + std::to_string(encoded % kLinesPerFile)
+              : (*match)[2].str() + ":" + (*match)[3].str();
+      result += text.substr(last, size_t(match->position()) - last) + (*match)[1].str() + place +
+                (withColumn ? ":" + (*match)[4].str() : "");
+      last = size_t(match->position() + match->length());
+    }
+    return result + text.substr(last);
+  };
+  return rename(rename(log, mesa, true), nvidia, false);
 }
 
 ShaderProgram::ShaderProgram(std::vector<Source> sources, std::string defines)

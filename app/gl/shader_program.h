@@ -11,8 +11,13 @@
 std::filesystem::path shaderDirectory();  // $PENUMBRA_SHADER_DIR, else <source>/shaders
 
 // Reads `file` (relative to shaderDirectory()) with every #include expanded once, with
-// #line directives so compiler messages name the right line. Throws std::runtime_error.
-std::string loadShaderSource(const std::string& file, const std::string& defines = "");
+// #line directives so compiler messages name the right line; `files` receives the source
+// string numbers' files (0: `file`). Throws std::runtime_error.
+std::string loadShaderSource(const std::string& file, const std::string& defines = "",
+                             std::vector<std::string>* files = nullptr);
+// A compiler log with source string numbers replaced by file names:
+// "0:200014(3): error ..." -> "shared/trace_ray.glsl:14:3: error ..." (file 2, line 14).
+std::string nameSourcesInLog(const std::string& log, const std::vector<std::string>& files);
 
 class ShaderProgram {
 public:
