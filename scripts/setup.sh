@@ -7,6 +7,7 @@ packages=(
   libopenimageio-dev openimageio-tools libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
   xvfb xauth libcli11-dev googletest libgtest-dev assimp-testmodels
   libembree-dev
+  graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
 )
 missing=()
 for p in "${packages[@]}"; do

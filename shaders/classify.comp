@@ -15,16 +15,16 @@
 #include "shared/classify.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = 0) uniform sampler2D wsPositionTexture;
-layout(binding = 1) uniform sampler2D wsNormalTexture;
-layout(binding = 2) uniform sampler2DArray nbufferLevels;
-layout(binding = 0, r32f) uniform writeonly image2D maskImage;
-layout(binding = 1, rgba32f) uniform writeonly image2D zRangeImage;
+layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
+layout(binding = CLASSIFY_MASK_IMAGE, r32f) uniform writeonly image2D maskImage;
+layout(binding = CLASSIFY_ZRANGE_IMAGE, rgba32f) uniform writeonly image2D zRangeImage;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;
 };
-layout(location = 1) uniform int uIterations;
-layout(location = 2) uniform bool uUmbraTest;
+layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
+layout(location = CLASSIFY_UMBRA_TEST_LOCATION) uniform bool uUmbraTest;
 
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
   uint listCount;  // = penumbra + umbra

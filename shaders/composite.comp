@@ -1,11 +1,12 @@
 // Stage `composite` (thesis Algorithm 1, last step): albedo x (ambient + visibility x Lambert).
 #include "shared/screen_pass.glsl"
-layout(binding = 0) uniform sampler2D albedoTexture;
-layout(binding = 1) uniform sampler2D wsNormalTexture;
-layout(binding = 2) uniform sampler2D wsPositionTexture;
-layout(binding = 3) uniform sampler2D visibilityTexture;
-layout(binding = 0, rgba32f) uniform writeonly image2D colorImage;
-layout(location = 1) uniform float uAmbient;  // light that reaches shadowed surfaces
+#include "shared/composite_layout.h"
+layout(binding = COMPOSITE_ALBEDO_UNIT) uniform sampler2D albedoTexture;
+layout(binding = COMPOSITE_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = COMPOSITE_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = COMPOSITE_VISIBILITY_UNIT) uniform sampler2D visibilityTexture;
+layout(binding = COMPOSITE_COLOR_IMAGE, rgba32f) uniform writeonly image2D colorImage;
+layout(location = COMPOSITE_AMBIENT_LOCATION) uniform float uAmbient;  // light that reaches shadowed surfaces
 
 void main() {
   ivec2 pixel = screenPixel();

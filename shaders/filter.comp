@@ -5,14 +5,15 @@
 // scaled by uDepthScale. Optionally normal-sensitive ("a robust implementation would also
 // include normal sensitivity", §3): times max(n_c . n_s, 0)^uNormalPower.
 #include "shared/screen_pass.glsl"
-layout(binding = 0) uniform sampler2D sourceTexture;
-layout(binding = 1) uniform sampler2D wsPositionTexture;
-layout(binding = 2) uniform sampler2D wsNormalTexture;
-layout(binding = 0, r32f) uniform writeonly image2D targetImage;
-layout(location = 1) uniform ivec2 uDirection;
-layout(location = 2) uniform int uRadius;
-layout(location = 3) uniform float uDepthScale;
-layout(location = 4) uniform float uNormalPower;  // 0: normals ignored
+#include "shared/filter_layout.h"
+layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
+layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = FILTER_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = FILTER_TARGET_IMAGE, r32f) uniform writeonly image2D targetImage;
+layout(location = FILTER_DIRECTION_LOCATION) uniform ivec2 uDirection;
+layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
+layout(location = FILTER_DEPTH_SCALE_LOCATION) uniform float uDepthScale;
+layout(location = FILTER_NORMAL_POWER_LOCATION) uniform float uNormalPower;  // 0: normals ignored
 
 void main() {
   ivec2 pixel = screenPixel();

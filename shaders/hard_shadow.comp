@@ -3,11 +3,12 @@
 // tends to the center as the light shrinks (Eq 3.1), so this is the point-light limit.
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
-layout(binding = 0) uniform sampler2D wsPositionTexture;
-layout(binding = 1) uniform sampler2D nearLayer;
-layout(binding = 2) uniform sampler2D wsNormalTexture;
-layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
-layout(location = 1) uniform float uOffset;  // hard_shadow.offset: extra constant bias (world)
+#include "shared/hard_shadow_layout.h"
+layout(binding = HARD_SHADOW_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = HARD_SHADOW_NEAR_UNIT) uniform sampler2D nearLayer;
+layout(binding = HARD_SHADOW_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = HARD_SHADOW_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
+layout(location = HARD_SHADOW_OFFSET_LOCATION) uniform float uOffset;  // hard_shadow.offset: extra constant bias (world)
 
 void main() {
   ivec2 pixel = screenPixel();

@@ -3,8 +3,9 @@
 // the trace does for its first ray, and shows the first light sample and the raw bits.
 #include "shared/screen_pass.glsl"
 #include "shared/hash.glsl"
-layout(binding = 0, rg32f) uniform writeonly image2D samplesImage;
-layout(binding = 1, r32f) uniform writeonly image2D bitsImage;
+#include "shared/hash_layout.h"
+layout(binding = HASH_SAMPLES_IMAGE, rg32f) uniform writeonly image2D samplesImage;
+layout(binding = HASH_BITS_IMAGE, r32f) uniform writeonly image2D bitsImage;
 
 void main() {
   ivec2 pixel = screenPixel();

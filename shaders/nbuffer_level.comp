@@ -3,9 +3,10 @@
 // give its exact min/max. Windows are centered and shifted inward at the borders.
 #include "shared/nbuffer.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rgba32f) uniform readonly image2D finer;   // level n-1
-layout(binding = 1, rgba32f) uniform writeonly image2D coarser; // level n
-layout(location = 0) uniform int uLevel;                        // n >= 1
+#include "shared/nbuffer_layout.h"
+layout(binding = NBUFFER_FINER_IMAGE, rgba32f) uniform readonly image2D finer;    // level n-1
+layout(binding = NBUFFER_COARSER_IMAGE, rgba32f) uniform writeonly image2D coarser; // level n
+layout(location = NBUFFER_LEVEL_LOCATION) uniform int uLevel;                       // n >= 1
 
 void main() {
   ivec2 size = imageSize(coarser);

@@ -4,24 +4,24 @@
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = 1) uniform sampler2D wsNormalTexture;
-layout(binding = 5) uniform sampler2D classMask;
-layout(binding = 6) uniform sampler2D zRangeTexture;
-layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
-layout(binding = 1, rgba32f) uniform writeonly image2D costImage;
+layout(binding = TRACE_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = TRACE_MASK_UNIT) uniform sampler2D classMask;
+layout(binding = TRACE_ZRANGE_UNIT) uniform sampler2D zRangeTexture;
+layout(binding = TRACE_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
+layout(binding = TRACE_COST_IMAGE, rgba32f) uniform writeonly image2D costImage;
 layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
   uint listCount;
   uint listPadding[3];
   uint tracedPixels[];
 };
-// 0: every pixel (rows from uRowOffset); 1: the pixels classify listed (penumbra, umbra;
-// uRowOffset = the band's first group), everything else was cleared to visibility 1
-// beforehand; 2: the recorded pixel alone.
-layout(location = 1) uniform int uPixels;
+// TRACE_PIXELS_ALL: every pixel (rows from uRowOffset); _LISTED: the pixels classify listed
+// (penumbra, umbra; uRowOffset = the band's first group), everything else was cleared to
+// visibility 1 beforehand; _RECORDED: the recorded pixel alone.
+layout(location = TRACE_PIXELS_LOCATION) uniform int uPixels;
 
 ivec2 tracedPixel() {
-  if (uPixels == 0) return screenPixel();
-  if (uPixels == 2) return gl_LocalInvocationIndex == 0u ? trace.record.xy : ivec2(-1);
+  if (uPixels == TRACE_PIXELS_ALL) return screenPixel();
+  if (uPixels == TRACE_PIXELS_RECORDED) return gl_LocalInvocationIndex == 0u ? trace.record.xy : ivec2(-1);
   uint index = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
   if (index >= listCount) return ivec2(-1);
   uint xy = tracedPixels[index];
@@ -31,7 +31,7 @@ ivec2 tracedPixel() {
 void main() {
   ivec2 pixel = tracedPixel();
   if (pixel.x < 0) return;
-  gRecording = uPixels != 1 && all(equal(pixel, trace.record.xy));
+  gRecording = uPixels != TRACE_PIXELS_LISTED && all(equal(pixel, trace.record.xy));
   vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
   float visibility = 1.0;
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 namespace {
 
@@ -359,21 +360,29 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
 }
 
 std::string Pipeline::dot() const {
-  std::string text = "digraph penumbra {\n  rankdir=LR;\n  node [shape=box, fontname=\"sans\"];\n";
+  std::string text = "digraph penumbra {\n  rankdir=LR;\n  node [shape=box, fontname=\"sans\"];\n"
+                     "  edge [fontname=\"sans\", fontsize=10];\n";
   for (const auto& stage : stages_) {
-    std::string shape;
+    std::string style;
     for (const Output& output : stage->outputs())
-      if (output.roles & kRoleShadowMethod) shape = ", style=bold";
-    text += "  \"" + stage->name() + "\" [label=\"" + stage->name() + "\"" + shape + "];\n";
+      if (output.roles != kRoleNone) style = ", style=bold";  // a method or ground truth
+    text += "  \"" + stage->name() + "\" [label=\"" + stage->name() + "\"" + style + "];\n";
   }
+  // One edge per (producer, consumer, kind), labelled with every slot it feeds; a choice
+  // slot's candidates are dashed.
+  std::map<std::tuple<std::string, std::string, bool>, std::vector<std::string>> edges;
   for (const Wire& wire : wires_) {
     const bool choice = stage(wire.consumer).input(wire.slot).isChoice();
     for (const std::string& source : wire.sources) {
-      const std::string producer = source.substr(0, source.find('.'));
-      text += "  \"" + producer + "\" -> \"" + wire.consumer + "\" [label=\"" +
-              source.substr(source.find('.') + 1) + (source.substr(source.find('.') + 1) == wire.slot ? "" : " : " + wire.slot) +
-              "\"" + (choice ? ", style=dashed" : "") + "];\n";
+      const std::string output = source.substr(source.find('.') + 1);
+      edges[{source.substr(0, source.find('.')), wire.consumer, choice}].push_back(
+          output == wire.slot ? output : output + " : " + wire.slot);
     }
+  }
+  for (const auto& [key, labels] : edges) {
+    const auto& [producer, consumer, choice] = key;
+    text += "  \"" + producer + "\" -> \"" + consumer + "\" [label=\"" + joined(labels) + "\"" +
+            (choice ? ", style=dashed" : "") + "];\n";
   }
   return text + "}\n";
 }

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <initializer_list>
 
 namespace gpu {
 using vec4 = glm::vec4;
@@ -34,6 +35,24 @@ static_assert(offsetof(gpu::LightUniforms, mapSize) == 208);
 static_assert(offsetof(gpu::LightUniforms, bias) == 224);
 static_assert(offsetof(gpu::LightUniforms, sampling) == 240);
 static_assert(sizeof(gpu::LightUniforms) == 256);
+
+namespace gpu {
+// Binding numbers a shader may use: GL 4.5's guaranteed minimums (compute and fragment
+// stages), so every layout header fits any conforming driver.
+constexpr int kTextureUnits = 16, kImageUnits = 8, kStorageBindings = 8, kUniformBindings = 14,
+              kUniformLocations = 1024;
+// The binding numbers of one kind in one shader: distinct and in [0, limit).
+constexpr bool distinctBelow(std::initializer_list<int> values, int limit) {
+  for (const int* a = values.begin(); a != values.end(); ++a) {
+    if (*a < 0 || *a >= limit) return false;
+    for (const int* b = values.begin(); b != a; ++b)
+      if (*a == *b) return false;
+  }
+  return true;
+}
+}  // namespace gpu
+static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING}, gpu::kUniformBindings));
+static_assert(!gpu::distinctBelow({1, 2, 1}, 8) && !gpu::distinctBelow({8}, 8));
 
 // Uniform binding points shared with GLSL.
 namespace binding {

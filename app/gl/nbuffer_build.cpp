@@ -1,5 +1,11 @@
 #include "gl/nbuffer_build.h"
 
+#include "gl/gpu_layout.h"
+#include "shared/nbuffer_layout.h"
+
+static_assert(gpu::distinctBelow({NBUFFER_NEAR_UNIT, NBUFFER_FAR_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({NBUFFER_FINER_IMAGE, NBUFFER_COARSER_IMAGE}, gpu::kImageUnits));
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -28,18 +34,20 @@ void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer
 
   // Level 0: (near, near, far, 0).
   level0_.use();
-  glBindTextureUnit(0, nearLayer.id());
-  glBindTextureUnit(1, farLayer.id());
-  glBindImageTexture(0, levels.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindTextureUnit(NBUFFER_NEAR_UNIT, nearLayer.id());
+  glBindTextureUnit(NBUFFER_FAR_UNIT, farLayer.id());
+  glBindImageTexture(NBUFFER_COARSER_IMAGE, levels.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glDispatchCompute(groupsX, groupsY, 1);
 
   // Level n from level n-1: both bound as single-layer images of the same texture.
   level_.use();
   for (int level = 1; level < count; ++level) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(0, levels.id(), 0, GL_FALSE, level - 1, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, levels.id(), 0, GL_FALSE, level, GL_WRITE_ONLY, GL_RGBA32F);
-    glUniform1i(0, level);
+    glBindImageTexture(NBUFFER_FINER_IMAGE, levels.id(), 0, GL_FALSE, level - 1, GL_READ_ONLY,
+                       GL_RGBA32F);
+    glBindImageTexture(NBUFFER_COARSER_IMAGE, levels.id(), 0, GL_FALSE, level, GL_WRITE_ONLY,
+                       GL_RGBA32F);
+    glUniform1i(NBUFFER_LEVEL_LOCATION, level);
     glDispatchCompute(groupsX, groupsY, 1);
   }
   glMemoryBarrier(GL_ALL_BARRIER_BITS);

@@ -1,5 +1,7 @@
 #include "gl/shader_program.h"
 
+#include "shared/screen_pass_layout.h"
+
 #include <algorithm>
 #include <fstream>
 #include <regex>
@@ -184,7 +186,7 @@ void dispatchRows(int width, int height, int rowsPerBand) {
   rowsPerBand = std::max(8, rowsPerBand / 8 * 8);
   for (int row = 0; row < height; row += rowsPerBand) {
     const int rows = std::min(rowsPerBand, height - row);
-    glUniform1i(0, row);
+    glUniform1i(ROW_OFFSET_LOCATION, row);
     glDispatchCompute((width + 7) / 8, (rows + 7) / 8, 1);
   }
   glMemoryBarrier(GL_ALL_BARRIER_BITS);

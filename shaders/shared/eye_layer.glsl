@@ -3,7 +3,7 @@
 // the visible surface at its pixel by more than the tolerance. A point on the visible
 // surface itself (a sheet, the face the eye sees) stays solid. Outside the eye's view
 // nothing is known, and the point stays solid, as with two layers.
-layout(binding = 0) uniform sampler2D wsPositionTexture;
+layout(binding = TRACE_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 
 bool hiddenFromEye(vec3 wsPoint) {
   vec4 clip = frame.clipFromWorld * vec4(wsPoint, 1.0);

@@ -2,6 +2,26 @@
 // std140 uniform block TraceBlock at binding 1; std430 storage buffers: per-pixel step
 // records at binding 0, totals at binding 1. Only 16-byte members (see frame_block.h).
 
+// Bindings of trace.comp and trace_forward.frag (and the test shader tests/ray_query.comp):
+#define TRACE_PARAMS_BINDING 1    // uniform: TraceParams
+#define TRACE_RECORDS_BINDING 0   // storage: uvec4 header (x = count), TraceStep[]
+#define TRACE_TOTALS_BINDING 1    // storage: uint[TOTAL_COUNT]
+// (storage CLASSIFY_LIST_BINDING: the pixel list of classify_layout.h)
+#define TRACE_WS_POSITION_UNIT 0  // eye_layer.glsl
+#define TRACE_WS_NORMAL_UNIT 1
+#define TRACE_NEAR_UNIT 2         // trace_ray.glsl
+#define TRACE_FAR_UNIT 3
+#define TRACE_LEVELS_UNIT 4
+#define TRACE_MASK_UNIT 5         // trace.comp
+#define TRACE_ZRANGE_UNIT 6
+#define TRACE_VISIBILITY_IMAGE 0
+#define TRACE_COST_IMAGE 1
+#define TRACE_PIXELS_LOCATION 1   // which pixels (TRACE_PIXELS_*); ROW_OFFSET_LOCATION = 0
+                                  // holds the first row, or the band's first group
+#define TRACE_PIXELS_ALL 0        // every pixel, rows from the row offset
+#define TRACE_PIXELS_LISTED 1     // the pixels classify listed, groups from the row offset
+#define TRACE_PIXELS_RECORDED 2   // the recorded pixel alone
+
 #define SEARCH_LINEAR 0
 #define SEARCH_LINEAR_BINARY 1
 #define SEARCH_HIERARCHICAL 2

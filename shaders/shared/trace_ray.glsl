@@ -8,13 +8,13 @@
 #include "nbuffer.glsl"
 #include "trace_layout.h"
 
-layout(std140, binding = 1) uniform TraceBlock { TraceParams trace; };
-layout(std430, binding = 0) buffer TraceRecords { uvec4 recordHeader; TraceStep records[]; };
-layout(std430, binding = 1) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
+layout(std140, binding = TRACE_PARAMS_BINDING) uniform TraceBlock { TraceParams trace; };
+layout(std430, binding = TRACE_RECORDS_BINDING) buffer TraceRecords { uvec4 recordHeader; TraceStep records[]; };
+layout(std430, binding = TRACE_TOTALS_BINDING) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
 
-layout(binding = 2) uniform sampler2D nearLayer;
-layout(binding = 3) uniform sampler2D farLayer;
-layout(binding = 4) uniform sampler2DArray nbufferLevels;
+layout(binding = TRACE_NEAR_UNIT) uniform sampler2D nearLayer;
+layout(binding = TRACE_FAR_UNIT) uniform sampler2D farLayer;
+layout(binding = TRACE_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
 
 struct Ray {
   vec2 a, d;            // texel space start and direction (B - A)

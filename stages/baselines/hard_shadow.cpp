@@ -2,6 +2,13 @@
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/shader_program.h"
+#include "shared/hard_shadow_layout.h"
+#include "shared/screen_pass_layout.h"
+
+static_assert(gpu::distinctBelow({HARD_SHADOW_WS_POSITION_UNIT, HARD_SHADOW_NEAR_UNIT,
+                                  HARD_SHADOW_WS_NORMAL_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, HARD_SHADOW_OFFSET_LOCATION},
+                                 gpu::kUniformLocations));
 
 namespace {
 
@@ -33,12 +40,13 @@ public:
   void run(Frame& frame) override {
     program_.use();
     bindLightInput(frame, *this);
-    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(1, frame.input(*this, "near").id());
+    glBindTextureUnit(HARD_SHADOW_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(HARD_SHADOW_NEAR_UNIT, frame.input(*this, "near").id());
     GlTexture& visibility = frame.output(*this, "visibility", frame.eyeWidth, frame.eyeHeight);
-    glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glBindTextureUnit(2, frame.input(*this, "wsNormal").id());
-    glUniform1f(1, param("offset").asFloat());
+    glBindImageTexture(HARD_SHADOW_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0,
+                       GL_WRITE_ONLY, GL_R32F);
+    glBindTextureUnit(HARD_SHADOW_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    glUniform1f(HARD_SHADOW_OFFSET_LOCATION, param("offset").asFloat());
     dispatchRows(frame.eyeWidth, frame.eyeHeight);
   }
 

@@ -11,11 +11,19 @@
 namespace gpu {
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
+#include "shared/screen_pass_layout.h"
 }  // namespace gpu
 
 static_assert(offsetof(gpu::ClassifyCounts, pixels) == 0);
 static_assert(sizeof(gpu::ClassifyCounts) == 32);  // std430: uint[8], stride 4
 static_assert(CLASS_OUTSIDE + 1 == CLASSIFY_CLASS_COUNT);
+static_assert(gpu::distinctBelow({CLASSIFY_WS_POSITION_UNIT, CLASSIFY_WS_NORMAL_UNIT,
+                                  CLASSIFY_LEVELS_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({CLASSIFY_MASK_IMAGE, CLASSIFY_ZRANGE_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({CLASSIFY_COUNTS_BINDING, CLASSIFY_LIST_BINDING},
+                                 gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, CLASSIFY_ITERATIONS_LOCATION,
+                                  CLASSIFY_UMBRA_TEST_LOCATION}, gpu::kUniformLocations));
 
 namespace {
 
@@ -80,15 +88,16 @@ public:
 
     program_.use();
     bindLightInput(frame, *this);
-    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(2, frame.input(*this, "levels").id());
-    glBindImageTexture(0, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glBindImageTexture(1, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glUniform1i(1, param("iterations").asInt());
+    glBindTextureUnit(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(CLASSIFY_LEVELS_UNIT, frame.input(*this, "levels").id());
+    glBindImageTexture(CLASSIFY_MASK_IMAGE, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(CLASSIFY_ZRANGE_IMAGE, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
+    glUniform1i(CLASSIFY_ITERATIONS_LOCATION, param("iterations").asInt());
     // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
     // (§3.4) they can, so it is off there.
-    glUniform1i(2, param("umbra").asBool() && frame.light.layers < 3);
+    glUniform1i(CLASSIFY_UMBRA_TEST_LOCATION, param("umbra").asBool() && frame.light.layers < 3);
     dispatchRows(w, h);
 
     gpu::ClassifyCounts counts{};

@@ -1,7 +1,16 @@
 // Stage `filter` (thesis §3, Fig 3.2): a separable depth-sensitive Gaussian over the
 // trace's unfiltered visibility, horizontal then vertical.
 #include "core/frame.h"
+#include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
+#include "shared/filter_layout.h"
+#include "shared/screen_pass_layout.h"
+
+static_assert(gpu::distinctBelow({FILTER_SOURCE_UNIT, FILTER_WS_POSITION_UNIT, FILTER_WS_NORMAL_UNIT},
+                                 gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, FILTER_DIRECTION_LOCATION,
+                                  FILTER_RADIUS_LOCATION, FILTER_DEPTH_SCALE_LOCATION,
+                                  FILTER_NORMAL_POWER_LOCATION}, gpu::kUniformLocations));
 
 namespace {
 
@@ -43,11 +52,11 @@ public:
     const float normalPower =
         param("normal_sensitive").asBool() ? param("normal_power").asFloat() : 0.0f;
     program_.use();
-    glUniform1i(2, radius);
-    glUniform1f(3, param("depth_scale").asFloat());
-    glUniform1f(4, normalPower);
-    glBindTextureUnit(1, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(2, frame.input(*this, "wsNormal").id());
+    glUniform1i(FILTER_RADIUS_LOCATION, radius);
+    glUniform1f(FILTER_DEPTH_SCALE_LOCATION, param("depth_scale").asFloat());
+    glUniform1f(FILTER_NORMAL_POWER_LOCATION, normalPower);
+    glBindTextureUnit(FILTER_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(FILTER_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
     GlTexture& horizontal = frame.output(*this, "horizontal", w, h);
     pass(frame.input(*this, "visibility"), horizontal, {1, 0}, w, h);
     pass(horizontal, frame.output(*this, "visibility", w, h), {0, 1}, w, h);
@@ -55,9 +64,9 @@ public:
 
 private:
   void pass(const GlTexture& source, GlTexture& target, glm::ivec2 direction, int w, int h) {
-    glBindTextureUnit(0, source.id());
-    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glUniform2i(1, direction.x, direction.y);
+    glBindTextureUnit(FILTER_SOURCE_UNIT, source.id());
+    glBindImageTexture(FILTER_TARGET_IMAGE, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform2i(FILTER_DIRECTION_LOCATION, direction.x, direction.y);
     dispatchRows(w, h);
   }
   ShaderProgram program_{{{GL_COMPUTE_SHADER, "filter.comp"}}};

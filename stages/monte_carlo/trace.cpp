@@ -9,8 +9,14 @@
 
 namespace gpu {
 #include "shared/classify_layout.h"
+#include "shared/screen_pass_layout.h"
 }  // namespace gpu
 #include "gl/shader_program.h"
+
+// The option index of trace.search and trace.sampling is the GLSL enum (trace_layout.h), and
+// light.layers' index + 1 the layer count: the option lists below are in this order.
+static_assert(SEARCH_LINEAR == 0 && SEARCH_LINEAR_BINARY == 1 && SEARCH_HIERARCHICAL == 2);
+static_assert(SAMPLING_JITTERED == 0 && SAMPLING_RANDOM == 1);
 
 namespace {
 
@@ -124,13 +130,13 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceTotals, totalsBuffer_.id());
 
     // 3. Inputs.
-    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(2, frame.input(*this, "near").id());
-    glBindTextureUnit(3, frame.input(*this, "far").id());
-    glBindTextureUnit(4, levels.id());
-    glBindTextureUnit(5, frame.input(*this, "mask").id());
-    glBindTextureUnit(6, frame.input(*this, "zRange").id());
+    glBindTextureUnit(TRACE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(TRACE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(TRACE_NEAR_UNIT, frame.input(*this, "near").id());
+    glBindTextureUnit(TRACE_FAR_UNIT, frame.input(*this, "far").id());
+    glBindTextureUnit(TRACE_LEVELS_UNIT, levels.id());
+    glBindTextureUnit(TRACE_MASK_UNIT, frame.input(*this, "mask").id());
+    glBindTextureUnit(TRACE_ZRANGE_UNIT, frame.input(*this, "zRange").id());
 
     // 4. The pass.
     if (param("deferred").asBool()) {
@@ -160,10 +166,11 @@ private:
   // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
   void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
     deferred_.use();
-    glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glBindImageTexture(1, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(TRACE_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_R32F);
+    glBindImageTexture(TRACE_COST_IMAGE, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     if (!param("use_classification").asBool()) {
-      glUniform1i(1, 0);
+      glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_ALL);
       dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
       return;
     }
@@ -175,15 +182,15 @@ private:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
     std::uint32_t listed = 0;
     glGetNamedBufferSubData(tracedPixels.id(), 0, sizeof listed, &listed);
-    glUniform1i(1, 1);  // uPixels
+    glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_LISTED);
     const int groups = int((listed + 63) / 64), groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
     for (int first = 0; first < groups; first += groupsPerBand) {
-      glUniform1i(0, first);
+      glUniform1i(ROW_OFFSET_LOCATION, first);
       glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
     }
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
     if (recording) {  // the recorded pixel once more, alone, with its steps (any class)
-      glUniform1i(1, 2);
+      glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
       glDispatchCompute(1, 1, 1);
       glMemoryBarrier(GL_ALL_BARRIER_BITS);
     }

@@ -3,6 +3,14 @@
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/shader_program.h"
+#include "shared/composite_layout.h"
+#include "shared/screen_pass_layout.h"
+
+static_assert(gpu::distinctBelow({COMPOSITE_ALBEDO_UNIT, COMPOSITE_WS_NORMAL_UNIT,
+                                  COMPOSITE_WS_POSITION_UNIT, COMPOSITE_VISIBILITY_UNIT},
+                                 gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, COMPOSITE_AMBIENT_LOCATION},
+                                 gpu::kUniformLocations));
 
 namespace {
 
@@ -38,13 +46,13 @@ public:
                                       : unshadowed(frame);
     program_.use();
     bindLightInput(frame, *this);
-    glUniform1f(1, param("ambient").asFloat());
-    glBindTextureUnit(0, frame.input(*this, "albedo").id());
-    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(2, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(3, visibility.id());
+    glUniform1f(COMPOSITE_AMBIENT_LOCATION, param("ambient").asFloat());
+    glBindTextureUnit(COMPOSITE_ALBEDO_UNIT, frame.input(*this, "albedo").id());
+    glBindTextureUnit(COMPOSITE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(COMPOSITE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(COMPOSITE_VISIBILITY_UNIT, visibility.id());
     GlTexture& color = frame.output(*this, "color", frame.eyeWidth, frame.eyeHeight);
-    glBindImageTexture(0, color.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(COMPOSITE_COLOR_IMAGE, color.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatchRows(frame.eyeWidth, frame.eyeHeight);
   }
 

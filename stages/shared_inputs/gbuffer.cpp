@@ -1,6 +1,11 @@
 // Stage `gbuffer` (thesis Algorithm 1, step 1; §3.4): the eye pass of deferred shading.
 #include "core/frame.h"
+#include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
+#include "shared/gbuffer_layout.h"
+
+static_assert(GBUFFER_ALBEDO_ATTACHMENT == 0 && GBUFFER_NORMAL_ATTACHMENT == 1 &&
+              GBUFFER_POSITION_ATTACHMENT == 2);  // the order of `colour` below
 
 namespace {
 
@@ -46,7 +51,7 @@ public:
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
     program_.use();
-    frame.gpuScene.draw(/*includeReceivers=*/true, /*colorLocation=*/1);
+    frame.gpuScene.draw(/*includeReceivers=*/true, GBUFFER_BASE_COLOR_LOCATION);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 

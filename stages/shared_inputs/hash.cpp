@@ -2,6 +2,9 @@
 // Appendix A), with the hash the `light` stage selects (light.hash) for the trace.
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
+#include "shared/hash_layout.h"
+
+static_assert(gpu::distinctBelow({HASH_SAMPLES_IMAGE, HASH_BITS_IMAGE}, gpu::kImageUnits));
 #include "gl/shader_program.h"
 
 namespace {
@@ -35,8 +38,8 @@ public:
     bindLightInput(frame, *this);
     GlTexture& samples = frame.output(*this, "samples", frame.eyeWidth, frame.eyeHeight);
     GlTexture& bits = frame.output(*this, "bits", frame.eyeWidth, frame.eyeHeight);
-    glBindImageTexture(0, samples.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-    glBindImageTexture(1, bits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(HASH_SAMPLES_IMAGE, samples.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(HASH_BITS_IMAGE, bits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchRows(frame.eyeWidth, frame.eyeHeight);
   }
 

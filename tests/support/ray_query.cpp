@@ -46,9 +46,9 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kTraceTotals, totals.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, queryBuffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, resultBuffer.id());
-  glBindTextureUnit(2, near_.id());
-  glBindTextureUnit(3, far_.id());
-  glBindTextureUnit(4, levels_.id());
+  glBindTextureUnit(TRACE_NEAR_UNIT, near_.id());
+  glBindTextureUnit(TRACE_FAR_UNIT, far_.id());
+  glBindTextureUnit(TRACE_LEVELS_UNIT, levels_.id());
   program.use();
   glUniform1i(0, int(queries.size()));
   glDispatchCompute(GLuint((queries.size() + 63) / 64), 1, 1);

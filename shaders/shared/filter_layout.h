@@ -1,0 +1,9 @@
+// Units and locations of filter.comp (C++: stages/monte_carlo/filter.cpp).
+#define FILTER_SOURCE_UNIT 0
+#define FILTER_WS_POSITION_UNIT 1
+#define FILTER_WS_NORMAL_UNIT 2
+#define FILTER_TARGET_IMAGE 0
+#define FILTER_DIRECTION_LOCATION 1  // after ROW_OFFSET_LOCATION
+#define FILTER_RADIUS_LOCATION 2
+#define FILTER_DEPTH_SCALE_LOCATION 3
+#define FILTER_NORMAL_POWER_LOCATION 4
