@@ -115,7 +115,6 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
                        light.width != before.width || light.height != before.height;
   if (changed) {
     if (validateScene(state.scene).empty()) {
-      state.dirty = true;
       char text[160];
       std::snprintf(text, sizeof text, "light at (%.2f, %.2f, %.2f), %.2f x %.2f", light.center.x,
                     light.center.y, light.center.z, light.width, light.height);

@@ -6,10 +6,10 @@
 
 #include "scene/scene_builtin.h"
 #include "gl/shader_program.h"
+#include "window/ui_graph.h"
 
 namespace {
 
-constexpr size_t kTimingHistory = 15;  // pipeline runs in the median
 constexpr size_t kFrameHistory = 30;   // UI frames in the fps readout
 constexpr double kPreviewMs = 80;      // target time of a run while the camera moves
 
@@ -18,6 +18,25 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t middle = values.size() / 2;
   return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+// FNV-1a over the bytes of trivially copyable values (floats of the camera and light).
+void mix(std::uint64_t& hash, const void* data, size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+}
+
+std::uint64_t sceneFingerprint(const Scene& scene, int loads) {
+  std::uint64_t hash = 1469598103934665603ull;
+  mix(hash, &loads, sizeof loads);
+  const Camera& c = scene.camera;
+  for (const glm::vec3* v : {&c.position, &c.target, &c.up}) mix(hash, v, sizeof *v);
+  mix(hash, &c.fovYDegrees, sizeof c.fovYDegrees);
+  const AreaLight& l = scene.light;
+  for (const glm::vec3* v : {&l.center, &l.forward, &l.up}) mix(hash, v, sizeof *v);
+  mix(hash, &l.width, sizeof l.width);
+  mix(hash, &l.height, sizeof l.height);
+  return hash;
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -60,7 +79,7 @@ void UiState::adoptScene(Scene loaded, const std::string& source) {
   frame->eyeHeight = eye.height;
   pick.reset();
   for (ViewPanel& view : views) view.fitPending = true;
-  dirty = true;
+  ++sceneLoads;
   status = "scene '" + scene.name + "' (" + std::to_string(scene.triangleCount()) + " triangles)";
 }
 
@@ -127,7 +146,6 @@ std::string UiState::setParameter(const std::string& stageDotKey, const std::str
   } catch (const std::out_of_range& error) {
     return error.what();
   }
-  dirty = true;
   return "";
 }
 
@@ -145,7 +163,7 @@ void UiState::movePick(glm::ivec2 delta) {
 bool UiState::reloadShaders() {
   std::string log;
   const bool ok = ShaderProgram::reloadAll(log);
-  dirty = true;
+  ++shaderReloads;
   if (ok) {
     shaderLog.clear();
     showShaderLog = false;
@@ -158,7 +176,42 @@ bool UiState::reloadShaders() {
   return ok;
 }
 
-// 5. Runs only when something changed; a stage that throws is reported, not fatal.
+// 5. Demand-driven runs: what is shown, and only when what it depends on changed.
+std::vector<std::string> UiState::requestedOutputs() const {
+  std::vector<std::string> requested;
+  auto add = [&](const std::string& key) {
+    if (!key.empty() && outputOf(key) && std::find(requested.begin(), requested.end(), key) == requested.end())
+      requested.push_back(key);
+  };
+  for (int v = 0; v < (twoViews ? 2 : 1); ++v) {
+    add(views[v].output);
+    add(views[v].minus);
+  }
+  if (traceShown)
+    for (const std::string& key : traceOutputs(pipeline)) add(key);
+  std::sort(requested.begin(), requested.end());
+  return requested;
+}
+
+glm::ivec2 UiState::eyeFor(glm::ivec2 fitSize) const {
+  glm::ivec2 size = eye.fitView ? fitSize : glm::ivec2(eye.width, eye.height);
+  return previewing ? glm::max(size / previewDivisor, glm::ivec2(32)) : size;
+}
+
+RunKey UiState::currentKey() const {
+  RunKey key;
+  key.revision = pipeline.revision();
+  key.scene = sceneFingerprint(scene, sceneLoads);
+  key.eye = eyeFor(requestedEye);
+  if (frame) key.frameKey = frame->frameKey;
+  key.shaders = shaderReloads;
+  key.requested = requestedOutputs();
+  return key;
+}
+
+bool UiState::needsRun() const { return runEveryFrame || !lastRun || *lastRun != currentKey(); }
+
+// A stage that throws is reported, not fatal.
 bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
   if (!frame) return false;
   if (eye.fitView && (viewRegion.x <= 0 || viewRegion.y <= 0)) return false;  // no layout yet
@@ -168,56 +221,60 @@ bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
     requestedEye = size;
     return false;
   }
-  if (previewing) size = glm::max(size / previewDivisor, glm::ivec2(32));
-  if (size.x != frame->eyeWidth || size.y != frame->eyeHeight) {
-    frame->eyeWidth = size.x;
-    frame->eyeHeight = size.y;
-    recentTimes.clear();  // medians compare runs of one size
-    dirty = true;
-  }
-  if (!dirty && !runEveryFrame) return false;
-  dirty = false;
+  size = eyeFor(size);
+  frame->eyeWidth = size.x;
+  frame->eyeHeight = size.y;
+  const RunKey key = currentKey();
+  if (!runEveryFrame && lastRun && *lastRun == key) return false;
+  lastRun = key;  // a failing run is not retried until something changes
   try {
-    pipeline.run(*frame);
+    pipeline.run(*frame, key.requested);
   } catch (const std::exception& error) {
     status = std::string("pipeline: ") + error.what();
     return false;
   }
   ++pipelineRuns;
-  if (!previewing) {
-    fullResolutionMs = 0;
-    for (const StageTime& time : pipeline.lastTimes()) fullResolutionMs += time.milliseconds;
-  }
-  recentTimes.push_back(pipeline.lastTimes());
-  if (recentTimes.size() > kTimingHistory) recentTimes.pop_front();
+  if (!previewing) fullResolutionMs = lastPipelineMs();
   return true;
 }
 
-// A preview only where the full run is slow: 1/d resolution costs about 1/d^2.
+std::string UiState::runAll() {
+  if (!frame) return "no frame yet";
+  try {
+    pipeline.run(*frame);
+  } catch (const std::exception& error) {
+    return std::string("pipeline: ") + error.what();
+  }
+  ++pipelineRuns;
+  return "";
+}
+
+// A preview only where the full run is slow: 1/d resolution costs about 1/d^2. Back at full
+// resolution, the eye size differs from the last run's, so it runs again.
 void UiState::setCameraMoving(bool moving) {
   if (moving && !previewing)
     previewDivisor = std::clamp(int(std::ceil(std::sqrt(fullResolutionMs / kPreviewMs))), 1, 4);
-  if (!moving && previewing && previewDivisor > 1) dirty = true;  // full resolution again
   previewing = moving;
 }
 
-// 6. Medians over recent runs (DESIGN.md §7: median of N frames).
-double UiState::medianStageMs(const std::string& stage) const {
-  std::vector<double> values;
-  for (const auto& run : recentTimes)
-    for (const StageTime& time : run)
-      if (time.stage == stage) values.push_back(time.milliseconds);
-  return median(values);
+// 6. Timings of the last run (DESIGN.md §7: medians over runs with identical settings).
+double UiState::lastPipelineMs() const {
+  double total = 0;
+  for (const StageTime& time : pipeline.lastTimes()) total += time.ran ? time.milliseconds : 0;
+  return total;
 }
 
 double UiState::medianPipelineMs() const {
-  std::vector<double> totals;
-  for (const auto& run : recentTimes) {
-    double total = 0;
-    for (const StageTime& time : run) total += time.milliseconds;
-    totals.push_back(total);
-  }
-  return median(totals);
+  double total = 0;
+  for (const StageTime& time : pipeline.lastTimes()) total += time.ran ? time.median : 0;
+  return total;
+}
+
+int UiState::medianRuns() const {
+  int runs = 0;
+  for (const StageTime& time : pipeline.lastTimes())
+    if (time.ran) runs = runs == 0 ? time.runs : std::min(runs, time.runs);
+  return runs;
 }
 
 void UiState::recordFrameInterval(double seconds) {

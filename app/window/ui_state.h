@@ -65,6 +65,18 @@ struct EyeSize {
   int width = 640, height = 480;
 };
 
+// Everything a pipeline run depends on. The window runs the pipeline when the key of what
+// it would run now differs from the key of its last run; nobody sets a "dirty" flag.
+struct RunKey {
+  std::uint64_t revision = 0;  // Pipeline::revision(): every parameter's value
+  std::uint64_t scene = 0;     // which scene (loads counted), its camera and light
+  glm::ivec2 eye{0, 0};
+  std::uint32_t frameKey = 0;
+  int shaders = 0;                     // shader reloads
+  std::vector<std::string> requested;  // the outputs shown (Pipeline::run's `requested`)
+  bool operator==(const RunKey&) const = default;
+};
+
 class UiState {
 public:
   UiState();  // records the declared parameter defaults (for export names)
@@ -94,8 +106,10 @@ public:
   bool showLight = true;  // the light's outline over eye-sized views (app/window/ui_light_gesture.h)
 
   // 3. Run control and messages.
-  bool dirty = true;           // the pipeline must run (parameters, camera, light, size...)
-  bool runEveryFrame = false;  // for timing: ignore `dirty`
+  std::optional<RunKey> lastRun;  // the key of the last run (none yet)
+  int sceneLoads = 0, shaderReloads = 0;
+  bool traceShown = false;     // the inspector's ray trace section is open (it needs the trace)
+  bool runEveryFrame = false;  // for timing: run even when the key has not changed
   bool previewing = false;     // camera moving: eye at 1/previewDivisor resolution
   int previewDivisor = 1;      // chosen so a preview run takes about kPreviewMs
   double fullResolutionMs = 0;  // the last run at full resolution
@@ -109,8 +123,7 @@ public:
   std::deque<SyntheticInput> syntheticInput;  // script: one entry per frame
   LessonState lesson;
 
-  // 4. Timing: recent pipeline runs and frame intervals.
-  std::deque<std::vector<StageTime>> recentTimes;
+  // 4. Timing: per-stage times live in the pipeline (Pipeline::lastTimes); frame intervals.
   std::deque<double> frameSeconds;
   int pipelineRuns = 0;
   glm::ivec2 requestedEye{0, 0};  // "fit view": runs once the layout holds for a frame
@@ -130,13 +143,28 @@ public:
   const Output* outputOf(const std::string& stageDotOutput) const;
   std::vector<std::string> outputKeys() const;  // every declared output, in pipeline order
 
-  // Runs the pipeline if dirty (or runEveryFrame) at the eye size for `viewRegion`.
-  // Returns true if it ran.
+  // The outputs the window shows now: both views (and what they subtract), and the trace
+  // stage's outputs while the ray trace panel is open. Only their dependencies run.
+  std::vector<std::string> requestedOutputs() const;
+  // The eye size of a run: fixed, or `fitSize` (the view's layout) under "fit view"; reduced
+  // while previewing.
+  glm::ivec2 eyeFor(glm::ivec2 fitSize) const;
+  // The key a run would have now (under "fit view", at the last laid-out size).
+  RunKey currentKey() const;
+  // Whether the next runIfNeeded would run (the key changed, or run every frame).
+  bool needsRun() const;
+  // Runs the pipeline when the key changed (or runEveryFrame) at the eye size for
+  // `viewRegion`, on the requested outputs only. Returns true if it ran.
   bool runIfNeeded(glm::ivec2 viewRegion);
+  // Runs every stage (exports of everything); "" or the failure.
+  std::string runAll();
   // Called each frame with whether the mouse moves the camera: starts / ends the preview.
   void setCameraMoving(bool moving);
-  double medianStageMs(const std::string& stage) const;
+  // The last run: total of the stages that ran; total of their medians, and the fewest runs
+  // any of those medians covers (runs with identical parameters, scene and eye size).
+  double lastPipelineMs() const;
   double medianPipelineMs() const;
+  int medianRuns() const;
   double framesPerSecond() const;
   void recordFrameInterval(double seconds);
 };

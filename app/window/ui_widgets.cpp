@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 
 // 1. The (?) marker.
 void helpMarker(const std::string& text) {
@@ -80,4 +81,14 @@ void sameLineIfFits(float width) {
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   ImGui::SameLine();
   if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+}
+
+std::string timingText(const StageTime& time) {
+  if (!time.ran) return "not run: no output the window shows depends on it";
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "last run %.2f ms; median %.2f ms over %d run(s) with these parameters, scene "
+                "and eye size (any change starts a new series)",
+                time.milliseconds, time.median, time.runs);
+  return text;
 }

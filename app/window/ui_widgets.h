@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/param.h"
+#include "core/pipeline.h"
 
 // 1. "(?)" after the last item; hovering shows `text`.
 void helpMarker(const std::string& text);
@@ -16,3 +17,6 @@ bool drawParam(Param& param);
 const char* formatName(GLenum format);
 // 4. Continues the current line if an item `width` wide still fits, else starts a new one.
 void sameLineIfFits(float width);
+// 5. A stage's timing for a tooltip: last run, median and how many runs it covers, or why
+//    it did not run.
+std::string timingText(const StageTime& time);

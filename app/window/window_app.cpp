@@ -25,6 +25,7 @@
 #include "window/watchdog.h"
 #include "window/script/ui_settings.h"
 #include "window/panels/ui_speed_error.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/views/ui_texture_view.h"
 #include "window/views/ui_trace_source.h"
@@ -107,9 +108,10 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
                                         ImGuiWindowFlags_NoScrollbar);
   char speed[200];
   const double pipelineMs = state.medianPipelineMs();
-  std::snprintf(speed, sizeof speed, "eye %dx%d | pipeline %.1f ms (%.1f/s) | UI %.0f fps | %s%s",
+  std::snprintf(speed, sizeof speed, "eye %dx%d | pipeline %.1f ms (%.1f/s, median of %d) | UI %.0f fps | %s%s",
                 state.frame ? state.frame->eyeWidth : 0, state.frame ? state.frame->eyeHeight : 0,
-                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.framesPerSecond(),
+                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.medianRuns(),
+                state.framesPerSecond(),
                 state.runEveryFrame ? "runs every frame" : "runs on change",
                 state.previewing && state.previewDivisor > 1
                     ? (" | PREVIEW at 1/" + std::to_string(state.previewDivisor) +
@@ -218,7 +220,7 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
     state.status = message;
   }
   for (const std::string& assignment : options.sets) state.pipeline.set(assignment);
-  if (state.outputOf("composite.color")) state.selectOutput("composite.color");
+  if (const std::string image = finalImageOutput(state.pipeline); !image.empty()) state.selectOutput(image);
   else state.selectStage(state.pipeline.stages().back()->name());
   state.scrollToStage.clear();  // open on the top of the pipeline panel
   return 0;
@@ -265,7 +267,7 @@ int runWindow(const WindowOptions& options) {
     while (result == 0 && !glfwWindowShouldClose(window)) {
       // 7a. Events: wait when idle, so an idle window costs no CPU.
       const bool busy = (runner && !state->lesson.waiting) || !options.screenshot.empty() ||
-                        state->dirty || state->runEveryFrame || !state->syntheticInput.empty();
+                        state->needsRun() || !state->syntheticInput.empty();
       if (busy) glfwPollEvents();
       else glfwWaitEventsTimeout(0.1);
       const auto now = std::chrono::steady_clock::now();
@@ -300,11 +302,11 @@ int runWindow(const WindowOptions& options) {
       applySyntheticInput(*state);
       ImGui::NewFrame();
       handleShortcuts(*state, window, screenshotCount);
-      const bool wasDirty = state->dirty;
+      const RunKey before = state->currentKey();
       const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y));
       // A slider dragged since its press counts as moving too: preview until released.
       if (!ImGui::IsAnyItemActive()) draggingSlider = false;
-      else if (!wasDirty && state->dirty) draggingSlider = true;
+      else if (state->currentKey() != before) draggingSlider = true;
       state->setCameraMoving(moving || draggingSlider || state->scriptMovesCamera);
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);

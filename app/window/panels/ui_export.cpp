@@ -93,8 +93,10 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
 }
 
 // 3. Everything, through the same function as `penumbra export`.
-std::string exportAllStages(const UiState& state, const std::string& directory) {
+std::string exportAllStages(UiState& state, const std::string& directory) {
   if (!state.frame) return "export: no frame yet";
+  // The window runs only what it shows: every output first (the next shown run drops them).
+  if (std::string problem = state.runAll(); !problem.empty()) return "export failed: " + problem;
   fs::path target = directory;
   if (target.empty())
     target = fs::path(kDefaultExportDirectory) /

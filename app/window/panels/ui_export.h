@@ -20,7 +20,7 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
 std::string exportViewFiles(const UiState& state, const ViewPanel& view,
                             const std::string& target, ExportKind kind);
 // Every output + run.json into `directory` ("" -> default directory / "<scene>_all_<WxH>").
-std::string exportAllStages(const UiState& state, const std::string& directory);
+std::string exportAllStages(UiState& state, const std::string& directory);
 
 // Where "" exports go (relative to the working directory).
 constexpr const char* kDefaultExportDirectory = "penumbra_exports";

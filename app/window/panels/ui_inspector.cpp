@@ -6,7 +6,9 @@
 #include <cstdio>
 
 #include "window/views/ui_categories.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
+#include "window/ui_widgets.h"
 
 namespace {
 
@@ -73,28 +75,31 @@ void drawPick(const UiState& state) {
   ImGui::EndTable();
 }
 
-// 2. Bars: median ms per stage, scaled to the slowest.
+// 2. Bars: per stage, the median over runs with identical settings (the pipeline starts a
+//    new series whenever a parameter, the scene or the eye size changes), and the last run.
 void drawTimings(const UiState& state) {
+  const std::vector<StageTime>& times = state.pipeline.lastTimes();
   double slowest = 1e-3;
-  for (const auto& stage : state.pipeline.stages())
-    slowest = std::max(slowest, state.medianStageMs(stage->name()));
+  for (const StageTime& time : times) slowest = std::max(slowest, time.ran ? time.median : 0.0);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float width = ImGui::GetContentRegionAvail().x;
   const float labelWidth = std::min(110.0f, width * 0.4f);
-  for (const auto& stage : state.pipeline.stages()) {
-    const double ms = state.medianStageMs(stage->name());
+  for (const StageTime& time : times) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     const float height = ImGui::GetTextLineHeight();
-    const float barWidth = float(ms / slowest) * (width - labelWidth - 60);
+    const float barWidth = time.ran ? float(time.median / slowest) * (width - labelWidth - 60) : 0;
     draw->AddRectFilled({at.x + labelWidth, at.y + 2}, {at.x + labelWidth + barWidth, at.y + height - 1},
                         IM_COL32(90, 150, 230, 255));
-    ImGui::TextUnformatted(stage->name().c_str());
+    ImGui::TextUnformatted(time.stage.c_str());
     ImGui::SameLine(labelWidth + barWidth + 14);
-    ImGui::Text("%.1f ms", ms);
+    if (time.ran) ImGui::Text("%.1f ms", time.median);
+    else ImGui::TextDisabled("not run");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timingText(time).c_str());
   }
   const double total = state.medianPipelineMs();
-  ImGui::Text("pipeline %.1f ms (%.1f runs/s)", total, total > 0 ? 1000.0 / total : 0.0);
-  ImGui::TextDisabled("median of the last %zu runs; glFinish timing", state.recentTimes.size());
+  ImGui::Text("pipeline %.1f ms (%.1f runs/s), last run %.1f ms", total,
+              total > 0 ? 1000.0 / total : 0.0, state.lastPipelineMs());
+  ImGui::TextDisabled("median of %d run(s) with these settings;\nglFinish timing", state.medianRuns());
 }
 
 // 3. Counters the stages reported this frame.
@@ -133,10 +138,12 @@ void drawRayTrace(UiState& state) {
     ImGui::SliderInt("ray", &state.selectedRay, 0, trace.raysPerPixel - 1);
   }
   glm::ivec2 lightMap{0};
-  if (state.frame->has("light_layers.near"))
-    lightMap = {state.frame->texture("light_layers.near").width(), state.frame->texture("light_layers.near").height()};
-  if (ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels, zoomed
-    if (ViewPanel* target = state.selectionTarget(); target && state.selectOutput("nbuffer.levels").empty()) {
+  const std::string nearLayer = recordingInput(state.pipeline, "near");
+  if (state.frame->has(nearLayer))
+    lightMap = {state.frame->texture(nearLayer).width(), state.frame->texture(nearLayer).height()};
+  const std::string levels = recordingInput(state.pipeline, "levels");
+  if (!levels.empty() && ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels
+    if (ViewPanel* target = state.selectionTarget(); target && state.selectOutput(levels).empty()) {
       target->frameOverlays = true;
       int finest = 1 << 30;  // the finest level the ray visited (linear samples: level 0)
       for (const RayStepRecord& step : trace.steps)
@@ -145,8 +152,8 @@ void drawRayTrace(UiState& state) {
     }
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Show nbuffer.levels in the active view, zoomed onto this ray's visited\n"
-                      "windows (hierarchical) or samples (linear).");
+    ImGui::SetTooltip("Show %s in the active view, zoomed onto this ray's visited\n"
+                      "windows (hierarchical) or samples (linear).", levels.c_str());
   ImGui::SameLine();
   ImGui::Checkbox("own window", &state.traceWindow);
   if (!state.traceWindow) {
@@ -179,7 +186,8 @@ void drawInspector(UiState& state) {
                                 ImGuiTreeNodeFlags_DefaultOpen))
       drawCategoryLegend(state, view);
   }
-  if (ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen)) drawRayTrace(state);
+  state.traceShown = ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen);
+  if (state.traceShown) drawRayTrace(state);
   else state.overlays.clear();
   if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) drawTimings(state);
   if (ImGui::CollapsingHeader("Counters", ImGuiTreeNodeFlags_DefaultOpen)) drawCounters(state);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "window/panels/ui_reference_progress.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_difference.h"
 #include "window/ui_widgets.h"
@@ -41,12 +42,32 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   ImGui::TextDisabled("%s %s", formatName(output.format), size.c_str());
 }
 
-// 1b. Stage-specific view (issue 4): the light layers' difference, far - near, where covered.
+// 1b. An input slot and the producer wired to it (the graph, as the registry built it):
+//     click to show the producer's output.
+void drawInput(UiState& state, const Stage& stage, const Input& input) {
+  const std::string source = state.pipeline.source(stage.name(), input.name);
+  std::string label = "  " + input.name + " <- " + (source.empty() ? "(none)" : source);
+  if (input.isChoice()) label += "  (" + input.choiceParam + ")";
+  const bool texture = !source.empty() && state.outputOf(source) && !state.outputOf(source)->isBuffer();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  if (ImGui::Selectable((label + "###in_" + stage.name() + "." + input.name).c_str(), false) && texture) {
+    if (std::string problem = state.selectOutput(source); !problem.empty()) state.status = problem;
+    state.scrollToStage.clear();
+  }
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("input slot '%s': %s\n%s%s", input.name.c_str(), input.doc.c_str(),
+                      input.isChoice() ? ("chosen by the parameter " + input.choiceParam + "\n").c_str() : "",
+                      texture ? "click: show the producer's output" : "a storage buffer (not viewable)");
+}
+
+// 1c. Stage-specific view (issue 4): the light layers' difference, far - near, where covered.
 void drawThicknessLine(UiState& state) {
+  const LayerOutputs layers = layerOutputs(state.pipeline);
   bool shown = false;
   for (int v = 0; v < (state.twoViews ? 2 : 1); ++v)
-    shown |= state.views[v].output == "light_layers.far" && state.views[v].minus == "light_layers.near";
-  if (ImGui::Selectable("  thickness (far - near)###light_layers.thickness", shown)) {
+    shown |= state.views[v].output == layers.far && state.views[v].minus == layers.near;
+  if (ImGui::Selectable("  thickness (far - near)###layers.thickness", shown)) {
     state.status = showThickness(state);
     state.scrollToStage.clear();
   }
@@ -71,24 +92,27 @@ void drawStage(UiState& state, Stage& stage, int number) {
   }
   const bool open = ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen);
   if (selected) ImGui::PopStyleColor();
+  const StageTime& time = state.pipeline.lastTime(stage.name());
   ImGui::SameLine(ImGui::GetContentRegionMax().x - 64);
-  ImGui::Text("%6.1f ms", state.medianStageMs(stage.name()));
+  if (time.ran) ImGui::Text("%6.1f ms", time.median);
+  else ImGui::TextDisabled(" not run");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timingText(time).c_str());
   if (!open) return;
   ImGui::PushID(stage.name().c_str());
   ImGui::PushTextWrapPos(0);
   ImGui::TextUnformatted(stage.summary().c_str());
   ImGui::PopTextWrapPos();
   if (!stage.thesisSection().empty()) ImGui::TextDisabled("thesis %s", stage.thesisSection().c_str());
+  for (const Input& input : stage.inputs()) drawInput(state, stage, input);
   for (const Output& output : stage.outputs()) drawOutput(state, stage, output);
-  if (stage.name() == "light_layers") drawThicknessLine(state);
+  if (hasLayerOutputs(stage)) drawThicknessLine(state);
   ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
   for (Param& param : stage.params())
     if (drawParam(param)) {
-      state.dirty = true;
       state.status = stage.name() + "." + param.key + " = " + param.toString();
     }
   ImGui::PopItemWidth();
-  if (stage.name() == "reference") drawReferenceProgress(state);  // issue 5
+  if (&stage == groundTruthStage(state.pipeline)) drawReferenceProgress(state);  // issue 5
   ImGui::PopID();
   ImGui::Spacing();
 }

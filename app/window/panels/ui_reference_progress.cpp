@@ -5,15 +5,19 @@
 #include <cstdio>
 
 #include "reference/reference_trace.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 
 std::string compareWithReference(UiState& state) {
-  if (std::string problem = state.setParameter("reference.enabled", "true"); !problem.empty())
+  const Stage* truth = groundTruthStage(state.pipeline);
+  const std::string comparison = comparisonOutput(state.pipeline);
+  if (!truth || comparison.empty()) return "no ground truth and comparison stage registered";
+  if (std::string problem = state.setParameter(truth->name() + ".enabled", "true"); !problem.empty())
     return problem;
   state.twoViews = true;
   state.activeView = 1;
   state.views[1].locked = false;
-  std::string problem = state.selectOutput("error.signed");
+  std::string problem = state.selectOutput(comparison);
   state.activeView = 0;  // the method stays where it was, in view A
   return problem;
 }
@@ -21,7 +25,7 @@ std::string compareWithReference(UiState& state) {
 void drawReferenceProgress(UiState& state) {
   if (ImGui::Button("compare with reference")) {
     const std::string problem = compareWithReference(state);
-    state.status = problem.empty() ? "reference on; view B shows error.signed" : problem;
+    state.status = problem.empty() ? "ground truth on; view B shows " + comparisonOutput(state.pipeline) : problem;
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Enables the exact reference and shows the signed error (method minus\n"

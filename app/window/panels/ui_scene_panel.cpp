@@ -58,6 +58,8 @@ void drawEyeSize(UiState& state) {
 void drawCameraAndLight(UiState& state) {
   Camera& camera = state.scene.camera;
   AreaLight& light = state.scene.light;
+  const Camera cameraBefore = camera;
+  const AreaLight lightBefore = light;
   bool changed = false;
   changed |= ImGui::DragFloat3("eye", &camera.position.x, 0.02f, 0, 0, "%.2f");
   changed |= ImGui::DragFloat3("target", &camera.target.x, 0.02f, 0, 0, "%.2f");
@@ -80,16 +82,13 @@ void drawCameraAndLight(UiState& state) {
              "Alt+wheel over a scene view scales it (Shift: width only, Ctrl: height only).");
   light.width = std::max(light.width, 1e-3f);
   light.height = std::max(light.height, 1e-3f);
-  if (validateScene(state.scene).empty() && changed) state.dirty = true;
-  if (ImGui::Button("Reset camera")) {
-    camera = state.initialCamera;
-    state.dirty = true;
+  if (changed && !validateScene(state.scene).empty()) {  // never hand the pipeline a broken scene
+    camera = cameraBefore;
+    light = lightBefore;
   }
+  if (ImGui::Button("Reset camera")) camera = state.initialCamera;
   ImGui::SameLine();
-  if (ImGui::Button("Reset light")) {
-    light = state.initialLight;
-    state.dirty = true;
-  }
+  if (ImGui::Button("Reset light")) light = state.initialLight;
   ImGui::SameLine();
   ImGui::Checkbox("outline", &state.showLight);
   helpMarker("Draw the light rectangle (yellow), its centre and its axis down to the ground "

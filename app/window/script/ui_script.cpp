@@ -146,7 +146,7 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
     static const std::set<std::string> layoutChanging = {
         "select_output", "select_stage", "two_views", "view", "help", "trace_window",
         "camera_moving", "difference", "thickness", "say", "lesson"};
-    if (state.dirty || layoutChanging.count(action.name)) return Step::Running;
+    if (state.needsRun() || layoutChanging.count(action.name)) return Step::Running;
   }
   return Step::Done;
 }
@@ -189,13 +189,19 @@ void printPick(const UiState& state, const std::string& label) {
   std::fflush(stdout);
 }
 
+// Per stage: the last run and the median over the runs with identical settings.
 void printTiming(const UiState& state, const std::string& label) {
-  std::printf("timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %zu runs, UI %.1f fps\n",
+  std::printf("timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %d runs, last "
+              "run %.2f ms, UI %.1f fps\n",
               label.c_str(), state.frame->eyeWidth, state.frame->eyeHeight, state.medianPipelineMs(),
               state.medianPipelineMs() > 0 ? 1000.0 / state.medianPipelineMs() : 0.0,
-              state.recentTimes.size(), state.framesPerSecond());
-  for (const auto& stage : state.pipeline.stages())
-    std::printf("  %-14s %8.2f ms\n", stage->name().c_str(), state.medianStageMs(stage->name()));
+              state.medianRuns(), state.lastPipelineMs(), state.framesPerSecond());
+  for (const StageTime& time : state.pipeline.lastTimes())
+    if (time.ran)
+      std::printf("  %-14s %8.2f ms (last %.2f ms, %d runs)\n", time.stage.c_str(), time.median,
+                  time.milliseconds, time.runs);
+    else
+      std::printf("  %-14s  not run\n", time.stage.c_str());
   std::fflush(stdout);
 }
 
@@ -250,7 +256,6 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
     else if (a[0].get<int>() < 16 || a[1].get<int>() < 16 || a[0].get<int>() > 8192 || a[1].get<int>() > 8192)
       return "sizes are in [16, 8192]";
     else state.eye = {false, a[0].get<int>(), a[1].get<int>()};
-    state.dirty = true;
     return "";
   }
   if (name == "scene") return state.loadScene(a.get<std::string>());
@@ -307,10 +312,9 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   }
   if (name == "camera_orbit") {
     orbitCamera(state.scene.camera, glm::radians(a[0].get<float>()), glm::radians(a[1].get<float>()));
-    state.dirty = true;
     return "";
   }
-  if (name == "camera_dolly") { dollyCamera(state.scene.camera, a.get<float>()); state.dirty = true; return ""; }
+  if (name == "camera_dolly") { dollyCamera(state.scene.camera, a.get<float>()); return ""; }
   if (name == "settings") return applySettingsJson(state, a);
   if (name == "load_settings") {
     bool ok = false;

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "window/script/ui_script.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_difference.h"
 
@@ -116,7 +117,9 @@ std::string ScriptRunner::runMore(UiState& state, const ScriptAction& action) {
   if (name == "show_light") { state.showLight = a.get<bool>(); return ""; }
   if (name == "show_ray") {  // as the trace panel's "Show on N-buffer" button
     ViewPanel* target = state.selectionTarget();
-    if (std::string problem = state.selectOutput("nbuffer.levels"); !problem.empty()) return problem;
+    const std::string levels = recordingInput(state.pipeline, "levels");
+    if (levels.empty()) return "no stage records rays over an N-buffer (levels slot)";
+    if (std::string problem = state.selectOutput(levels); !problem.empty()) return problem;
     if (target) target->frameOverlays = a.get<bool>();
     return "";
   }

@@ -168,7 +168,6 @@ std::string applySettingsJson(UiState& state, const json& root) {
     state.scene.light = candidate.light;
     state.eye = eye;
     for (auto& [declared, value] : parameters) *declared = value;
-    state.dirty = true;
     return "";
   } catch (const SettingsError& error) {
     return error.message;

@@ -1,12 +1,10 @@
 // N-buffer views (issue 4, "Stage-specific views"): the level-0 window that the hovered texel
-// of level n summarises, drawn as a rectangle. The window rule is the layout spec of
+// of level n summarises, drawn as a rectangle. The N-buffer is the output wired to the
+// trace's "levels" slot (window/ui_graph.h recordingInput), one array layer per level. The window rule is the layout spec of
 // shaders/shared/nbuffer.glsl (nbufferWindow1D), restated here for the UI only.
 #pragma once
 #include <glm/glm.hpp>
 #include <string>
-
-// The output that holds the levels, one array layer per level.
-constexpr const char* kNBufferOutput = "nbuffer.levels";
 
 // Per axis: the inclusive window [lo, hi] of level `level` texel `x` on a map of `size`.
 glm::ivec2 nbufferWindow1D(int level, int x, int size);

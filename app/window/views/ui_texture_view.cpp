@@ -8,6 +8,7 @@
 #include "window/ui_camera.h"
 #include "window/ui_light_gesture.h"
 #include "window/views/ui_nbuffer_hover.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_toolbar.h"
 
@@ -109,7 +110,7 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
                        shape.color, 0, 0, 1.5f);
   }
   // N-buffer: the level-0 window the hovered texel of this level summarises.
-  if (hover && view.output == kNBufferOutput && view.settings.layer > 0 && hover->x >= 0 &&
+  if (hover && view.output == recordingInput(state.pipeline, "levels") && view.settings.layer > 0 && hover->x >= 0 &&
       hover->y >= 0 && hover->x < size.x && hover->y < size.y) {
     glm::ivec2 lo, hi;
     nbufferWindow(view.settings.layer, *hover, size, lo, hi);
@@ -146,7 +147,6 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
   if (hovered && io.MouseWheel != 0) {
     if (io.KeyCtrl) {
       dollyCamera(state.scene.camera, std::pow(0.9f, io.MouseWheel));
-      state.dirty = true;
     } else {
       view.transform.zoomAbout(std::pow(1.25f, io.MouseWheel), mouse, origin, regionSize);
       view.fitted = false;
@@ -165,12 +165,10 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
     movingCamera = true;
     if (io.KeyShift) panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
     else orbitCamera(state.scene.camera, -delta.x * 0.01f, -delta.y * 0.01f);
-    if (delta != glm::vec2(0)) state.dirty = true;
   }
   if (pressedHere && ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
     movingCamera = true;
     panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
-    if (delta != glm::vec2(0)) state.dirty = true;
   }
   return movingCamera;
 }

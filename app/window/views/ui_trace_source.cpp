@@ -3,16 +3,11 @@
 #include <cstdio>
 
 #include "cli/trace_command.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/panels/ui_trace_panel.h"
 
 namespace {
-
-bool hasParameter(const Pipeline& pipeline, const std::string& key) {
-  for (const std::string& each : pipeline.paramKeys())
-    if (each == key) return true;
-  return false;
-}
 
 // 1. One gpu::TraceStep -> the panel's record (windows and points are GL texels already).
 RayStepRecord convert(const gpu::TraceStep& step) {
@@ -37,7 +32,9 @@ RayStepRecord convert(const gpu::TraceStep& step) {
 // 1b. A point sample's band: the near and far layers at its texel (one read-back per layer
 //     over the rectangle the samples cover, not one per sample).
 void addLayerBands(const Frame& frame, std::vector<RayStepRecord>& steps) {
-  if (!frame.has("light_layers.near") || !frame.has("light_layers.far")) return;
+  const std::string nearKey = recordingInput(frame.pipeline, "near");
+  const std::string farKey = recordingInput(frame.pipeline, "far");
+  if (!frame.has(nearKey) || !frame.has(farKey)) return;
   glm::ivec2 lo{1 << 30}, hi{-1};
   for (const RayStepRecord& s : steps)
     if (s.point) {
@@ -45,8 +42,8 @@ void addLayerBands(const Frame& frame, std::vector<RayStepRecord>& steps) {
       hi = glm::max(hi, s.windowLo);
     }
   if (hi.x < 0) return;
-  const GlTexture& near = frame.texture("light_layers.near");
-  const GlTexture& far = frame.texture("light_layers.far");
+  const GlTexture& near = frame.texture(nearKey);
+  const GlTexture& far = frame.texture(farKey);
   lo = glm::clamp(lo, glm::ivec2(0), glm::ivec2(near.width() - 1, near.height() - 1));
   hi = glm::clamp(hi, lo, glm::ivec2(near.width() - 1, near.height() - 1));
   const glm::ivec2 size = hi - lo + 1;
@@ -65,11 +62,12 @@ void addLayerBands(const Frame& frame, std::vector<RayStepRecord>& steps) {
 // 2. The steps of ray `ray` of the recorded pixel, if the recorded pixel is `pixel`.
 RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
   RayTraceInfo info;
-  if (!hasParameter(frame.pipeline, "trace.record_x")) return info;
-  const int n = frame.pipeline.param("trace.rays").asInt();
+  const Stage* recorder = recordingStage(frame.pipeline);
+  if (!recorder) return info;
+  const int n = recorder->param("rays").asInt();
   info.raysPerPixel = n * n;
-  const int recordX = frame.pipeline.param("trace.record_x").asInt();
-  const int recordY = frame.pipeline.param("trace.record_y").asInt();
+  const int recordX = recorder->param("record_x").asInt();
+  const int recordY = recorder->param("record_y").asInt();
   if (recordX != pixel.x || recordY != frame.eyeHeight - 1 - pixel.y) {
     info.result = "recording this pixel on the next run";
     return info;
@@ -77,10 +75,11 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
   for (const gpu::TraceStep& step : frame.traceSteps)
     if (step.header.x == ray) info.steps.push_back(convert(step));
   addLayerBands(frame, info.steps);
-  if (frame.has("trace.visibility")) {
+  const std::string visibility = frame.pipeline.methodOutput(recorder->name());
+  if (frame.has(visibility)) {
     char text[96];
     std::snprintf(text, sizeof text, "ray %d of %d; pixel visibility %.4g", ray, n * n,
-                  double(readTexel(frame.texture("trace.visibility"), pixel.x, pixel.y)[0]));
+                  double(readTexel(frame.texture(visibility), pixel.x, pixel.y)[0]));
     info.result = text;
   }
   return info;
@@ -90,15 +89,13 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
 
 void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
 
-// 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top).
+// 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top); the
+//    parameters' new revision re-runs the pipeline.
 void recordPickedPixel(UiState& state) {
-  if (!state.pick || !state.frame || !hasParameter(state.pipeline, "trace.record_x")) return;
+  Stage* recorder = recordingStage(state.pipeline);
+  if (!state.pick || !state.frame || !recorder) return;
   if (state.pickSpace != glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight)) return;
   const glm::ivec2 image{state.pick->x, state.pickSpace.y - 1 - state.pick->y};
-  Param& x = state.pipeline.param("trace.record_x");
-  Param& y = state.pipeline.param("trace.record_y");
-  if (x.asInt() == image.x && y.asInt() == image.y) return;
-  x.value = image.x;
-  y.value = image.y;
-  state.dirty = true;
+  recorder->param("record_x").value = image.x;
+  recorder->param("record_y").value = image.y;
 }

@@ -1,7 +1,8 @@
-// Connects the per-ray trace panel (ui_trace_panel.h) to the trace stage: the window asks
-// the stage to record the picked eye pixel (parameters trace.record_x / trace.record_y, in
-// image coordinates) and the panel reads Frame::traceSteps (shaders/shared/trace_layout.h).
-// Without a trace stage (no such parameters) both functions do nothing.
+// Connects the per-ray trace panel (ui_trace_panel.h) to the stage that records one pixel's
+// rays (window/ui_graph.h recordingStage: the trace). The window asks it to record the picked
+// eye pixel and the panel reads Frame::traceSteps (shaders/shared/trace_layout.h), its
+// visibility and the layers wired to its "near" / "far" slots. Without such a stage these
+// functions do nothing.
 #pragma once
 
 class UiState;

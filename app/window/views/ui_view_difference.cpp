@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 
 // 1. One program per kind of source (float / uint, 2D / array) and result format.
@@ -112,8 +113,10 @@ std::string setViewDifference(UiState& state, ViewPanel& view, const std::string
 std::string showThickness(UiState& state) {
   ViewPanel* target = state.selectionTarget();
   if (!target) return "both views are locked: unlock one to show the thickness";
-  if (std::string problem = state.selectOutput("light_layers.far"); !problem.empty()) return problem;
-  std::string problem = setViewDifference(state, *target, "light_layers.near");
+  const LayerOutputs layers = layerOutputs(state.pipeline);
+  if (layers.far.empty()) return "no stage declares the outputs near and far (the light layers)";
+  if (std::string problem = state.selectOutput(layers.far); !problem.empty()) return problem;
+  std::string problem = setViewDifference(state, *target, layers.near);
   if (problem.empty()) target->clipNegative = true;
   return problem;
 }

@@ -48,7 +48,8 @@ const GlTexture* shownTexture(const UiState& state, const ViewPanel& view,
 // Turns the difference view on (`minus` = "stage.output") or off (""): checks the output
 // exists and has the view's size, switches to the diverging colormap, autofits. "" or why not.
 std::string setViewDifference(UiState& state, ViewPanel& view, const std::string& minus);
-// The thickness preset: light_layers.far - light_layers.near, negative (uncovered) -> 0.
+// The thickness preset: the light layers' far - near (ui_graph.h layerOutputs), negative
+// (uncovered) -> 0.
 // In the view that takes selections (app/window/ui_state.h selectionTarget).
 std::string showThickness(UiState& state);
 // Channel names of the shown texture ("lsDepthFar-lsDepthNear"), for readouts and EXR.

@@ -7,6 +7,7 @@
 
 #include "window/panels/ui_export.h"
 #include "window/views/ui_view_difference.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/ui_widgets.h"
 
@@ -49,7 +50,7 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
   if (ImGui::BeginCombo("##minus", current.c_str())) {
     if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
       setViewDifference(state, view, "");
-    if (state.outputOf("light_layers.far") && ImGui::Selectable("thickness: far - near"))
+    if (!layerOutputs(state.pipeline).far.empty() && ImGui::Selectable("thickness: far - near"))
       state.status = showThickness(state);
     const GlTexture* a = state.frame && state.frame->has(view.output) ? &state.frame->texture(view.output) : nullptr;
     for (const std::string& key : state.outputKeys()) {

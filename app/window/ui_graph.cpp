@@ -1,0 +1,83 @@
+#include "window/ui_graph.h"
+
+#include "core/pipeline.h"
+
+namespace {
+
+bool declaresParam(const Stage& stage, const std::string& key) {
+  for (const Param& param : stage.params())
+    if (param.key == key) return true;
+  return false;
+}
+
+bool hasOutput(const Stage& stage, const std::string& name) {
+  for (const Output& output : stage.outputs())
+    if (output.name == name) return true;
+  return false;
+}
+
+// The first stage with a choice slot over `role` (composite: shadow methods; error: ground
+// truths), skipping stages that choose `skipRole` too.
+const Stage* chooser(const Pipeline& pipeline, unsigned role, unsigned skipRole) {
+  for (const auto& stage : pipeline.stages()) {
+    bool chooses = false, skipped = false;
+    for (const Input& input : stage->inputs()) {
+      chooses |= input.isChoice() && input.chooseRole == role;
+      skipped |= input.isChoice() && input.chooseRole == skipRole;
+    }
+    if (chooses && !skipped && !stage->outputs().empty()) return stage.get();
+  }
+  return nullptr;
+}
+
+std::string firstOutput(const Stage* stage) {
+  return stage ? stage->name() + "." + stage->outputs().front().name : "";
+}
+
+}  // namespace
+
+std::string finalImageOutput(const Pipeline& pipeline) {
+  return firstOutput(chooser(pipeline, kRoleShadowMethod, kRoleGroundTruth));
+}
+
+std::string comparisonOutput(const Pipeline& pipeline) {
+  return firstOutput(chooser(pipeline, kRoleGroundTruth, kRoleNone));
+}
+
+Stage* groundTruthStage(const Pipeline& pipeline) {
+  const std::vector<std::string> truths = pipeline.methods(kRoleGroundTruth);
+  return truths.empty() ? nullptr : &pipeline.stage(truths.front());
+}
+
+bool hasLayerOutputs(const Stage& stage) { return hasOutput(stage, "near") && hasOutput(stage, "far"); }
+
+LayerOutputs layerOutputs(const Pipeline& pipeline) {
+  for (const auto& stage : pipeline.stages())
+    if (hasLayerOutputs(*stage)) return {stage->name() + ".near", stage->name() + ".far"};
+  return {};
+}
+
+Stage* recordingStage(const Pipeline& pipeline) {
+  for (const auto& stage : pipeline.stages())
+    if (declaresParam(*stage, "record_x") && declaresParam(*stage, "record_y") &&
+        declaresParam(*stage, "rays"))
+      return stage.get();
+  return nullptr;
+}
+
+std::string recordingInput(const Pipeline& pipeline, const std::string& slot) {
+  const Stage* recorder = recordingStage(pipeline);
+  if (!recorder) return "";
+  for (const Input& input : recorder->inputs())
+    if (input.name == slot) return pipeline.source(recorder->name(), slot);
+  return "";
+}
+
+std::vector<std::string> traceOutputs(const Pipeline& pipeline) {
+  const Stage* recorder = recordingStage(pipeline);
+  if (!recorder) return {};
+  std::vector<std::string> outputs;
+  for (const Output& output : recorder->outputs())
+    if (!output.isBuffer()) outputs.push_back(recorder->name() + "." + output.name);
+  return outputs;
+}

@@ -1,0 +1,34 @@
+// What the window asks the stage graph (app/core/pipeline.h), never a stage's name: the
+// image, the comparison with the ground truth, the light's depth layers and the stage that
+// records one pixel's rays are found by what the stages declare (roles, choice slots,
+// output and parameter names), so a new stage shows up without edits here.
+#pragma once
+#include <string>
+#include <vector>
+
+class Pipeline;
+class Stage;
+
+// The final image: the first output of the stage whose choice slot takes a shadow method's
+// visibility and that is not itself measured ("composite.color"); "" if none.
+std::string finalImageOutput(const Pipeline& pipeline);
+// The comparison with the ground truth: the first output of the stage whose choice slot takes
+// a ground truth ("error.signed"); "" if none.
+std::string comparisonOutput(const Pipeline& pipeline);
+// The first stage whose output is a ground truth (the reference), nullptr if none.
+Stage* groundTruthStage(const Pipeline& pipeline);
+// The light's depth layers: the outputs "near" and "far" of the one stage that declares both
+// ("light_layers.near", "light_layers.far"); empty strings if none does.
+struct LayerOutputs {
+  std::string near, far;
+};
+LayerOutputs layerOutputs(const Pipeline& pipeline);
+bool hasLayerOutputs(const Stage& stage);
+// The stage whose rays the trace panel shows: it declares the parameters record_x, record_y
+// (image coordinates of the recorded pixel) and rays (the trace).
+Stage* recordingStage(const Pipeline& pipeline);
+// The producer wired to `slot` of the recording stage ("nbuffer.levels" for "levels"); "" if
+// there is no such stage or slot.
+std::string recordingInput(const Pipeline& pipeline, const std::string& slot);
+// What the trace panel needs run: the recording stage's texture outputs.
+std::vector<std::string> traceOutputs(const Pipeline& pipeline);
