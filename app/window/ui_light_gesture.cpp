@@ -83,9 +83,9 @@ float sceneSize(const Scene& scene) {
 // 2. Gestures (Alt held). The view's transform maps screen points to eye texels.
 bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::vec2 origin,
                       glm::vec2 regionSize) {
-  if (!state.frame) return false;
+  if (!state.session.frame) return false;
   ImGuiIO& io = ImGui::GetIO();
-  AreaLight& light = state.scene.light;
+  AreaLight& light = state.session.scene.light;
   const AreaLight before = light;
   if (ImGui::IsItemHovered() && io.MouseWheel != 0) {
     const float factor = std::pow(1.1f, io.MouseWheel);
@@ -97,13 +97,13 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
   if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left) && delta != glm::vec2(0)) {
     dragging = true;
     if (io.KeyShift) {  // up / down: a drag over the view's height moves about the eye distance
-      const float distance = glm::distance(state.scene.camera.position, light.center);
+      const float distance = glm::distance(state.session.scene.camera.position, light.center);
       light.center.y -= delta.y / std::max(regionSize.y, 1.0f) * distance;
     } else {
       const glm::vec2 to = view.transform.texelFromScreen(mouse, origin, regionSize);
       const glm::vec2 from = view.transform.texelFromScreen(mouse - delta, origin, regionSize);
-      moveLightOnGround(light, state.frame->uniforms.worldFromClip, eyeSize, from, to,
-                        groundHeight(state.scene), 0.5f * sceneSize(state.scene));
+      moveLightOnGround(light, state.session.frame->uniforms.worldFromClip, eyeSize, from, to,
+                        groundHeight(state.session.scene), 0.5f * sceneSize(state.session.scene));
     }
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Right) && delta != glm::vec2(0)) {
@@ -114,7 +114,7 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
   const bool changed = light.center != before.center || light.forward != before.forward ||
                        light.width != before.width || light.height != before.height;
   if (changed) {
-    if (validateScene(state.scene).empty()) {
+    if (validateScene(state.session.scene).empty()) {
       char text[160];
       std::snprintf(text, sizeof text, "light at (%.2f, %.2f, %.2f), %.2f x %.2f", light.center.x,
                     light.center.y, light.center.z, light.width, light.height);
@@ -129,9 +129,9 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
 // 3. Outline: a translucent quad, its border, the centre and the axis down to the ground.
 void drawLightOutline(const UiState& state, const ViewPanel& view, glm::ivec2 eyeSize,
                       glm::vec2 origin, glm::vec2 regionSize) {
-  if (!state.frame || !state.showLight) return;
-  const glm::mat4& clipFromWorld = state.frame->uniforms.clipFromWorld;
-  const AreaLight& light = state.scene.light;
+  if (!state.session.frame || !state.views.showLight) return;
+  const glm::mat4& clipFromWorld = state.session.frame->uniforms.clipFromWorld;
+  const AreaLight& light = state.session.scene.light;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const auto screen = [&](glm::vec3 world, ImVec2& at) {
     glm::vec2 texel;
@@ -152,7 +152,7 @@ void drawLightOutline(const UiState& state, const ViewPanel& view, glm::ivec2 ey
   }
   ImVec2 centre, ground;
   const glm::vec3 forward = glm::normalize(light.forward);
-  const float groundY = groundHeight(state.scene);
+  const float groundY = groundHeight(state.session.scene);
   if (screen(light.center, centre)) {
     draw->AddCircleFilled(centre, 4, color);
     draw->AddText({centre.x + 6, centre.y - 16}, color, "light (Alt+drag)");

@@ -72,19 +72,19 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   if (ImGui::IsKeyPressed(GLFW_KEY_F5)) state.reloadShaders();
   if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
   if (ImGui::IsKeyPressed(GLFW_KEY_F12))
-    state.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
+    state.script.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
   if (io.KeyCtrl) {
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false))
       state.status = saveSettingsFile(state, "penumbra_settings.json");
     if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.status = exportAllStages(state, "");
     return;
   }
-  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false) && state.twoViews) state.activeView = 1 - state.activeView;
+  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false) && state.views.twoViews) state.views.activeView = 1 - state.views.activeView;
   if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) {
-    state.twoViews = !state.twoViews;
-    if (!state.twoViews) state.activeView = 0;
+    state.views.twoViews = !state.views.twoViews;
+    if (!state.views.twoViews) state.views.activeView = 0;
   }
-  ViewPanel& view = state.views[state.activeView];
+  ViewPanel& view = state.views.panels[state.views.activeView];
   const GlTexture* texture = shownTexture(state, view);
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) view.fitPending = true;
   if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) {
@@ -94,10 +94,10 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   if (ImGui::IsKeyPressed(GLFW_KEY_A, false) && texture) autofitView(view, *texture);
   if (ImGui::IsKeyPressed(GLFW_KEY_R, false) && texture) resetView(state, view, *texture);
   const int step = io.KeyShift ? 10 : 1;
-  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) state.movePick({-step, 0});
-  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) state.movePick({step, 0});
-  if (ImGui::IsKeyPressed(GLFW_KEY_UP)) state.movePick({0, step});  // GL: y grows upwards
-  if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) state.movePick({0, -step});
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) state.views.movePick({-step, 0});
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) state.views.movePick({step, 0});
+  if (ImGui::IsKeyPressed(GLFW_KEY_UP)) state.views.movePick({0, step});  // GL: y grows upwards
+  if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) state.views.movePick({0, -step});
 }
 
 // 3. The status line: what happened last, and how fast things are.
@@ -107,14 +107,14 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
   ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoScrollbar);
   char speed[200];
-  const double pipelineMs = state.medianPipelineMs();
+  const double pipelineMs = state.session.medianPipelineMs();
   std::snprintf(speed, sizeof speed, "eye %dx%d | pipeline %.1f ms (%.1f/s, median of %d) | UI %.0f fps | %s%s",
-                state.frame ? state.frame->eyeWidth : 0, state.frame ? state.frame->eyeHeight : 0,
-                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.medianRuns(),
-                state.framesPerSecond(),
-                state.runEveryFrame ? "runs every frame" : "runs on change",
-                state.previewing && state.previewDivisor > 1
-                    ? (" | PREVIEW at 1/" + std::to_string(state.previewDivisor) +
+                state.session.frame ? state.session.frame->eyeWidth : 0, state.session.frame ? state.session.frame->eyeHeight : 0,
+                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.session.medianRuns(),
+                state.session.framesPerSecond(),
+                state.session.runEveryFrame ? "runs every frame" : "runs on change",
+                state.session.previewing && state.session.previewDivisor > 1
+                    ? (" | PREVIEW at 1/" + std::to_string(state.session.previewDivisor) +
                        " resolution while the camera moves").c_str()
                     : "");
   const float speedWidth = ImGui::CalcTextSize(speed).x;
@@ -144,7 +144,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   ImGui::PopStyleVar();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   bool movingCamera = false;
-  if (state.twoViews) {
+  if (state.views.twoViews) {
     const float half = (avail.x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
     movingCamera |= drawTextureView(state, 0, {half, avail.y});
     ImGui::SameLine();
@@ -172,9 +172,9 @@ bool drawUi(UiState& state, const Layout& layout) {
 
 // A script's drag or wheel: this frame's mouse and modifiers, over what the backend read.
 void applySyntheticInput(UiState& state) {
-  if (state.syntheticInput.empty()) return;
-  const SyntheticInput input = state.syntheticInput.front();
-  state.syntheticInput.pop_front();
+  if (state.script.syntheticInput.empty()) return;
+  const SyntheticInput input = state.script.syntheticInput.front();
+  state.script.syntheticInput.pop_front();
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = {input.mouse.x, input.mouse.y};
   for (int b = 0; b < 3; ++b) io.MouseDown[b] = input.buttons[size_t(b)];
@@ -219,10 +219,10 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
     }
     state.status = message;
   }
-  for (const std::string& assignment : options.sets) state.pipeline.set(assignment);
-  if (const std::string image = finalImageOutput(state.pipeline); !image.empty()) state.selectOutput(image);
-  else state.selectStage(state.pipeline.stages().back()->name());
-  state.scrollToStage.clear();  // open on the top of the pipeline panel
+  for (const std::string& assignment : options.sets) state.session.pipeline.set(assignment);
+  if (const std::string image = finalImageOutput(state.session.pipeline); !image.empty()) state.selectOutput(image);
+  else state.selectStage(state.session.pipeline.stages().back()->name());
+  state.views.scrollToStage.clear();  // open on the top of the pipeline panel
   return 0;
 }
 
@@ -254,7 +254,7 @@ int runWindow(const WindowOptions& options) {
   int result = 0;
   try {
     auto state = std::make_unique<UiState>();  // GL objects: destroyed before the context
-    state->renderer = context->renderer();
+    state->session.renderer = context->renderer();
     installFrameTraceSource();
     result = prepareState(*state, options, std::move(scene));
     std::unique_ptr<ScriptRunner> runner;
@@ -267,14 +267,14 @@ int runWindow(const WindowOptions& options) {
     while (result == 0 && !glfwWindowShouldClose(window)) {
       // 7a. Events: wait when idle, so an idle window costs no CPU.
       const bool busy = (runner && !state->lesson.waiting) || !options.screenshot.empty() ||
-                        state->needsRun() || !state->syntheticInput.empty();
+                        state->needsRun() || !state->script.syntheticInput.empty();
       if (busy) glfwPollEvents();
       else glfwWaitEventsTimeout(0.1);
       const auto now = std::chrono::steady_clock::now();
-      state->recordFrameInterval(std::chrono::duration<double>(now - last).count());
+      state->session.recordFrameInterval(std::chrono::duration<double>(now - last).count());
       last = now;
       // 7b. Script actions, once the first run and the layout have settled.
-      if (runner && framesRendered >= 2 && state->pipelineRuns > 0) {
+      if (runner && framesRendered >= 2 && state->session.pipelineRuns > 0) {
         const ScriptRunner::Step step = runner->step(*state);
         if (step == ScriptRunner::Step::Failed) {
           std::fprintf(stderr, "penumbra: %s\n", runner->error().c_str());
@@ -287,15 +287,15 @@ int runWindow(const WindowOptions& options) {
           state->lesson.finished = true;
         }
       }
-      if (state->cursorRequest) {  // a script's "mouse": as if the user moved it there
-        glfwSetCursorPos(window, state->cursorRequest->x, state->cursorRequest->y);
-        state->cursorRequest.reset();
+      if (state->script.cursorRequest) {  // a script's "mouse": as if the user moved it there
+        glfwSetCursorPos(window, state->script.cursorRequest->x, state->script.cursorRequest->y);
+        state->script.cursorRequest.reset();
       }
       // 7c. The pipeline, only when something changed.
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
       recordPickedPixel(*state);
-      state->runIfNeeded(glm::ivec2(state->views[0].eyeRegion));
+      state->runIfNeeded(glm::ivec2(state->views.panels[0].eyeRegion));
       // 7d. The UI.
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
@@ -307,7 +307,7 @@ int runWindow(const WindowOptions& options) {
       // A slider dragged since its press counts as moving too: preview until released.
       if (!ImGui::IsAnyItemActive()) draggingSlider = false;
       else if (state->currentKey() != before) draggingSlider = true;
-      state->setCameraMoving(moving || draggingSlider || state->scriptMovesCamera);
+      state->session.setCameraMoving(moving || draggingSlider || state->script.movesCamera);
       ImGui::Render();
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       glViewport(0, 0, width, height);
@@ -316,11 +316,11 @@ int runWindow(const WindowOptions& options) {
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++framesRendered;
       // 7e. Screenshots: requested (script, F12), or --screenshot after --frames.
-      if (!state->screenshotRequest.empty()) {
-        saveScreenshot(window, state->screenshotRequest);
-        std::printf("penumbra: wrote %s\n", state->screenshotRequest.c_str());
-        state->status = "screenshot " + state->screenshotRequest;
-        state->screenshotRequest.clear();
+      if (!state->script.screenshotRequest.empty()) {
+        saveScreenshot(window, state->script.screenshotRequest);
+        std::printf("penumbra: wrote %s\n", state->script.screenshotRequest.c_str());
+        state->status = "screenshot " + state->script.screenshotRequest;
+        state->script.screenshotRequest.clear();
       }
       // (An interactive lesson waits for the student: its screenshot shows where it waits.)
       if ((!runner || options.interactiveLesson) && !options.screenshot.empty() &&

@@ -80,19 +80,19 @@ TEST(WindowUnits, LightAnglesRoundTripAndKeepTheFrameOrthonormal) {
 namespace {
 // A state on the cube scene without GL (adoptScene would build GPU buffers).
 void useCube(UiState& state) {
-  state.scene = makeBuiltinScene("cube");
-  state.sceneSource = "cube";
+  state.session.scene = makeBuiltinScene("cube");
+  state.session.sceneSource = "cube";
 }
 }  // namespace
 
 TEST(WindowUnits, SettingsRoundTripEveryParameterCameraLightAndEye) {
   UiState original;
   useCube(original);
-  original.scene.camera.position = {1.25f, 2.5f, 7.125f};
-  original.scene.light.width = 0.75f;
-  original.eye = {false, 320, 200};
-  for (const std::string& key : original.pipeline.paramKeys()) {
-    Param& param = original.pipeline.param(key);
+  original.session.scene.camera.position = {1.25f, 2.5f, 7.125f};
+  original.session.scene.light.width = 0.75f;
+  original.session.eye = {false, 320, 200};
+  for (const std::string& key : original.session.pipeline.paramKeys()) {
+    Param& param = original.session.pipeline.param(key);
     param.value = param.type == Param::Type::Float ? param.min + (param.max - param.min) / 3.0
                                                    : param.max;  // exactly representable
   }
@@ -100,12 +100,12 @@ TEST(WindowUnits, SettingsRoundTripEveryParameterCameraLightAndEye) {
   UiState loaded;
   useCube(loaded);
   ASSERT_EQ(applySettingsJson(loaded, json::parse(saved.dump())), "");
-  for (const std::string& key : original.pipeline.paramKeys())
-    EXPECT_EQ(loaded.pipeline.param(key).value, original.pipeline.param(key).value) << key;
-  EXPECT_EQ(loaded.scene.camera.position, original.scene.camera.position);
-  EXPECT_EQ(loaded.scene.light.width, 0.75f);
-  EXPECT_FALSE(loaded.eye.fitView);
-  EXPECT_EQ(loaded.eye.width, 320);
+  for (const std::string& key : original.session.pipeline.paramKeys())
+    EXPECT_EQ(loaded.session.pipeline.param(key).value, original.session.pipeline.param(key).value) << key;
+  EXPECT_EQ(loaded.session.scene.camera.position, original.session.scene.camera.position);
+  EXPECT_EQ(loaded.session.scene.light.width, 0.75f);
+  EXPECT_FALSE(loaded.session.eye.fitView);
+  EXPECT_EQ(loaded.session.eye.width, 320);
   EXPECT_EQ(settingsJson(loaded), saved);
 }
 
@@ -156,8 +156,8 @@ TEST(WindowUnits, ExportNamesSaySceneOutputAndChangedParameters) {
   UiState state;
   useCube(state);
   EXPECT_EQ(exportStem(state, "hard_shadow.visibility", 0), "cube_hard_shadow.visibility");
-  ASSERT_EQ(state.setParameter("hard_shadow.offset", "0.02"), "");
-  ASSERT_EQ(state.setParameter("light.resolution", "256"), "");  // another stage's
+  ASSERT_EQ(state.session.setParameter("hard_shadow.offset", "0.02"), "");
+  ASSERT_EQ(state.session.setParameter("light.resolution", "256"), "");  // another stage's
   const std::string stem = exportStem(state, "hard_shadow.visibility", 0);
   EXPECT_EQ(stem, "cube_hard_shadow.visibility_offset-0.02");
 }
@@ -272,7 +272,7 @@ TEST(WindowUnits, InteractiveLessonWaitsForNextBeforeEachSayAfterTheFirst) {
   EXPECT_EQ(state.lesson.step, 1);
   EXPECT_EQ(state.lesson.steps, 3);
   EXPECT_TRUE(state.lesson.waiting);
-  EXPECT_EQ(state.pipeline.param("trace.rays").asInt(), 3);  // the step's own actions ran
+  EXPECT_EQ(state.session.pipeline.param("trace.rays").asInt(), 3);  // the step's own actions ran
   state.lesson.next = true;
   EXPECT_EQ(runner.step(state), ScriptRunner::Step::Running);
   EXPECT_EQ(state.lesson.text, "two");
@@ -303,9 +303,9 @@ TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
     ScriptRunner runner(parsed(script), ScriptOptions{false, override});
     std::vector<std::string> requested;
     for (int i = 0; i < 12 && runner.step(state) == ScriptRunner::Step::Running; ++i)
-      if (!state.screenshotRequest.empty()) {
-        requested.push_back(state.screenshotRequest);
-        state.screenshotRequest.clear();
+      if (!state.script.screenshotRequest.empty()) {
+        requested.push_back(state.script.screenshotRequest);
+        state.script.screenshotRequest.clear();
       }
     ASSERT_EQ(requested.size(), 2u) << override;
     EXPECT_EQ(requested[0], (override.empty() ? "from_script" : override) + "/a.png");

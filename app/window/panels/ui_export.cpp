@@ -28,21 +28,21 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 
 // 1. Scene, output, level, eye size, then the producing stage's changed parameters.
 std::string exportStem(const UiState& state, const std::string& stageDotOutput, int layer) {
-  std::string stem = state.scene.name + "_" + stageDotOutput;
-  if (state.frame && state.frame->has(stageDotOutput) &&
-      state.frame->texture(stageDotOutput).isArray())
+  std::string stem = state.session.scene.name + "_" + stageDotOutput;
+  if (state.session.frame && state.session.frame->has(stageDotOutput) &&
+      state.session.frame->texture(stageDotOutput).isArray())
     stem += "_L" + std::to_string(layer);
-  if (state.frame) {
+  if (state.session.frame) {
     char size[40];
-    std::snprintf(size, sizeof size, "_%dx%d", state.frame->eyeWidth, state.frame->eyeHeight);
+    std::snprintf(size, sizeof size, "_%dx%d", state.session.frame->eyeWidth, state.session.frame->eyeHeight);
     stem += size;
   }
   const std::string stageName = stageDotOutput.substr(0, stageDotOutput.find('.'));
-  for (const auto& stage : state.pipeline.stages()) {
+  for (const auto& stage : state.session.pipeline.stages()) {
     if (stage->name() != stageName) continue;
     for (const Param& param : stage->params()) {
-      auto declared = state.parameterDefaults.find(stageName + "." + param.key);
-      if (declared != state.parameterDefaults.end() && declared->second == param.value) continue;
+      auto declared = state.session.parameterDefaults.find(stageName + "." + param.key);
+      if (declared != state.session.parameterDefaults.end() && declared->second == param.value) continue;
       stem += "_" + param.key + "-" + param.toString();
     }
   }
@@ -54,7 +54,7 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
                             ExportKind kind) {
   std::string problem;
   const GlTexture* shown = shownTexture(state, view, &problem);
-  if (!state.outputOf(view.output) || !shown)
+  if (!state.session.outputOf(view.output) || !shown)
     return "export: " + (problem.empty() ? "'" + view.output + "' has not been written this frame" : problem);
   try {
     const GlTexture& texture = *shown;
@@ -64,11 +64,11 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
     else if (endsWith(target, ".exr")) exr = target;
     else {
       const fs::path directory = target.empty() ? fs::path(kDefaultExportDirectory) : fs::path(target);
-      const GlTexture& source = state.frame->texture(view.output);  // a difference is 2D
+      const GlTexture& source = state.session.frame->texture(view.output);  // a difference is 2D
       const int sourceLayer = source.isArray() ? std::clamp(view.settings.layer, 0, source.layers() - 1) : 0;
       std::string stem = exportStem(state, view.output, sourceLayer);
       if (!view.minus.empty())  // "cube_light_layers.far-minus-light_layers.near_..."
-        stem.insert(state.scene.name.size() + 1 + view.output.size(),
+        stem.insert(state.session.scene.name.size() + 1 + view.output.size(),
                     "-minus-" + view.minus + (view.clipNegative ? "-clipped" : ""));
       if (kind != ExportKind::Exr) png = directory / (stem + ".png");
       if (kind != ExportKind::Png) exr = directory / (stem + ".exr");
@@ -94,16 +94,16 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
 
 // 3. Everything, through the same function as `penumbra export`.
 std::string exportAllStages(UiState& state, const std::string& directory) {
-  if (!state.frame) return "export: no frame yet";
+  if (!state.session.frame) return "export: no frame yet";
   // The window runs only what it shows: every output first (the next shown run drops them).
-  if (std::string problem = state.runAll(); !problem.empty()) return "export failed: " + problem;
+  if (std::string problem = state.session.runAll(); !problem.empty()) return "export failed: " + problem;
   fs::path target = directory;
   if (target.empty())
     target = fs::path(kDefaultExportDirectory) /
-             sanitized(state.scene.name + "_all_" + std::to_string(state.frame->eyeWidth) + "x" +
-                       std::to_string(state.frame->eyeHeight));
+             sanitized(state.session.scene.name + "_all_" + std::to_string(state.session.frame->eyeWidth) + "x" +
+                       std::to_string(state.session.frame->eyeHeight));
   try {
-    const auto written = exportFrame(target.string(), *state.frame, state.pipeline, state.renderer);
+    const auto written = exportFrame(target.string(), *state.session.frame, state.session.pipeline, state.session.renderer);
     return "wrote " + std::to_string(written.size()) + " files into " + fs::absolute(target).string();
   } catch (const std::exception& error) {
     return std::string("export failed: ") + error.what();

@@ -25,18 +25,18 @@ const std::vector<PickRow>& pickRows(const UiState& state) {
   static std::vector<PickRow> rows;
   static int cachedRuns = -1;
   static glm::ivec2 cachedPick{-1}, cachedSpace{-1};
-  if (cachedRuns == state.pipelineRuns && cachedPick == *state.pick && cachedSpace == state.pickSpace)
+  if (cachedRuns == state.session.pipelineRuns && cachedPick == *state.views.pick && cachedSpace == state.views.pickSpace)
     return rows;
-  cachedRuns = state.pipelineRuns;
-  cachedPick = *state.pick;
-  cachedSpace = state.pickSpace;
+  cachedRuns = state.session.pipelineRuns;
+  cachedPick = *state.views.pick;
+  cachedSpace = state.views.pickSpace;
   rows.clear();
-  for (const auto& stage : state.pipeline.stages())
+  for (const auto& stage : state.session.pipeline.stages())
     for (const Output& output : stage->outputs()) {
       const std::string key = stage->name() + "." + output.name;
-      if (!state.frame->has(key)) continue;
-      const GlTexture& texture = state.frame->texture(key);
-      if (texture.width() != state.pickSpace.x || texture.height() != state.pickSpace.y) continue;
+      if (!state.session.frame->has(key)) continue;
+      const GlTexture& texture = state.session.frame->texture(key);
+      if (texture.width() != state.views.pickSpace.x || texture.height() != state.views.pickSpace.y) continue;
       for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer)
         rows.push_back({texture.isArray() ? key + " L" + std::to_string(layer) : key, output.channels,
                         readTexel(texture, cachedPick.x, cachedPick.y, layer),
@@ -46,12 +46,12 @@ const std::vector<PickRow>& pickRows(const UiState& state) {
 }
 
 void drawPick(const UiState& state) {
-  if (!state.pick || !state.frame) {
+  if (!state.views.pick || !state.session.frame) {
     ImGui::TextDisabled("Click a view to pick a texel;\narrow keys move the pick.");
     return;
   }
-  ImGui::Text("(%d, %d) in %dx%d", state.pick->x, state.pickSpace.y - 1 - state.pick->y,
-              state.pickSpace.x, state.pickSpace.y);
+  ImGui::Text("(%d, %d) in %dx%d", state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y,
+              state.views.pickSpace.x, state.views.pickSpace.y);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Image coordinates: row 0 at the top.");
   if (!ImGui::BeginTable("pick", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
   ImGui::TableSetupColumn("output", ImGuiTableColumnFlags_WidthFixed,
@@ -78,7 +78,7 @@ void drawPick(const UiState& state) {
 // 2. Bars: per stage, the median over runs with identical settings (the pipeline starts a
 //    new series whenever a parameter, the scene or the eye size changes), and the last run.
 void drawTimings(const UiState& state) {
-  const std::vector<StageTime>& times = state.pipeline.lastTimes();
+  const std::vector<StageTime>& times = state.session.pipeline.lastTimes();
   double slowest = 1e-3;
   for (const StageTime& time : times) slowest = std::max(slowest, time.ran ? time.median : 0.0);
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -96,30 +96,30 @@ void drawTimings(const UiState& state) {
     else ImGui::TextDisabled("not run");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timingText(time).c_str());
   }
-  const double total = state.medianPipelineMs();
+  const double total = state.session.medianPipelineMs();
   ImGui::Text("pipeline %.1f ms (%.1f runs/s), last run %.1f ms", total,
-              total > 0 ? 1000.0 / total : 0.0, state.lastPipelineMs());
-  ImGui::TextDisabled("median of %d run(s) with these settings;\nglFinish timing", state.medianRuns());
+              total > 0 ? 1000.0 / total : 0.0, state.session.lastPipelineMs());
+  ImGui::TextDisabled("median of %d run(s) with these settings;\nglFinish timing", state.session.medianRuns());
 }
 
 // 3. Counters the stages reported this frame.
 void drawCounters(const UiState& state) {
-  if (!state.frame || state.frame->counters.empty()) {
+  if (!state.session.frame || state.session.frame->counters.empty()) {
     ImGui::TextDisabled("No counters this frame.");
     return;
   }
-  for (const auto& [name, value] : state.frame->counters) ImGui::Text("%s  %.6g", name.c_str(), value);
+  for (const auto& [name, value] : state.session.frame->counters) ImGui::Text("%s  %.6g", name.c_str(), value);
 }
 
 // 4. The ray trace hook: the picked eye pixel, ray i of n x n.
 void drawRayTrace(UiState& state) {
-  state.overlays.clear();
+  state.views.overlays.clear();
   if (!rayTraceSource()) {
     ImGui::TextDisabled("No trace source installed (ui_trace_panel.h).");
     return;
   }
-  if (!state.pick || !state.frame ||
-      state.pickSpace != glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight)) {
+  if (!state.views.pick || !state.session.frame ||
+      state.views.pickSpace != glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight)) {
     ImGui::TextDisabled("Pick a pixel in an eye-sized view.");
     return;
   }
@@ -127,23 +127,23 @@ void drawRayTrace(UiState& state) {
   static RayTraceInfo trace;
   static int cachedRuns = -1, cachedRay = -1;
   static glm::ivec2 cachedPick{-1};
-  if (cachedRuns != state.pipelineRuns || cachedPick != *state.pick || cachedRay != state.selectedRay) {
-    trace = rayTraceSource()(*state.frame, *state.pick, state.selectedRay);
-    cachedRuns = state.pipelineRuns;
-    cachedPick = *state.pick;
-    cachedRay = state.selectedRay;
+  if (cachedRuns != state.session.pipelineRuns || cachedPick != *state.views.pick || cachedRay != state.views.selectedRay) {
+    trace = rayTraceSource()(*state.session.frame, *state.views.pick, state.views.selectedRay);
+    cachedRuns = state.session.pipelineRuns;
+    cachedPick = *state.views.pick;
+    cachedRay = state.views.selectedRay;
   }
   if (trace.raysPerPixel > 1) {
     ImGui::SetNextItemWidth(-60);
-    ImGui::SliderInt("ray", &state.selectedRay, 0, trace.raysPerPixel - 1);
+    ImGui::SliderInt("ray", &state.views.selectedRay, 0, trace.raysPerPixel - 1);
   }
   glm::ivec2 lightMap{0};
-  const std::string nearLayer = recordingInput(state.pipeline, "near");
-  if (state.frame->has(nearLayer))
-    lightMap = {state.frame->texture(nearLayer).width(), state.frame->texture(nearLayer).height()};
-  const std::string levels = recordingInput(state.pipeline, "levels");
+  const std::string nearLayer = recordingInput(state.session.pipeline, "near");
+  if (state.session.frame->has(nearLayer))
+    lightMap = {state.session.frame->texture(nearLayer).width(), state.session.frame->texture(nearLayer).height()};
+  const std::string levels = recordingInput(state.session.pipeline, "levels");
   if (!levels.empty() && ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels
-    if (ViewPanel* target = state.selectionTarget(); target && state.selectOutput(levels).empty()) {
+    if (ViewPanel* target = state.views.selectionTarget(); target && state.selectOutput(levels).empty()) {
       target->frameOverlays = true;
       int finest = 1 << 30;  // the finest level the ray visited (linear samples: level 0)
       for (const RayStepRecord& step : trace.steps)
@@ -155,19 +155,19 @@ void drawRayTrace(UiState& state) {
     ImGui::SetTooltip("Show %s in the active view, zoomed onto this ray's visited\n"
                       "windows (hierarchical) or samples (linear).", levels.c_str());
   ImGui::SameLine();
-  ImGui::Checkbox("own window", &state.traceWindow);
-  if (!state.traceWindow) {
-    drawRayTracePanel(trace, lightMap, state.overlays);
+  ImGui::Checkbox("own window", &state.views.traceWindow);
+  if (!state.views.traceWindow) {
+    drawRayTracePanel(trace, lightMap, state.views.overlays);
     return;
   }
   // A larger, movable window for the step table.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.28f, display.y * 0.5f}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({display.x * 0.4f, display.y * 0.46f}, ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Ray trace of the picked pixel", &state.traceWindow)) {
+  if (ImGui::Begin("Ray trace of the picked pixel", &state.views.traceWindow)) {
     ImGui::SetNextItemWidth(200);
-    ImGui::SliderInt("ray##window", &state.selectedRay, 0, std::max(trace.raysPerPixel - 1, 0));
-    drawRayTracePanel(trace, lightMap, state.overlays);
+    ImGui::SliderInt("ray##window", &state.views.selectedRay, 0, std::max(trace.raysPerPixel - 1, 0));
+    drawRayTracePanel(trace, lightMap, state.views.overlays);
   }
   ImGui::End();
 }
@@ -177,18 +177,18 @@ void drawRayTrace(UiState& state) {
 // 5. Sections, top to bottom.
 void drawInspector(UiState& state) {
   if (ImGui::CollapsingHeader("Picked texel", ImGuiTreeNodeFlags_DefaultOpen)) drawPick(state);
-  for (int v = 0; v < (state.twoViews ? 2 : 1); ++v) {
-    const ViewPanel& view = state.views[v];
-    const GlTexture* texture = state.frame && state.frame->has(view.output) ? &state.frame->texture(view.output) : nullptr;
+  for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v) {
+    const ViewPanel& view = state.views.panels[v];
+    const GlTexture* texture = state.session.frame && state.session.frame->has(view.output) ? &state.session.frame->texture(view.output) : nullptr;
     if (texture && view.settings.colormap == Colormap::Categorical &&
         singleChannel(view.settings, texture->channelCount()) >= 0 &&
         ImGui::CollapsingHeader(v == 0 ? "Categories (view A)" : "Categories (view B)",
                                 ImGuiTreeNodeFlags_DefaultOpen))
       drawCategoryLegend(state, view);
   }
-  state.traceShown = ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen);
-  if (state.traceShown) drawRayTrace(state);
-  else state.overlays.clear();
+  state.views.traceShown = ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen);
+  if (state.views.traceShown) drawRayTrace(state);
+  else state.views.overlays.clear();
   if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) drawTimings(state);
   if (ImGui::CollapsingHeader("Counters", ImGuiTreeNodeFlags_DefaultOpen)) drawCounters(state);
 }

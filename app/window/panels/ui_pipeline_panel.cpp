@@ -16,11 +16,11 @@ namespace {
 void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   const std::string key = stage.name() + "." + output.name;
   std::string shownIn;
-  for (int v = 0; v < (state.twoViews ? 2 : 1); ++v)
-    if (state.views[v].output == key) shownIn += v == 0 ? "[A]" : "[B]";
+  for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v)
+    if (state.views.panels[v].output == key) shownIn += v == 0 ? "[A]" : "[B]";
   std::string size = "not written";
-  if (state.frame && state.frame->has(key)) {
-    const GlTexture& texture = state.frame->texture(key);
+  if (state.session.frame && state.session.frame->has(key)) {
+    const GlTexture& texture = state.session.frame->texture(key);
     char text[64];
     std::snprintf(text, sizeof text, "%dx%d%s", texture.width(), texture.height(),
                   texture.isArray() ? (" x" + std::to_string(texture.layers())).c_str() : "");
@@ -29,11 +29,11 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   const std::string label = "  " + output.name + "  " + shownIn + "###" + key;
   if (ImGui::Selectable(label.c_str(), !shownIn.empty())) {
     if (ImGui::GetIO().KeyCtrl) {  // Ctrl+click: the other view, opening it if needed
-      state.twoViews = true;
-      state.activeView = 1 - state.activeView;
+      state.views.twoViews = true;
+      state.views.activeView = 1 - state.views.activeView;
     }
     if (std::string problem = state.selectOutput(key); !problem.empty()) state.status = problem;
-    state.scrollToStage.clear();  // clicked here: it is in view already
+    state.views.scrollToStage.clear();  // clicked here: it is in view already
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\n%s, %s\nclick: show in the active view; Ctrl+click: the other view",
@@ -45,14 +45,14 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
 // 1b. An input slot and the producer wired to it (the graph, as the registry built it):
 //     click to show the producer's output.
 void drawInput(UiState& state, const Stage& stage, const Input& input) {
-  const std::string source = state.pipeline.source(stage.name(), input.name);
+  const std::string source = state.session.pipeline.source(stage.name(), input.name);
   std::string label = "  " + input.name + " <- " + (source.empty() ? "(none)" : source);
   if (input.isChoice()) label += "  (" + input.choiceParam + ")";
-  const bool texture = !source.empty() && state.outputOf(source) && !state.outputOf(source)->isBuffer();
+  const bool texture = !source.empty() && state.session.outputOf(source) && !state.session.outputOf(source)->isBuffer();
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   if (ImGui::Selectable((label + "###in_" + stage.name() + "." + input.name).c_str(), false) && texture) {
     if (std::string problem = state.selectOutput(source); !problem.empty()) state.status = problem;
-    state.scrollToStage.clear();
+    state.views.scrollToStage.clear();
   }
   ImGui::PopStyleColor();
   if (ImGui::IsItemHovered())
@@ -63,13 +63,13 @@ void drawInput(UiState& state, const Stage& stage, const Input& input) {
 
 // 1c. Stage-specific view (issue 4): the light layers' difference, far - near, where covered.
 void drawThicknessLine(UiState& state) {
-  const LayerOutputs layers = layerOutputs(state.pipeline);
+  const LayerOutputs layers = layerOutputs(state.session.pipeline);
   bool shown = false;
-  for (int v = 0; v < (state.twoViews ? 2 : 1); ++v)
-    shown |= state.views[v].output == layers.far && state.views[v].minus == layers.near;
+  for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v)
+    shown |= state.views.panels[v].output == layers.far && state.views.panels[v].minus == layers.near;
   if (ImGui::Selectable("  thickness (far - near)###layers.thickness", shown)) {
     state.status = showThickness(state);
-    state.scrollToStage.clear();
+    state.views.scrollToStage.clear();
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The occluders' extent along the light: far - near where both layers are\n"
@@ -83,16 +83,16 @@ void drawStage(UiState& state, Stage& stage, int number) {
   char header[160];
   std::snprintf(header, sizeof header, "%d. %s###stage_%s", number, stage.name().c_str(),
                 stage.name().c_str());
-  const bool selected = state.selectedStage == stage.name();
+  const bool selected = state.views.selectedStage == stage.name();
   if (selected) ImGui::PushStyleColor(ImGuiCol_Header, ImGui::GetStyleColorVec4(ImGuiCol_HeaderActive));
-  if (state.scrollToStage == stage.name()) {  // selected elsewhere: show it at the top
+  if (state.views.scrollToStage == stage.name()) {  // selected elsewhere: show it at the top
     ImGui::SetNextItemOpen(true);
     ImGui::SetScrollHereY(0.0f);
-    state.scrollToStage.clear();
+    state.views.scrollToStage.clear();
   }
   const bool open = ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen);
   if (selected) ImGui::PopStyleColor();
-  const StageTime& time = state.pipeline.lastTime(stage.name());
+  const StageTime& time = state.session.pipeline.lastTime(stage.name());
   ImGui::SameLine(ImGui::GetContentRegionMax().x - 64);
   if (time.ran) ImGui::Text("%6.1f ms", time.median);
   else ImGui::TextDisabled(" not run");
@@ -112,7 +112,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();
     }
   ImGui::PopItemWidth();
-  if (&stage == groundTruthStage(state.pipeline)) drawReferenceProgress(state);  // issue 5
+  if (&stage == groundTruthStage(state.session.pipeline)) drawReferenceProgress(state);  // issue 5
   ImGui::PopID();
   ImGui::Spacing();
 }
@@ -122,5 +122,5 @@ void drawStage(UiState& state, Stage& stage, int number) {
 // 3. All stages in pipeline order.
 void drawPipelinePanel(UiState& state) {
   int number = 1;
-  for (const auto& stage : state.pipeline.stages()) drawStage(state, *stage, number++);
+  for (const auto& stage : state.session.pipeline.stages()) drawStage(state, *stage, number++);
 }

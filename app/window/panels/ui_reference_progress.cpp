@@ -9,23 +9,23 @@
 #include "window/ui_state.h"
 
 std::string compareWithReference(UiState& state) {
-  const Stage* truth = groundTruthStage(state.pipeline);
-  const std::string comparison = comparisonOutput(state.pipeline);
+  const Stage* truth = groundTruthStage(state.session.pipeline);
+  const std::string comparison = comparisonOutput(state.session.pipeline);
   if (!truth || comparison.empty()) return "no ground truth and comparison stage registered";
-  if (std::string problem = state.setParameter(truth->name() + ".enabled", "true"); !problem.empty())
+  if (std::string problem = state.session.setParameter(truth->name() + ".enabled", "true"); !problem.empty())
     return problem;
-  state.twoViews = true;
-  state.activeView = 1;
-  state.views[1].locked = false;
+  state.views.twoViews = true;
+  state.views.activeView = 1;
+  state.views.panels[1].locked = false;
   std::string problem = state.selectOutput(comparison);
-  state.activeView = 0;  // the method stays where it was, in view A
+  state.views.activeView = 0;  // the method stays where it was, in view A
   return problem;
 }
 
 void drawReferenceProgress(UiState& state) {
   if (ImGui::Button("compare with reference")) {
     const std::string problem = compareWithReference(state);
-    state.status = problem.empty() ? "ground truth on; view B shows " + comparisonOutput(state.pipeline) : problem;
+    state.status = problem.empty() ? "ground truth on; view B shows " + comparisonOutput(state.session.pipeline) : problem;
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Enables the exact reference and shows the signed error (method minus\n"

@@ -18,14 +18,14 @@ namespace {
 void drawScenePicker(UiState& state) {
   static std::string path;
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-  if (ImGui::BeginCombo("scene", state.scene.name.c_str())) {
+  if (ImGui::BeginCombo("scene", state.session.scene.name.c_str())) {
     for (const std::string& name : builtinSceneNames())
-      if (ImGui::Selectable(name.c_str(), name == state.sceneSource))
+      if (ImGui::Selectable(name.c_str(), name == state.session.sceneSource))
         if (std::string problem = state.loadScene(name); !problem.empty()) state.status = problem;
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  ImGui::TextDisabled("%zu tris", state.scene.triangleCount());
+  ImGui::TextDisabled("%zu tris", state.session.scene.triangleCount());
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 50);
   const bool entered = ImGui::InputTextWithHint("##scenepath", ".json / .gltf / .glb path", &path,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
@@ -38,15 +38,15 @@ void drawScenePicker(UiState& state) {
 void drawEyeSize(UiState& state) {
   static const int sizes[][2] = {{320, 240}, {640, 480}, {512, 512}, {1024, 768}, {1280, 720}};
   char current[32];
-  std::snprintf(current, sizeof current, "%dx%d", state.eye.width, state.eye.height);
+  std::snprintf(current, sizeof current, "%dx%d", state.session.eye.width, state.session.eye.height);
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-  if (ImGui::BeginCombo("eye size", state.eye.fitView ? "fit view" : current)) {
-    if (ImGui::Selectable("fit view", state.eye.fitView)) state.eye.fitView = true;
+  if (ImGui::BeginCombo("eye size", state.session.eye.fitView ? "fit view" : current)) {
+    if (ImGui::Selectable("fit view", state.session.eye.fitView)) state.session.eye.fitView = true;
     for (const auto& size : sizes) {
       std::snprintf(current, sizeof current, "%dx%d", size[0], size[1]);
-      if (ImGui::Selectable(current, !state.eye.fitView && state.eye.width == size[0] &&
-                                         state.eye.height == size[1]))
-        state.eye = {false, size[0], size[1]};
+      if (ImGui::Selectable(current, !state.session.eye.fitView && state.session.eye.width == size[0] &&
+                                         state.session.eye.height == size[1]))
+        state.session.eye = {false, size[0], size[1]};
     }
     ImGui::EndCombo();
   }
@@ -56,8 +56,8 @@ void drawEyeSize(UiState& state) {
 
 // 3. Camera and light: numbers and sliders (the mouse in a view orbits the camera too).
 void drawCameraAndLight(UiState& state) {
-  Camera& camera = state.scene.camera;
-  AreaLight& light = state.scene.light;
+  Camera& camera = state.session.scene.camera;
+  AreaLight& light = state.session.scene.light;
   const Camera cameraBefore = camera;
   const AreaLight lightBefore = light;
   bool changed = false;
@@ -82,15 +82,15 @@ void drawCameraAndLight(UiState& state) {
              "Alt+wheel over a scene view scales it (Shift: width only, Ctrl: height only).");
   light.width = std::max(light.width, 1e-3f);
   light.height = std::max(light.height, 1e-3f);
-  if (changed && !validateScene(state.scene).empty()) {  // never hand the pipeline a broken scene
+  if (changed && !validateScene(state.session.scene).empty()) {  // never hand the pipeline a broken scene
     camera = cameraBefore;
     light = lightBefore;
   }
-  if (ImGui::Button("Reset camera")) camera = state.initialCamera;
+  if (ImGui::Button("Reset camera")) camera = state.session.initialCamera;
   ImGui::SameLine();
-  if (ImGui::Button("Reset light")) light = state.initialLight;
+  if (ImGui::Button("Reset light")) light = state.session.initialLight;
   ImGui::SameLine();
-  ImGui::Checkbox("outline", &state.showLight);
+  ImGui::Checkbox("outline", &state.views.showLight);
   helpMarker("Draw the light rectangle (yellow), its centre and its axis down to the ground "
              "over the scene views; hold Alt over a view to drag it.");
 }
@@ -117,7 +117,7 @@ void drawTools(UiState& state) {
              "`penumbra export` with these settings.");
   if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();
   ImGui::SameLine();
-  ImGui::Checkbox("every frame", &state.runEveryFrame);
+  ImGui::Checkbox("every frame", &state.session.runEveryFrame);
   helpMarker("Re-run the pipeline every frame (for timing). Off: only when something changes.");
 }
 

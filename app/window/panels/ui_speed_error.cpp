@@ -278,7 +278,7 @@ void drawSpeedErrorPanel(UiState& state, float x, float y, float width) {
     int match = -1;
     std::string current = "?";
     try {
-      const PipelineConfig config = pipelineConfigOf(state.pipeline);
+      const PipelineConfig config = pipelineConfigOf(state.session.pipeline);
       match = matchingPoint(points, config);
       char text[160];
       std::snprintf(text, sizeof text, "%s %s layers %dx%d map %d%s%s", config.search.c_str(),

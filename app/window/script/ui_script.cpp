@@ -119,9 +119,9 @@ ScriptRunner::ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions opti
 
 ScriptRunner::Step ScriptRunner::step(UiState& state) {
   if (!error_.empty()) return Step::Failed;
-  if (!state.syntheticInput.empty()) return Step::Running;  // a drag or wheel still playing
+  if (!state.script.syntheticInput.empty()) return Step::Running;  // a drag or wheel still playing
   if (!pendingScreenshot_.empty()) {
-    state.screenshotRequest = pendingScreenshot_;
+    state.script.screenshotRequest = pendingScreenshot_;
     pendingScreenshot_.clear();
     return Step::Running;
   }
@@ -142,7 +142,7 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
     }
     if (action.name == "screenshot") return Step::Running;
     // The next action sees the re-run pipeline and the new layout.
-    if (!state.syntheticInput.empty() || waitForNext(state)) return Step::Running;
+    if (!state.script.syntheticInput.empty() || waitForNext(state)) return Step::Running;
     static const std::set<std::string> layoutChanging = {
         "select_output", "select_stage", "two_views", "view", "help", "trace_window",
         "camera_moving", "difference", "thickness", "say", "lesson"};
@@ -154,36 +154,36 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
 namespace {
 
 const GlTexture* activeTexture(UiState& state) {
-  return shownTexture(state, state.views[state.activeView]);
+  return shownTexture(state, state.views.panels[state.views.activeView]);
 }
 
 // The pick's raw values in every output of its size, and the trace panel's step count.
 void printPick(const UiState& state, const std::string& label) {
-  if (!state.pick) {
+  if (!state.views.pick) {
     std::printf("pick %s: none\n", label.c_str());
     return;
   }
-  const glm::ivec2 pick = *state.pick;
-  std::printf("pick %s: (%d, %d) in %dx%d\n", label.c_str(), pick.x, state.pickSpace.y - 1 - pick.y,
-              state.pickSpace.x, state.pickSpace.y);
-  for (const std::string& key : state.outputKeys()) {
-    if (!state.frame->has(key)) continue;
-    const GlTexture& texture = state.frame->texture(key);
-    if (texture.width() != state.pickSpace.x || texture.height() != state.pickSpace.y) continue;
+  const glm::ivec2 pick = *state.views.pick;
+  std::printf("pick %s: (%d, %d) in %dx%d\n", label.c_str(), pick.x, state.views.pickSpace.y - 1 - pick.y,
+              state.views.pickSpace.x, state.views.pickSpace.y);
+  for (const std::string& key : state.session.outputKeys()) {
+    if (!state.session.frame->has(key)) continue;
+    const GlTexture& texture = state.session.frame->texture(key);
+    if (texture.width() != state.views.pickSpace.x || texture.height() != state.views.pickSpace.y) continue;
     const auto texel = readTexel(texture, pick.x, pick.y, 0);
     std::printf("  %s", key.c_str());
     for (int c = 0; c < texture.channelCount(); ++c) std::printf(" %.9g", texel[size_t(c)]);
     std::printf("\n");
   }
   if (rayTraceSource()) {
-    const RayTraceInfo trace = rayTraceSource()(*state.frame, pick, state.selectedRay);
+    const RayTraceInfo trace = rayTraceSource()(*state.session.frame, pick, state.views.selectedRay);
     int samples = 0, refinements = 0;
     for (const RayStepRecord& step : trace.steps) {
       samples += step.point && !step.refinement;
       refinements += step.refinement;
     }
     std::printf("  trace steps: %zu (ray %d of %d) %s\n  trace points: %d samples, %d refinements\n",
-                trace.steps.size(), state.selectedRay, trace.raysPerPixel, trace.result.c_str(),
+                trace.steps.size(), state.views.selectedRay, trace.raysPerPixel, trace.result.c_str(),
                 samples, refinements);
   }
   std::fflush(stdout);
@@ -193,10 +193,10 @@ void printPick(const UiState& state, const std::string& label) {
 void printTiming(const UiState& state, const std::string& label) {
   std::printf("timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %d runs, last "
               "run %.2f ms, UI %.1f fps\n",
-              label.c_str(), state.frame->eyeWidth, state.frame->eyeHeight, state.medianPipelineMs(),
-              state.medianPipelineMs() > 0 ? 1000.0 / state.medianPipelineMs() : 0.0,
-              state.medianRuns(), state.lastPipelineMs(), state.framesPerSecond());
-  for (const StageTime& time : state.pipeline.lastTimes())
+              label.c_str(), state.session.frame->eyeWidth, state.session.frame->eyeHeight, state.session.medianPipelineMs(),
+              state.session.medianPipelineMs() > 0 ? 1000.0 / state.session.medianPipelineMs() : 0.0,
+              state.session.medianRuns(), state.session.lastPipelineMs(), state.session.framesPerSecond());
+  for (const StageTime& time : state.session.pipeline.lastTimes())
     if (time.ran)
       std::printf("  %-14s %8.2f ms (last %.2f ms, %d runs)\n", time.stage.c_str(), time.median,
                   time.milliseconds, time.runs);
@@ -211,13 +211,13 @@ void printTiming(const UiState& state, const std::string& label) {
 std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   const json& a = action.argument;
   const std::string& name = action.name;
-  ViewPanel& view = state.views[state.activeView];
+  ViewPanel& view = state.views.panels[state.views.activeView];
   if (name == "select_stage") return state.selectStage(a.get<std::string>());
   if (name == "select_output") return state.selectOutput(a.get<std::string>());
   if (name == "set") {
     for (const auto& [key, value] : a.items()) {
       const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
-      if (std::string problem = state.setParameter(key, text); !problem.empty()) return problem;
+      if (std::string problem = state.session.setParameter(key, text); !problem.empty()) return problem;
     }
     return "";
   }
@@ -225,11 +225,11 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
     const GlTexture* texture = activeTexture(state);
     if (!texture) return "the active view shows no texture";
     // Image coordinates (row 0 at the top) -> GL texel (row 0 at the bottom).
-    state.setPick({a[0].get<int>(), texture->height() - 1 - a[1].get<int>()},
+    state.views.setPick({a[0].get<int>(), texture->height() - 1 - a[1].get<int>()},
                   {texture->width(), texture->height()});
     return "";
   }
-  if (name == "select_ray") { state.selectedRay = a.get<int>(); return ""; }
+  if (name == "select_ray") { state.views.selectedRay = a.get<int>(); return ""; }
   if (name == "wait") { waitFrames_ = a.get<int>(); return ""; }
   if (name == "export_view" || name == "export_all") {
     const std::string target = resolved(a.get<std::string>());
@@ -241,21 +241,21 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   if (name == "screenshot") { pendingScreenshot_ = resolved(a.get<std::string>()); return ""; }
   if (name == "view") {
     if (a.get<int>() > 1) return "views are 0 (A) and 1 (B)";
-    state.activeView = a.get<int>();
-    state.twoViews = state.twoViews || state.activeView == 1;
+    state.views.activeView = a.get<int>();
+    state.views.twoViews = state.views.twoViews || state.views.activeView == 1;
     return "";
   }
   if (name == "two_views") {
-    state.twoViews = a.get<bool>();
-    if (!state.twoViews) state.activeView = 0;
+    state.views.twoViews = a.get<bool>();
+    if (!state.views.twoViews) state.views.activeView = 0;
     return "";
   }
   if (name == "lock") { view.locked = a.get<bool>(); return ""; }
   if (name == "eye_size") {
-    if (a == "fit") state.eye.fitView = true;
+    if (a == "fit") state.session.eye.fitView = true;
     else if (a[0].get<int>() < 16 || a[1].get<int>() < 16 || a[0].get<int>() > 8192 || a[1].get<int>() > 8192)
       return "sizes are in [16, 8192]";
-    else state.eye = {false, a[0].get<int>(), a[1].get<int>()};
+    else state.session.eye = {false, a[0].get<int>(), a[1].get<int>()};
     return "";
   }
   if (name == "scene") return state.loadScene(a.get<std::string>());
@@ -298,10 +298,10 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
       view.fitted = false;
       // Centre on what matters in this texture: the ray's visited windows, else the pick.
       const glm::ivec2 size = texture ? glm::ivec2(texture->width(), texture->height()) : glm::ivec2(0);
-      if (texture && state.pick && state.pickSpace == size)
-        view.transform.center = glm::vec2(*state.pick) + 0.5f;
+      if (texture && state.views.pick && state.views.pickSpace == size)
+        view.transform.center = glm::vec2(*state.views.pick) + 0.5f;
       glm::vec2 lo{1e30f}, hi{-1e30f};
-      for (const ViewOverlayShape& shape : state.overlays)
+      for (const ViewOverlayShape& shape : state.views.overlays)
         if (shape.space == size && !shape.line) {  // windows and dots
           lo = glm::min(lo, glm::min(shape.a, shape.b));
           hi = glm::max(hi, glm::max(shape.a, shape.b));
@@ -311,10 +311,10 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
     return "";
   }
   if (name == "camera_orbit") {
-    orbitCamera(state.scene.camera, glm::radians(a[0].get<float>()), glm::radians(a[1].get<float>()));
+    orbitCamera(state.session.scene.camera, glm::radians(a[0].get<float>()), glm::radians(a[1].get<float>()));
     return "";
   }
-  if (name == "camera_dolly") { dollyCamera(state.scene.camera, a.get<float>()); return ""; }
+  if (name == "camera_dolly") { dollyCamera(state.session.scene.camera, a.get<float>()); return ""; }
   if (name == "settings") return applySettingsJson(state, a);
   if (name == "load_settings") {
     bool ok = false;
@@ -327,11 +327,11 @@ std::string ScriptRunner::run(UiState& state, const ScriptAction& action) {
   }
   if (name == "reload_shaders") { state.reloadShaders(); return ""; }
   if (name == "help") { state.showHelp = a.get<bool>(); return ""; }
-  if (name == "run_every_frame") { state.runEveryFrame = a.get<bool>(); return ""; }
+  if (name == "run_every_frame") { state.session.runEveryFrame = a.get<bool>(); return ""; }
   if (name == "print_timing") { printTiming(state, a.get<std::string>()); return ""; }
   if (name == "print_pick") { printPick(state, a.get<std::string>()); return ""; }
-  if (name == "camera_moving") { state.scriptMovesCamera = a.get<bool>(); return ""; }
-  if (name == "trace_window") { state.traceWindow = a.get<bool>(); return ""; }
-  if (name == "mouse") { state.cursorRequest = glm::vec2(a[0].get<float>(), a[1].get<float>()); return ""; }
+  if (name == "camera_moving") { state.script.movesCamera = a.get<bool>(); return ""; }
+  if (name == "trace_window") { state.views.traceWindow = a.get<bool>(); return ""; }
+  if (name == "mouse") { state.script.cursorRequest = glm::vec2(a[0].get<float>(), a[1].get<float>()); return ""; }
   return runMore(state, action);
 }

@@ -55,21 +55,21 @@ std::string queueDrag(UiState& state, const json& a) {
   const int index = button == "left" ? 0 : button == "right" ? 1 : button == "middle" ? 2 : -1;
   if (index < 0) return "\"button\": expected left, right or middle";
   const int frames = std::clamp(a.value("frames", 6), 1, 240);
-  const ViewPanel& view = state.views[state.activeView];
+  const ViewPanel& view = state.views.panels[state.views.activeView];
   const glm::vec2 start = windowPoint(state, view, from), end = windowPoint(state, view, to);
   // Hover first (no jump counted as motion), press, move, release, then let go of the keys.
   SyntheticInput frame = held;
   frame.mouse = start;
-  state.syntheticInput.push_back(frame);
+  state.script.syntheticInput.push_back(frame);
   frame.buttons[size_t(index)] = true;
-  state.syntheticInput.push_back(frame);
+  state.script.syntheticInput.push_back(frame);
   for (int i = 1; i <= frames; ++i) {
     frame.mouse = start + (end - start) * (float(i) / float(frames));
-    state.syntheticInput.push_back(frame);
+    state.script.syntheticInput.push_back(frame);
   }
   frame.buttons[size_t(index)] = false;
-  state.syntheticInput.push_back(frame);
-  state.syntheticInput.push_back({frame.mouse});
+  state.script.syntheticInput.push_back(frame);
+  state.script.syntheticInput.push_back({frame.mouse});
   return "";
 }
 
@@ -79,11 +79,11 @@ std::string queueWheel(UiState& state, const json& a) {
     return "expected {\"at\": [x, y], \"amount\": n, \"keys\": ...} in image coordinates";
   SyntheticInput frame;
   if (std::string problem = readKeys(a, frame); !problem.empty()) return problem;
-  frame.mouse = windowPoint(state, state.views[state.activeView], at);
-  state.syntheticInput.push_back(frame);  // hover
+  frame.mouse = windowPoint(state, state.views.panels[state.views.activeView], at);
+  state.script.syntheticInput.push_back(frame);  // hover
   frame.wheel = a["amount"].get<float>();
-  state.syntheticInput.push_back(frame);
-  state.syntheticInput.push_back({frame.mouse});
+  state.script.syntheticInput.push_back(frame);
+  state.script.syntheticInput.push_back({frame.mouse});
   return "";
 }
 
@@ -108,16 +108,16 @@ bool ScriptRunner::waitForNext(UiState& state) {
 std::string ScriptRunner::runMore(UiState& state, const ScriptAction& action) {
   const json& a = action.argument;
   const std::string& name = action.name;
-  ViewPanel& view = state.views[state.activeView];
+  ViewPanel& view = state.views.panels[state.views.activeView];
   if (name == "drag") return queueDrag(state, a);
   if (name == "wheel") return queueWheel(state, a);
   if (name == "difference") return setViewDifference(state, view, a.get<std::string>());
   if (name == "thickness") return a.get<bool>() ? showThickness(state) : setViewDifference(state, view, "");
   if (name == "clip_negative") { view.clipNegative = a.get<bool>(); return ""; }
-  if (name == "show_light") { state.showLight = a.get<bool>(); return ""; }
+  if (name == "show_light") { state.views.showLight = a.get<bool>(); return ""; }
   if (name == "show_ray") {  // as the trace panel's "Show on N-buffer" button
-    ViewPanel* target = state.selectionTarget();
-    const std::string levels = recordingInput(state.pipeline, "levels");
+    ViewPanel* target = state.views.selectionTarget();
+    const std::string levels = recordingInput(state.session.pipeline, "levels");
     if (levels.empty()) return "no stage records rays over an N-buffer (levels slot)";
     if (std::string problem = state.selectOutput(levels); !problem.empty()) return problem;
     if (target) target->frameOverlays = a.get<bool>();

@@ -70,16 +70,16 @@ std::string parameterText(const json& value, const std::string& pointer) {
 json settingsJson(const UiState& state) {
   json root;
   root["penumbra_settings"] = 1;
-  root["scene"] = state.sceneSource;
-  root["eye"] = state.eye.fitView ? json("fit") : json::array({state.eye.width, state.eye.height});
-  const Camera& camera = state.scene.camera;
+  root["scene"] = state.session.sceneSource;
+  root["eye"] = state.session.eye.fitView ? json("fit") : json::array({state.session.eye.width, state.session.eye.height});
+  const Camera& camera = state.session.scene.camera;
   root["camera"] = {{"position", vec3Json(camera.position)}, {"target", vec3Json(camera.target)},
                     {"up", vec3Json(camera.up)}, {"fov_y_degrees", camera.fovYDegrees}};
-  const AreaLight& light = state.scene.light;
+  const AreaLight& light = state.session.scene.light;
   root["light"] = {{"center", vec3Json(light.center)}, {"forward", vec3Json(light.forward)},
                    {"up", vec3Json(light.up)}, {"width", light.width}, {"height", light.height}};
   json parameters = json::object();
-  for (const auto& stage : state.pipeline.stages())
+  for (const auto& stage : state.session.pipeline.stages())
     for (const Param& param : stage->params()) {
       const std::string key = stage->name() + "." + param.key;
       switch (param.type) {
@@ -105,7 +105,7 @@ std::string applySettingsJson(UiState& state, const json& root) {
         const std::string pointer = "/parameters/" + key;
         Param* declared = nullptr;
         try {
-          declared = &state.pipeline.param(key);
+          declared = &state.session.pipeline.param(key);
         } catch (const std::out_of_range& error) {
           fail(pointer, error.what());
         }
@@ -116,7 +116,7 @@ std::string applySettingsJson(UiState& state, const json& root) {
       }
     }
     // 2b. Eye size, camera, light.
-    EyeSize eye = state.eye;
+    EyeSize eye = state.session.eye;
     if (root.contains("eye")) {
       const json& value = root["eye"];
       if (value == "fit") eye.fitView = true;
@@ -126,13 +126,13 @@ std::string applySettingsJson(UiState& state, const json& root) {
         eye = {false, value[0].get<int>(), value[1].get<int>()};
       else fail("/eye", "expected \"fit\" or [width, height] in [16, 8192]");
     }
-    std::string scene = state.sceneSource;
+    std::string scene = state.session.sceneSource;
     if (root.contains("scene")) {
       if (!root["scene"].is_string()) fail("/scene", "expected a scene name or path");
       scene = root["scene"].get<std::string>();
     }
     std::optional<Scene> loaded;  // a new scene is adopted only if everything else is valid
-    if (scene != state.sceneSource) {
+    if (scene != state.session.sceneSource) {
       std::vector<std::string> warnings;
       try {
         loaded = loadScene(scene, warnings);
@@ -140,7 +140,7 @@ std::string applySettingsJson(UiState& state, const json& root) {
         fail("/scene", error.what());
       }
     }
-    Scene candidate = loaded ? *loaded : state.scene;
+    Scene candidate = loaded ? *loaded : state.session.scene;
     if (root.contains("camera")) {
       const json& c = root["camera"];
       onlyKeys(c, "/camera", {"position", "target", "up", "fov_y_degrees"});
@@ -164,9 +164,9 @@ std::string applySettingsJson(UiState& state, const json& root) {
     if (std::string problem = validateScene(candidate); !problem.empty()) fail("", problem);
     // 2c. Commit.
     if (loaded) state.adoptScene(std::move(*loaded), scene);
-    state.scene.camera = candidate.camera;
-    state.scene.light = candidate.light;
-    state.eye = eye;
+    state.session.scene.camera = candidate.camera;
+    state.session.scene.light = candidate.light;
+    state.session.eye = eye;
     for (auto& [declared, value] : parameters) *declared = value;
     return "";
   } catch (const SettingsError& error) {

@@ -27,20 +27,20 @@ std::map<int, long> categoryCounts(const std::vector<float>& values, int channel
 
 // 3. The legend, counted once per pipeline run and view content.
 void drawCategoryLegend(const UiState& state, const ViewPanel& view) {
-  if (!state.frame || !state.frame->has(view.output)) return;
-  const GlTexture& texture = state.frame->texture(view.output);
+  if (!state.session.frame || !state.session.frame->has(view.output)) return;
+  const GlTexture& texture = state.session.frame->texture(view.output);
   const int channel = singleChannel(view.settings, texture.channelCount());
   if (channel < 0 || view.settings.colormap != Colormap::Categorical) return;
   static std::map<int, long> counts;
   static std::string cachedKey;
-  const std::string key = std::to_string(state.pipelineRuns) + view.output + "/" +
+  const std::string key = std::to_string(state.session.pipelineRuns) + view.output + "/" +
                           std::to_string(view.settings.layer) + "/" + std::to_string(channel);
   if (key != cachedKey) {
     counts = categoryCounts(texture.readFloats(texture.isArray() ? view.settings.layer : 0),
                             texture.channelCount(), channel);
     cachedKey = key;
   }
-  const Output* output = state.outputOf(view.output);
+  const Output* output = state.session.outputOf(view.output);
   const auto names = categoryNamesFromDoc(output ? output->doc : "");
   const double total = double(texture.width()) * texture.height();
   ImGui::TextDisabled("%s", view.output.c_str());

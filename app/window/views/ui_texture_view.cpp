@@ -27,7 +27,7 @@ void texelRect(const ViewTransform& t, glm::ivec2 lo, glm::ivec2 hi, glm::vec2 o
 // 1a. Settings follow the output (before the toolbar draws them).
 void syncSettings(UiState& state, ViewPanel& view, const GlTexture& texture) {
   if (view.settingsFor != view.output) {
-    if (const Output* output = state.outputOf(view.output))
+    if (const Output* output = state.session.outputOf(view.output))
       view.settings = defaultViewSettings(*output, texture.channelCount());
     view.settingsFor = view.output;
     view.fitPending = true;
@@ -60,7 +60,7 @@ void placeImage(ViewPanel& view, const GlTexture& texture, glm::vec2 regionSize)
 // 1c. "Show on the N-buffer": the view zooms onto the ray's windows and points.
 void frameOverlays(const UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 regionSize) {
   glm::vec2 lo{1e30f}, hi{-1e30f};
-  for (const ViewOverlayShape& shape : state.overlays)
+  for (const ViewOverlayShape& shape : state.views.overlays)
     if (shape.space == size) {
       lo = glm::min(lo, glm::min(shape.a, shape.b));
       hi = glm::max(hi, glm::max(shape.a, shape.b));
@@ -97,7 +97,7 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
       draw->AddLine(toIm(t.screenFromTexel({float(lo.x), float(y)}, origin, regionSize)),
                     toIm(t.screenFromTexel({float(hi.x), float(y)}, origin, regionSize)), grid);
   }
-  for (const ViewOverlayShape& shape : state.overlays) {
+  for (const ViewOverlayShape& shape : state.views.overlays) {
     if (shape.space != size) continue;
     const ImVec2 a = toIm(t.screenFromTexel(shape.a, origin, regionSize));
     const ImVec2 b = toIm(t.screenFromTexel(shape.b, origin, regionSize));
@@ -110,7 +110,7 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
                        shape.color, 0, 0, 1.5f);
   }
   // N-buffer: the level-0 window the hovered texel of this level summarises.
-  if (hover && view.output == recordingInput(state.pipeline, "levels") && view.settings.layer > 0 && hover->x >= 0 &&
+  if (hover && view.output == recordingInput(state.session.pipeline, "levels") && view.settings.layer > 0 && hover->x >= 0 &&
       hover->y >= 0 && hover->x < size.x && hover->y < size.y) {
     glm::ivec2 lo, hi;
     nbufferWindow(view.settings.layer, *hover, size, lo, hi);
@@ -119,10 +119,10 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
     // reads as one of the ray's visited windows.
     draw->AddRect(topLeft, bottomRight, IM_COL32(255, 0, 255, 255), 0, 0, 2);
   }
-  if (state.frame && size == glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight))
+  if (state.session.frame && size == glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight))
     drawLightOutline(state, view, size, origin, regionSize);
-  if (state.pick && state.pickSpace == size) {
-    texelRect(t, *state.pick, *state.pick, origin, regionSize, topLeft, bottomRight);
+  if (state.views.pick && state.views.pickSpace == size) {
+    texelRect(t, *state.views.pick, *state.views.pick, origin, regionSize, topLeft, bottomRight);
     const ImVec2 centre{0.5f * (topLeft.x + bottomRight.x), 0.5f * (topLeft.y + bottomRight.y)};
     const float arm = std::max(6.0f, 0.5f * (bottomRight.x - topLeft.x) + 4);
     draw->AddRect(topLeft, bottomRight, IM_COL32(255, 255, 0, 255));
@@ -141,12 +141,12 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
   const bool hovered = ImGui::IsItemHovered();
   const glm::vec2 mouse = toGlm(io.MousePos);
   // Alt: the mouse moves the light instead (eye-sized views: the scene as the eye sees it).
-  const bool eyeSized = state.frame && size == glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight);
+  const bool eyeSized = state.session.frame && size == glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight);
   if (io.KeyAlt && eyeSized) return handleLightMouse(state, view, size, origin, regionSize);
   bool movingCamera = false;
   if (hovered && io.MouseWheel != 0) {
     if (io.KeyCtrl) {
-      dollyCamera(state.scene.camera, std::pow(0.9f, io.MouseWheel));
+      dollyCamera(state.session.scene.camera, std::pow(0.9f, io.MouseWheel));
     } else {
       view.transform.zoomAbout(std::pow(1.25f, io.MouseWheel), mouse, origin, regionSize);
       view.fitted = false;
@@ -158,17 +158,17 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
   }
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       io.MouseDragMaxDistanceSqr[0] < io.MouseDragThreshold * io.MouseDragThreshold && hovered)
-    state.setPick(view.transform.texelAt(mouse, origin, regionSize), size);
+    state.views.setPick(view.transform.texelAt(mouse, origin, regionSize), size);
   const glm::vec2 delta = toGlm(io.MouseDelta);
   const bool pressedHere = ImGui::IsItemActive();
   if (pressedHere && ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
     movingCamera = true;
-    if (io.KeyShift) panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
-    else orbitCamera(state.scene.camera, -delta.x * 0.01f, -delta.y * 0.01f);
+    if (io.KeyShift) panCamera(state.session.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
+    else orbitCamera(state.session.scene.camera, -delta.x * 0.01f, -delta.y * 0.01f);
   }
   if (pressedHere && ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
     movingCamera = true;
-    panCamera(state.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
+    panCamera(state.session.scene.camera, -delta.x / regionSize.x, delta.y / regionSize.y);
   }
   return movingCamera;
 }
@@ -179,8 +179,8 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
   const glm::ivec2 size{texture.width(), texture.height()};
   std::optional<glm::ivec2> at = hover;
   const char* what = "hover";
-  if (!at && state.pick && state.pickSpace == size) {
-    at = state.pick;
+  if (!at && state.views.pick && state.views.pickSpace == size) {
+    at = state.views.pick;
     what = "pick";
   }
   if (!at || at->x < 0 || at->y < 0 || at->x >= size.x || at->y >= size.y) {
@@ -205,15 +205,15 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
 
 // 5. Child window: toolbar, image region, readout.
 bool drawTextureView(UiState& state, int index, ImVec2 size) {
-  ViewPanel& view = state.views[index];
-  const bool active = state.activeView == index && state.twoViews;
+  ViewPanel& view = state.views.panels[index];
+  const bool active = state.views.activeView == index && state.views.twoViews;
   if (active) ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(230, 180, 60, 255));
   ImGui::BeginChild(index == 0 ? "view_A" : "view_B", size, true,
                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   if (active) ImGui::PopStyleColor();
   if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) &&
       (ImGui::IsMouseClicked(ImGuiMouseButton_Left) || ImGui::IsMouseClicked(ImGuiMouseButton_Right)))
-    state.activeView = index;
+    state.views.activeView = index;
   // The eye size for "fit view" depends on the view's size only, not on how the toolbar of
   // the current output wraps, so choosing another output never re-runs the pipeline. The
   // reserve is the toolbar's widest case (about 1400 pixels of controls) plus the readout.
@@ -221,7 +221,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   const float toolbarLines = std::max(2.0f, std::ceil(1400.0f / std::max(whole.x, 1.0f)));
   view.eyeRegion = {whole.x, whole.y - toolbarLines * ImGui::GetFrameHeightWithSpacing() -
                                  ImGui::GetTextLineHeightWithSpacing()};
-  if (state.twoViews) {
+  if (state.views.twoViews) {
     ImGui::TextColored(active ? ImVec4(0.9f, 0.7f, 0.25f, 1) : ImVec4(0.6f, 0.6f, 0.6f, 1), "%s",
                        index == 0 ? "A" : "B");
     ImGui::SameLine();
@@ -253,7 +253,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     std::optional<glm::ivec2> hover;
     if (ImGui::IsItemHovered())
       hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);
-    drawImage(state, view, view.renderer.render(*texture, view.settings, state.pipelineRuns), origin, regionSize, hover);
+    drawImage(state, view, view.renderer.render(*texture, view.settings, state.session.pipelineRuns), origin, regionSize, hover);
     drawReadout(state, view, *texture, hover);
   }
   ImGui::EndChild();

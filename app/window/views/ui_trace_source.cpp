@@ -92,10 +92,10 @@ void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
 // 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top); the
 //    parameters' new revision re-runs the pipeline.
 void recordPickedPixel(UiState& state) {
-  Stage* recorder = recordingStage(state.pipeline);
-  if (!state.pick || !state.frame || !recorder) return;
-  if (state.pickSpace != glm::ivec2(state.frame->eyeWidth, state.frame->eyeHeight)) return;
-  const glm::ivec2 image{state.pick->x, state.pickSpace.y - 1 - state.pick->y};
+  Stage* recorder = recordingStage(state.session.pipeline);
+  if (!state.views.pick || !state.session.frame || !recorder) return;
+  if (state.views.pickSpace != glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight)) return;
+  const glm::ivec2 image{state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y};
   recorder->param("record_x").value = image.x;
   recorder->param("record_y").value = image.y;
 }

@@ -55,25 +55,25 @@ const GlTexture* ViewDifference::update(const GlTexture& a, const GlTexture& b, 
 
 // 3. What a view shows.
 const GlTexture* shownTexture(const UiState& state, const ViewPanel& view, std::string* problem) {
-  if (!state.frame || !state.frame->has(view.output)) return nullptr;
-  const GlTexture& a = state.frame->texture(view.output);
+  if (!state.session.frame || !state.session.frame->has(view.output)) return nullptr;
+  const GlTexture& a = state.session.frame->texture(view.output);
   if (view.minus.empty()) return &a;
-  if (!state.frame->has(view.minus)) {
+  if (!state.session.frame->has(view.minus)) {
     if (problem) *problem = "'" + view.minus + "' was not written this frame";
     return nullptr;
   }
   std::string why;
-  const GlTexture* result = view.difference.update(a, state.frame->texture(view.minus), view.settings.layer,
-                                                   view.clipNegative, state.pipelineRuns, why);
+  const GlTexture* result = view.difference.update(a, state.session.frame->texture(view.minus), view.settings.layer,
+                                                   view.clipNegative, state.session.pipelineRuns, why);
   if (problem) *problem = why;
   return result;
 }
 
 std::vector<std::string> shownChannelNames(const UiState& state, const ViewPanel& view) {
-  const Output* a = state.outputOf(view.output);
+  const Output* a = state.session.outputOf(view.output);
   std::vector<std::string> names = a ? a->channels : std::vector<std::string>{};
   if (view.minus.empty()) return names;
-  const Output* b = state.outputOf(view.minus);
+  const Output* b = state.session.outputOf(view.minus);
   for (size_t c = 0; c < names.size(); ++c)
     if (b && !b->channels.empty()) names[c] += "-" + b->channels[std::min(c, b->channels.size() - 1)];
   return names;
@@ -87,16 +87,16 @@ std::string setViewDifference(UiState& state, ViewPanel& view, const std::string
     view.settingsFor.clear();  // back to the output's declared display
     return "";
   }
-  if (!state.outputOf(minus)) return "unknown output '" + minus + "'";
-  if (state.frame && state.frame->has(minus) && state.frame->has(view.output)) {
-    const GlTexture& a = state.frame->texture(view.output);
-    const GlTexture& b = state.frame->texture(minus);
+  if (!state.session.outputOf(minus)) return "unknown output '" + minus + "'";
+  if (state.session.frame && state.session.frame->has(minus) && state.session.frame->has(view.output)) {
+    const GlTexture& a = state.session.frame->texture(view.output);
+    const GlTexture& b = state.session.frame->texture(minus);
     if (a.width() != b.width() || a.height() != b.height())
       return "'" + minus + "' is " + std::to_string(b.width()) + "x" + std::to_string(b.height()) +
              ", '" + view.output + "' " + std::to_string(a.width()) + "x" + std::to_string(a.height());
   }
   if (view.settingsFor != view.output) {  // settings of this output first (not yet drawn)
-    if (const Output* output = state.outputOf(view.output))
+    if (const Output* output = state.session.outputOf(view.output))
       view.settings = defaultViewSettings(*output, int(output->channels.size()));
     view.settingsFor = view.output;
   }
@@ -111,9 +111,9 @@ std::string setViewDifference(UiState& state, ViewPanel& view, const std::string
 }
 
 std::string showThickness(UiState& state) {
-  ViewPanel* target = state.selectionTarget();
+  ViewPanel* target = state.views.selectionTarget();
   if (!target) return "both views are locked: unlock one to show the thickness";
-  const LayerOutputs layers = layerOutputs(state.pipeline);
+  const LayerOutputs layers = layerOutputs(state.session.pipeline);
   if (layers.far.empty()) return "no stage declares the outputs near and far (the light layers)";
   if (std::string problem = state.selectOutput(layers.far); !problem.empty()) return problem;
   std::string problem = setViewDifference(state, *target, layers.near);

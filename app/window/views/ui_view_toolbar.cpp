@@ -33,7 +33,7 @@ void autofitView(ViewPanel& view, const GlTexture& texture) {
 }
 
 void resetView(UiState& state, ViewPanel& view, const GlTexture& texture) {
-  const Output* output = state.outputOf(view.output);
+  const Output* output = state.session.outputOf(view.output);
   if (!output) return;
   const int layer = view.settings.layer;
   view.settings = defaultViewSettings(*output, texture.channelCount());
@@ -50,12 +50,12 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
   if (ImGui::BeginCombo("##minus", current.c_str())) {
     if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
       setViewDifference(state, view, "");
-    if (!layerOutputs(state.pipeline).far.empty() && ImGui::Selectable("thickness: far - near"))
+    if (!layerOutputs(state.session.pipeline).far.empty() && ImGui::Selectable("thickness: far - near"))
       state.status = showThickness(state);
-    const GlTexture* a = state.frame && state.frame->has(view.output) ? &state.frame->texture(view.output) : nullptr;
-    for (const std::string& key : state.outputKeys()) {
-      if (key == view.output || !a || !state.frame->has(key)) continue;
-      const GlTexture& b = state.frame->texture(key);
+    const GlTexture* a = state.session.frame && state.session.frame->has(view.output) ? &state.session.frame->texture(view.output) : nullptr;
+    for (const std::string& key : state.session.outputKeys()) {
+      if (key == view.output || !a || !state.session.frame->has(key)) continue;
+      const GlTexture& b = state.session.frame->texture(key);
       if (b.width() != a->width() || b.height() != a->height()) continue;
       if (ImGui::Selectable(("- " + key).c_str(), key == view.minus))
         state.status = setViewDifference(state, view, key);
@@ -78,7 +78,7 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
 void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
   ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - 170, 120.0f, 210.0f));
   if (ImGui::BeginCombo("##output", view.output.c_str())) {
-    for (const std::string& key : state.outputKeys())
+    for (const std::string& key : state.session.outputKeys())
       if (ImGui::Selectable(key.c_str(), key == view.output)) {
         view.output = key;
         view.fitPending = true;
@@ -120,7 +120,7 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Colormap for a single channel (colour shows each channel in gray).");
-  const GlTexture& source = state.frame->texture(view.output);  // a difference view is 2D
+  const GlTexture& source = state.session.frame->texture(view.output);  // a difference view is 2D
   if (source.isArray()) {
     sameLineIfFits(170);
     ImGui::SetNextItemWidth(110);
