@@ -97,9 +97,9 @@ void drawTimings(const UiState& state) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timingText(time).c_str());
   }
   const double total = state.session.medianPipelineMs();
-  ImGui::Text("pipeline %.1f ms (%.1f runs/s), last run %.1f ms", total,
-              total > 0 ? 1000.0 / total : 0.0, state.session.lastPipelineMs());
-  ImGui::TextDisabled("median of %d run(s) with these settings;\nglFinish timing", state.session.medianRuns());
+  ImGui::Text("pipeline %.1f ms (%.1f runs/s)", total, total > 0 ? 1000.0 / total : 0.0);
+  ImGui::TextDisabled("median of %d run(s) with these settings;\nlast run %.1f ms; glFinish timing",
+                      state.session.medianRuns(), state.session.lastPipelineMs());
 }
 
 // 3. Counters the stages reported this frame.

@@ -18,7 +18,7 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   std::string shownIn;
   for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v)
     if (state.views.panels[v].output == key) shownIn += v == 0 ? "[A]" : "[B]";
-  std::string size = "not written";
+  std::string size = state.session.pipeline.lastTime(stage.name()).ran ? "not written" : "not run";
   if (state.session.frame && state.session.frame->has(key)) {
     const GlTexture& texture = state.session.frame->texture(key);
     char text[64];

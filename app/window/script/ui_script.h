@@ -34,6 +34,7 @@
 // Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
 // waits for the student's "Next" (button, Space or N), and the window stays open at the end.
 //
+// The actions, their checks and handlers are one table: app/window/script/ui_script_actions.h.
 // The whole file is checked before the window opens (names, argument types); actions that
 // fail while running (an unknown output, a value out of range) stop the script. Either way
 // the message names the action and what is valid, and penumbra exits with status 2.
@@ -41,6 +42,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "window/script/ui_script_actions.h"
 
 class UiState;
 
@@ -69,18 +72,9 @@ public:
   const std::string& error() const { return error_; }
 
 private:
-  std::string run(UiState& state, const ScriptAction& action);  // "" or the problem
-  // Input, views, lessons (app/window/script/ui_script_more.cpp); "" or the problem.
-  std::string runMore(UiState& state, const ScriptAction& action);
-  // A relative export / screenshot path inside the export directory, if there is one.
-  std::string resolved(const std::string& path) const;
   bool waitForNext(UiState& state);  // interactive lessons: true while the student reads
   std::vector<ScriptAction> actions_;
-  ScriptOptions options_;
-  std::string exportDirectory_;
-  int says_ = 0, saysSeen_ = 0;
+  ScriptContext context_;
   size_t next_ = 0;
-  int waitFrames_ = 0;
-  std::string pendingScreenshot_;  // taken one frame later: new windows size themselves first
   std::string error_;
 };

@@ -1,11 +1,10 @@
-// Script actions beyond the basic ones (app/window/script/ui_script.h): input as a user gives it (drag,
-// wheel), difference views, the light outline, and lessons (lesson, say, export_dir).
+// Script handlers longer than a line (the table: ui_script_actions.cpp): input as a user
+// gives it (drag, wheel), zoom, the ray on the N-buffer, lessons, and the printed readouts.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
-#include "window/script/ui_script.h"
+#include "window/script/ui_script_actions.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_difference.h"
@@ -45,6 +44,9 @@ glm::vec2 windowPoint(const UiState& state, const ViewPanel& view, glm::vec2 ima
   return view.transform.screenFromTexel(texel, view.regionOrigin, view.regionSize);
 }
 
+}  // namespace
+
+// 2. Input over several frames.
 std::string queueDrag(UiState& state, const json& a) {
   glm::vec2 from, to;
   if (!readPoint(a.value("from", json()), from) || !readPoint(a.value("to", json()), to))
@@ -87,61 +89,113 @@ std::string queueWheel(UiState& state, const json& a) {
   return "";
 }
 
-}  // namespace
-
-// 2. Paths: relative targets go into the export directory (the script's or --export's).
-std::string ScriptRunner::resolved(const std::string& path) const {
-  if (exportDirectory_.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(exportDirectory_) / path).string();
-}
-
-// 3. An interactive lesson holds each "say" after the first until the student asks for it.
-bool ScriptRunner::waitForNext(UiState& state) {
-  if (!options_.interactive || saysSeen_ == 0 || next_ >= actions_.size() ||
-      actions_[next_].name != "say" || state.lesson.next)
-    return false;
-  state.lesson.waiting = true;
-  return true;
-}
-
-// 4. The actions.
-std::string ScriptRunner::runMore(UiState& state, const ScriptAction& action) {
-  const json& a = action.argument;
-  const std::string& name = action.name;
+// 3. Zoom: "fit", "1:1", or a factor about what matters in the texture.
+std::string zoomActiveView(UiState& state, const json& a) {
   ViewPanel& view = state.views.panels[state.views.activeView];
-  if (name == "drag") return queueDrag(state, a);
-  if (name == "wheel") return queueWheel(state, a);
-  if (name == "difference") return setViewDifference(state, view, a.get<std::string>());
-  if (name == "thickness") return a.get<bool>() ? showThickness(state) : setViewDifference(state, view, "");
-  if (name == "clip_negative") { view.clipNegative = a.get<bool>(); return ""; }
-  if (name == "show_light") { state.views.showLight = a.get<bool>(); return ""; }
-  if (name == "show_ray") {  // as the trace panel's "Show on N-buffer" button
-    ViewPanel* target = state.views.selectionTarget();
-    const std::string levels = recordingInput(state.session.pipeline, "levels");
-    if (levels.empty()) return "no stage records rays over an N-buffer (levels slot)";
-    if (std::string problem = state.selectOutput(levels); !problem.empty()) return problem;
-    if (target) target->frameOverlays = a.get<bool>();
-    return "";
+  if (a == "fit") view.fitPending = true;
+  else if (a == "1:1") {
+    view.transform.oneToOne();
+    view.fitted = false;
   }
-  if (name == "lesson") {
-    state.lesson.title = a.get<std::string>();
-    state.lesson.steps = says_;
-    std::printf("lesson: %s\n", state.lesson.title.c_str());
-    std::fflush(stdout);
-    return "";
+  else {
+    // Settle a pending fit first, then zoom about the pick if it lies in this texture.
+    const GlTexture* texture = shownTexture(state, view);
+    if (texture && view.fitPending && view.regionSize.x > 0) {
+      view.transform.fit({texture->width(), texture->height()}, view.regionSize);
+      view.fitPending = false;
+      view.lastTextureSize = {texture->width(), texture->height()};
+    }
+    view.transform.zoom = std::clamp(a.get<float>(), kMinZoom, kMaxZoom);
+    view.fitted = false;
+    // Centre on what matters in this texture: the ray's visited windows, else the pick.
+    const glm::ivec2 size = texture ? glm::ivec2(texture->width(), texture->height()) : glm::ivec2(0);
+    if (texture && state.views.pick && state.views.pickSpace == size)
+      view.transform.center = glm::vec2(*state.views.pick) + 0.5f;
+    glm::vec2 lo{1e30f}, hi{-1e30f};
+    for (const ViewOverlayShape& shape : state.views.overlays)
+      if (shape.space == size && !shape.line) {  // windows and dots
+        lo = glm::min(lo, glm::min(shape.a, shape.b));
+        hi = glm::max(hi, glm::max(shape.a, shape.b));
+      }
+    if (lo.x <= hi.x) view.transform.center = 0.5f * (lo + hi);
   }
-  if (name == "say") {
-    state.lesson.text = a.get<std::string>();
-    state.lesson.step = ++saysSeen_;
-    state.lesson.steps = says_;
-    state.lesson.next = state.lesson.waiting = false;
-    std::printf("lesson step %d/%d: %s\n", saysSeen_, says_, state.lesson.text.c_str());
-    std::fflush(stdout);
-    return "";
+  return "";
+}
+
+// 4. As the trace panel's "Show on N-buffer" button.
+std::string showRay(UiState& state, const json& a) {
+  ViewPanel* target = state.views.selectionTarget();
+  const std::string levels = recordingInput(state.session.pipeline, "levels");
+  if (levels.empty()) return "no stage records rays over an N-buffer (levels slot)";
+  if (std::string problem = state.selectOutput(levels); !problem.empty()) return problem;
+  if (target) target->frameOverlays = a.get<bool>();
+  return "";
+}
+
+// 5. Lessons: the title and each "say" for the lesson panel and stdout.
+std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
+  state.lesson.title = a.get<std::string>();
+  state.lesson.steps = context.says;
+  std::printf("lesson: %s\n", state.lesson.title.c_str());
+  std::fflush(stdout);
+  return "";
+}
+
+std::string say(UiState& state, const json& a, ScriptContext& context) {
+  state.lesson.text = a.get<std::string>();
+  state.lesson.step = ++context.saysSeen;
+  state.lesson.steps = context.says;
+  state.lesson.next = state.lesson.waiting = false;
+  std::printf("lesson step %d/%d: %s\n", context.saysSeen, context.says, state.lesson.text.c_str());
+  std::fflush(stdout);
+  return "";
+}
+
+// 6. Readouts on stdout.
+// The pick's raw values in every output of its size, and the trace panel's step count.
+void printPick(const UiState& state, const std::string& label) {
+  if (!state.views.pick) {
+    std::printf("pick %s: none\n", label.c_str());
+    return;
   }
-  if (name == "export_dir") {
-    if (options_.exportOverride.empty()) exportDirectory_ = a.get<std::string>();
-    return "";
+  const glm::ivec2 pick = *state.views.pick;
+  std::printf("pick %s: (%d, %d) in %dx%d\n", label.c_str(), pick.x, state.views.pickSpace.y - 1 - pick.y,
+              state.views.pickSpace.x, state.views.pickSpace.y);
+  for (const std::string& key : state.session.outputKeys()) {
+    if (!state.session.frame->has(key)) continue;
+    const GlTexture& texture = state.session.frame->texture(key);
+    if (texture.width() != state.views.pickSpace.x || texture.height() != state.views.pickSpace.y) continue;
+    const auto texel = readTexel(texture, pick.x, pick.y, 0);
+    std::printf("  %s", key.c_str());
+    for (int c = 0; c < texture.channelCount(); ++c) std::printf(" %.9g", texel[size_t(c)]);
+    std::printf("\n");
   }
-  return "not implemented";
+  if (rayTraceSource()) {
+    const RayTraceInfo trace = rayTraceSource()(*state.session.frame, pick, state.views.selectedRay);
+    int samples = 0, refinements = 0;
+    for (const RayStepRecord& step : trace.steps) {
+      samples += step.point && !step.refinement;
+      refinements += step.refinement;
+    }
+    std::printf("  trace steps: %zu (ray %d of %d) %s\n  trace points: %d samples, %d refinements\n",
+                trace.steps.size(), state.views.selectedRay, trace.raysPerPixel, trace.result.c_str(),
+                samples, refinements);
+  }
+  std::fflush(stdout);
+}
+
+// Per stage: the last run and the median over the runs with identical settings.
+void printTiming(const UiState& state, const std::string& label) {
+  std::printf("timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %d runs, last "
+              "run %.2f ms, UI %.1f fps\n",
+              label.c_str(), state.session.frame->eyeWidth, state.session.frame->eyeHeight, state.session.medianPipelineMs(),
+              state.session.medianPipelineMs() > 0 ? 1000.0 / state.session.medianPipelineMs() : 0.0,
+              state.session.medianRuns(), state.session.lastPipelineMs(), state.session.framesPerSecond());
+  for (const StageTime& time : state.session.pipeline.lastTimes())
+    if (time.ran)
+      std::printf("  %-14s %8.2f ms (last %.2f ms, %d runs)\n", time.stage.c_str(), time.median,
+                  time.milliseconds, time.runs);
+    else
+      std::printf("  %-14s  not run\n", time.stage.c_str());
+  std::fflush(stdout);
 }

@@ -1,0 +1,47 @@
+// The script actions in one table (app/window/script/ui_script_actions.cpp): each row is a
+// name, the check of its argument (run before the window opens) and its handler (the same
+// state change a click makes). The runner (ui_script.h) only looks rows up.
+#pragma once
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+class UiState;
+
+// What a handler may change besides the window's state: the runner's own progress.
+struct ScriptContext {
+  int waitFrames = 0;             // frames still to wait ("wait")
+  std::string pendingScreenshot;  // taken one frame later: new windows size themselves first
+  std::string exportDirectory;    // relative export / screenshot paths go here
+  bool exportOverridden = false;  // --export DIR replaces the script's "export_dir"
+  bool interactive = false;       // a lesson played by a student
+  int says = 0, saysSeen = 0;     // the lesson's "say" actions: in all, and so far
+  // A relative export / screenshot path inside the export directory, if there is one.
+  std::string resolved(const std::string& path) const;
+};
+
+using ScriptCheck = std::function<std::string(const nlohmann::json&)>;  // "" or what was expected
+using ScriptHandler =
+    std::function<std::string(UiState&, const nlohmann::json&, ScriptContext&)>;  // "" or why not
+
+struct ScriptActionSpec {
+  std::string name;
+  ScriptCheck check;
+  ScriptHandler run;
+  bool newFrame = false;  // the next action waits a frame: it sees the new layout
+};
+
+const std::vector<ScriptActionSpec>& scriptActions();  // sorted by name
+const ScriptActionSpec* findScriptAction(const std::string& name);
+std::string scriptActionNames();  // "camera_dolly, camera_moving, ..."
+
+// Handlers longer than a line, on input, views and lessons (ui_script_more.cpp).
+std::string queueDrag(UiState& state, const nlohmann::json& a);
+std::string queueWheel(UiState& state, const nlohmann::json& a);
+std::string zoomActiveView(UiState& state, const nlohmann::json& a);
+std::string showRay(UiState& state, const nlohmann::json& a);
+std::string startLesson(UiState& state, const nlohmann::json& a, ScriptContext& context);
+std::string say(UiState& state, const nlohmann::json& a, ScriptContext& context);
+void printPick(const UiState& state, const std::string& label);
+void printTiming(const UiState& state, const std::string& label);
