@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/pipeline.h"
 #include "scene/light_frame.h"
 #include "scene/mesh_builders.h"
 
@@ -28,60 +30,116 @@ std::string number(double value) {
 
 // --- Configurations ------------------------------------------------------------------
 
-BenchConfig hardShadow(int map) {
-  return {"hard shadow map " + std::to_string(map), "hard_shadow",
-          {"light.resolution=" + std::to_string(map), "composite.shadow=hard_shadow",
-           "error.method=hard_shadow"}};
+// The sets that make `method` the one shown and measured.
+void chooseMethod(BenchConfig& config) {
+  config.sets.push_back("composite.shadow=" + config.method);
+  config.sets.push_back("error.method=" + config.method);
 }
+
+// A method without a list of its own: its declared defaults at shadow-map size `map`.
+BenchConfig withDefaults(const std::string& method, int map) {
+  BenchConfig config{method + " map " + std::to_string(map), method, method,
+                     {"light.resolution=" + std::to_string(map)}};
+  chooseMethod(config);
+  return config;
+}
+
+std::vector<BenchConfig> withDefaults(const std::vector<std::string>& methods, int map) {
+  std::vector<BenchConfig> configs;
+  for (const std::string& method : methods) configs.push_back(withDefaults(method, map));
+  return configs;
+}
+
+// The Monte Carlo method's lists: a filtered configuration measures `filter`, an
+// unfiltered one `trace` (the stages whose outputs carry the shadow-method role).
+const std::vector<std::string> kMonteCarloMethods = {"trace", "filter"};
 
 // One Monte Carlo configuration. layers: 1..3; rays: per side.
 BenchConfig monteCarlo(const std::string& search, int layers, int rays, int map = 512,
                        bool deferred = true, bool filter = true) {
   const char* layerNames[] = {"", "one", "two", "three"};
+  std::string family = (search == "linear_binary" ? std::string("linear/binary") : search) +
+                       " " + std::to_string(layers) + "L";
   std::string label = search + " " + std::to_string(layers) + "L " + std::to_string(rays) + "x" +
                       std::to_string(rays);
-  if (!deferred) label += " forward";
-  if (!filter) label += " unfiltered";
+  if (!deferred) label += " forward", family += " forward";
+  if (!filter) label += " unfiltered", family += " unfiltered";
   label += " map " + std::to_string(map);
-  return {label, "monte_carlo",
-          {"trace.search=" + search, std::string("light.layers=") + layerNames[layers],
-           "trace.rays=" + std::to_string(rays),
-           std::string("trace.deferred=") + (deferred ? "true" : "false"),
-           std::string("filter.enabled=") + (filter ? "true" : "false"),
-           "light.resolution=" + std::to_string(map),
-           std::string("composite.shadow=") + (filter ? "filter" : "trace"),
-           std::string("error.method=") + (filter ? "filter" : "trace")}};
+  BenchConfig config{label, filter ? "filter" : "trace", family,
+                     {"trace.search=" + search, std::string("light.layers=") + layerNames[layers],
+                      "trace.rays=" + std::to_string(rays),
+                      std::string("trace.deferred=") + (deferred ? "true" : "false"),
+                      std::string("filter.enabled=") + (filter ? "true" : "false"),
+                      "light.resolution=" + std::to_string(map)}};
+  chooseMethod(config);
+  return config;
 }
 
-std::vector<BenchConfig> defaultConfigs() {
-  std::vector<BenchConfig> configs = {hardShadow(512)};
-  for (int rays = 1; rays <= 4; ++rays) {
-    configs.push_back(monteCarlo("linear", 2, rays));
-    configs.push_back(monteCarlo("linear_binary", 2, rays));
-    configs.push_back(monteCarlo("linear_binary", 3, rays));
-    configs.push_back(monteCarlo("hierarchical", 2, rays));
+// The graph's methods split into the Monte Carlo ones (when the graph has them all) and
+// every other, in registry order.
+struct Methods {
+  bool monteCarlo = false;
+  std::vector<std::string> others;
+};
+
+Methods methodsOf(const Pipeline& pipeline) {
+  Methods result;
+  const std::vector<std::string> all = pipeline.methods();
+  auto has = [&](const std::string& m) { return std::find(all.begin(), all.end(), m) != all.end(); };
+  result.monteCarlo = std::all_of(kMonteCarloMethods.begin(), kMonteCarloMethods.end(), has);
+  for (const std::string& method : all) {
+    const bool listed = std::find(kMonteCarloMethods.begin(), kMonteCarloMethods.end(), method) !=
+                        kMonteCarloMethods.end();
+    if (!(result.monteCarlo && listed)) result.others.push_back(method);
   }
-  configs.push_back(monteCarlo("hierarchical", 2, 2, 512, true, false));
-  configs.push_back(monteCarlo("hierarchical", 2, 2, 512, false, true));
-  for (int map : {128, 256, 1024}) configs.push_back(monteCarlo("hierarchical", 2, 2, map));
-  configs.push_back(hardShadow(128));
-  configs.push_back(hardShadow(1024));
+  return result;
+}
+
+void append(std::vector<BenchConfig>& to, std::vector<BenchConfig> more) {
+  for (BenchConfig& config : more) to.push_back(std::move(config));
+}
+
+std::vector<BenchConfig> defaultConfigs(const Methods& methods) {
+  std::vector<BenchConfig> configs = withDefaults(methods.others, 512);
+  if (methods.monteCarlo) {
+    for (int rays = 1; rays <= 4; ++rays) {
+      configs.push_back(monteCarlo("linear", 2, rays));
+      configs.push_back(monteCarlo("linear_binary", 2, rays));
+      configs.push_back(monteCarlo("linear_binary", 3, rays));
+      configs.push_back(monteCarlo("hierarchical", 2, rays));
+    }
+    configs.push_back(monteCarlo("hierarchical", 2, 2, 512, true, false));
+    configs.push_back(monteCarlo("hierarchical", 2, 2, 512, false, true));
+    for (int map : {128, 256, 1024}) configs.push_back(monteCarlo("hierarchical", 2, 2, map));
+  }
+  for (int map : {128, 1024}) append(configs, withDefaults(methods.others, map));
+  return configs;
+}
+
+std::vector<BenchConfig> minimalConfigs(const Methods& methods) {
+  std::vector<BenchConfig> configs = withDefaults(methods.others, 512);
+  if (methods.monteCarlo) configs.push_back(monteCarlo("hierarchical", 2, 2));
   return configs;
 }
 
 // The thesis's rows (Tables 4.1-4.4): hierarchical with two layers (deferred and
 // forward), linear/binary with three layers (deferred), at 2x2 and 3x3 rays.
-std::vector<BenchConfig> thesisRows(int map) {
+std::vector<BenchConfig> thesisRows(const Methods& methods, int map) {
+  if (!methods.monteCarlo) return {};
   return {monteCarlo("hierarchical", 2, 2, map), monteCarlo("hierarchical", 2, 3, map),
           monteCarlo("hierarchical", 2, 2, map, false), monteCarlo("hierarchical", 2, 3, map, false),
           monteCarlo("linear_binary", 3, 2, map), monteCarlo("linear_binary", 3, 3, map)};
 }
 
 // Atty et al. compare their one- and two-pass versions; our analogues are one and two
-// depth layers, with the hard shadow below and three layers (linear/binary) above.
-std::vector<BenchConfig> attyMethods(int map) {
-  return {hardShadow(map), monteCarlo("hierarchical", 1, 2, map),
-          monteCarlo("hierarchical", 2, 2, map), monteCarlo("linear_binary", 3, 2, map)};
+// depth layers, with the other methods (the hard shadow, ...) and three layers
+// (linear/binary) next to them.
+std::vector<BenchConfig> attyMethods(const Methods& methods, int map) {
+  std::vector<BenchConfig> configs = withDefaults(methods.others, map);
+  if (methods.monteCarlo)
+    append(configs, {monteCarlo("hierarchical", 1, 2, map), monteCarlo("hierarchical", 2, 2, map),
+                     monteCarlo("linear_binary", 3, 2, map)});
+  return configs;
 }
 
 // --- Scene modifiers -----------------------------------------------------------------
@@ -207,36 +265,37 @@ std::vector<std::string> benchPresetNames() {
   return {"default", "minimal", "thesis-table-4.1", "atty-4.2"};
 }
 
-std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options) {
+std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options,
+                                      const Pipeline& pipeline) {
+  const Methods methods = methodsOf(pipeline);
   const std::string preset = options.preset.empty() ? "default" : options.preset;
   std::vector<BenchSetup> setups;
   int w = options.width, h = options.height;
   if (preset == "default" || preset == "minimal") {
     if (w == 0) w = 256;
     if (h == 0) h = 256;
-    setups.push_back(makeSetup(scene, w, h, preset == "default" ? defaultConfigs()
-                                                   : std::vector<BenchConfig>{hardShadow(512), monteCarlo("hierarchical", 2, 2)}));
+    setups.push_back(makeSetup(scene, w, h, preset == "default" ? defaultConfigs(methods)
+                                                                : minimalConfigs(methods)));
   } else if (preset == "thesis-table-4.1") {
     if (w == 0) w = 512;
     if (h == 0) h = 384;
-    std::vector<BenchConfig> configs = {hardShadow(512)};
-    for (int map : {256, 512, 1024})
-      for (BenchConfig& config : thesisRows(map)) configs.push_back(std::move(config));
+    std::vector<BenchConfig> configs = withDefaults(methods.others, 512);
+    for (int map : {256, 512, 1024}) append(configs, thesisRows(methods, map));
     setups.push_back(makeSetup(scene, w, h, configs));
     // Tables 4.3/4.4: 800x600 and 1280x1024 at the same scale (1024x768 is the main setup).
     const double scale = double(w) / 1024.0;
     for (const glm::ivec2 size : {glm::ivec2(800, 600), glm::ivec2(1280, 1024)})
       setups.push_back(makeSetup(scene, int(std::lround(size.x * scale)),
-                                 int(std::lround(size.y * scale)), thesisRows(512)));
+                                 int(std::lround(size.y * scale)), thesisRows(methods, 512)));
   } else if (preset == "atty-4.2") {
     if (w == 0) w = 256;
     if (h == 0) h = 256;
     std::vector<BenchConfig> maps;
     for (int map : {128, 192, 256, 384, 512, 768, 1024})
-      for (BenchConfig& config : attyMethods(map)) maps.push_back(std::move(config));
+      append(maps, attyMethods(methods, map));
     setups.push_back(makeSetup(scene, w, h, maps, "map", 0));
     setups.back().label = scene.name + " " + std::to_string(w) + "x" + std::to_string(h) + " map sweep";
-    const BenchSetup base = makeSetup(scene, w, h, attyMethods(128));
+    const BenchSetup base = makeSetup(scene, w, h, attyMethods(methods, 128));
     for (const char* v : {"0.05", "0.25", "0.5", "1", "1.5", "2"})
       setups.push_back(withAxis(base, "scene.light_scale", v));
     for (const char* v : {"-1", "-0.5", "-0.25", "0", "0.25", "0.5", "1"})
@@ -249,6 +308,13 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
     throw std::invalid_argument("unknown preset '" + preset + "'; valid: " + valid);
   }
 
+  // Stages that some method's visibility depends on: a parameter of one of them leaves the
+  // methods that do not depend on it unchanged (trace.rays and a hard shadow), so those are
+  // not repeated; parameters of other stages (composite, error) repeat every configuration.
+  std::set<std::string> methodStages;
+  for (const std::string& method : pipeline.methods())
+    for (const std::string& stage : pipeline.dependencies({pipeline.methodOutput(method)}))
+      methodStages.insert(stage);
   for (const std::string& sweep : options.sweeps) {
     const size_t equals = sweep.find('=');
     if (equals == std::string::npos || equals == 0)
@@ -266,11 +332,9 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
       for (BenchSetup& setup : setups) {
         std::vector<BenchConfig> expanded;
         for (const BenchConfig& config : setup.configs) {
-          // A parameter of a stage the method does not use (trace.rays for the hard shadow)
-          // would only repeat the same measurement.
-          const bool unused = config.method == "hard_shadow"
-                                  ? (stage == "trace" || stage == "filter" || stage == "nbuffer" || stage == "classify")
-                                  : stage == "hard_shadow";
+          const auto closure = pipeline.dependencies({pipeline.methodOutput(config.method)});
+          const bool unused = methodStages.count(stage) &&
+                              std::find(closure.begin(), closure.end(), stage) == closure.end();
           if (unused) {
             expanded.push_back(config);
             continue;
@@ -286,5 +350,9 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
       }
     }
   }
+  // A graph without the Monte Carlo method leaves the thesis's eye-size setups empty.
+  setups.erase(std::remove_if(setups.begin(), setups.end(),
+                              [](const BenchSetup& setup) { return setup.configs.empty(); }),
+               setups.end());
   return setups;
 }

@@ -2,19 +2,27 @@
 // modified by a sweep, the eye size) each with configurations (what only the method
 // depends on: `--set` assignments). Presets and `--sweep` build them.
 //
+// The methods come from the graph (Pipeline::methods(), role kRoleShadowMethod). The Monte
+// Carlo method (stages `trace` and `filter`) has its own configuration lists (search type,
+// layers, rays); every other method is measured with its declared defaults at the preset's
+// shadow-map sizes, so a new method appears without an edit here.
+//
 // Presets:
-//   default           hard shadow; Monte Carlo linear, linear_binary (2 and 3 layers),
-//                     hierarchical at 1, 4, 9, 16 rays; filter off; forward; shadow map
-//                     128..1024 (one setup, small enough for a few minutes on llvmpipe)
-//   minimal           hard shadow and hierarchical 2x2 (for sweeps and CI)
+//   default           every other method at map 512, 128, 1024; Monte Carlo linear,
+//                     linear_binary (2 and 3 layers), hierarchical at 1, 4, 9, 16 rays;
+//                     filter off; forward; map 128..1024 (one setup, small enough for a few
+//                     minutes on llvmpipe)
+//   minimal           every other method and hierarchical 2x2 (for sweeps and CI)
 //   thesis-table-4.1  the thesis's table shapes (Tables 4.1-4.4): search type x rays x
 //                     deferred against shadow-map size 256/512/1024 at the main eye size,
 //                     and against three eye sizes at map 512 (the thesis's 800x600,
-//                     1024x768, 1280x1024 scaled by width/1024; default width 512)
+//                     1024x768, 1280x1024 scaled by width/1024; default width 512); every
+//                     other method at map 512 in the main setup
 //   atty-4.2          the sweeps of Atty et al. 2006 §4.2 with their metric (mean |error|
 //                     over pixels in shadow): shadow-map size; light size; occluder moved
 //                     laterally; occluder moved from the receiver to the light (map 128,
-//                     as theirs)
+//                     as theirs); every method in each
+
 // --sweep KEY=v1,v2,...: KEY is a stage parameter (every configuration is repeated for each
 // value) or one of the setup axes scene.light_scale (light width and height x v),
 // scene.lateral (occluders' centre at v light widths from the light's axis, along the
@@ -26,9 +34,12 @@
 
 #include "scene/scene.h"
 
+class Pipeline;
+
 struct BenchConfig {
-  std::string label;               // "hierarchical 2x2", "hard shadow map 128"
-  std::string method;              // "hard_shadow" or "monte_carlo"
+  std::string label;               // "hierarchical 2L 2x2 map 512", "<method> map 128"
+  std::string method;              // the method's stage (Pipeline::methods())
+  std::string family;              // plot series: "hierarchical 2L", or the method's name
   std::vector<std::string> sets;   // stage.key=value on top of the defaults
 };
 
@@ -47,8 +58,10 @@ struct BenchPlanOptions {
   int width = 0, height = 0;        // 0: the preset's default
 };
 
-// Throws std::invalid_argument with a message naming the valid presets / keys.
-std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options);
+// The methods and their parameters come from `pipeline` (read, not changed). Throws
+// std::invalid_argument with a message naming the valid presets / keys.
+std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options,
+                                      const Pipeline& pipeline);
 std::vector<std::string> benchPresetNames();
 
 // The setup modifiers (public for tests).

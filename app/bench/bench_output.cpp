@@ -8,7 +8,8 @@
 #include <sstream>
 
 #include "io/image_export.h"
-#include "bench/plot_png.h"
+#include "bench/pareto.h"
+#include "bench/plot.h"
 
 namespace {
 
@@ -33,6 +34,20 @@ std::string csvField(const std::string& text) {
 
 const char* cacheName(int cache) { return cache == 0 ? "computed" : cache == 1 ? "memory" : "disk"; }
 
+std::string joined(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string text;
+  for (const std::string& part : parts) text += (text.empty() ? "" : separator) + part;
+  return text;
+}
+
+// "gbuffer 3.1, light_layers 10.2, ...": each timed stage's median, in execution order.
+std::string stageTimes(const BenchResult& r, const std::string& separator = ", ") {
+  std::vector<std::string> parts;
+  for (const std::string& stage : r.stages)
+    if (r.stageMs.count(stage)) parts.push_back(stage + " " + fixed(r.stageMs.at(stage), 1));
+  return joined(parts, separator);
+}
+
 std::string csv(const BenchRunInfo& info, const std::vector<BenchSetup>& setups,
                 const std::vector<BenchResult>& results) {
   std::ostringstream out;
@@ -44,12 +59,9 @@ std::string csv(const BenchRunInfo& info, const std::vector<BenchSetup>& setups,
     const std::vector<std::string> fields = {
         s.label, info.scene, std::to_string(s.width), std::to_string(s.height), s.axis,
         s.axis.empty() ? "" : fixed(s.axisValue, 4), r.label, r.method, r.family,
-        r.method == "hard_shadow" ? "" : r.search, r.method == "hard_shadow" ? "" : r.layers,
-        r.method == "hard_shadow" ? "" : std::to_string(r.rays), std::to_string(r.map),
-        r.deferred ? "1" : "0", r.filter ? "1" : "0", std::to_string(r.frames),
-        fixed(r.msMedian, 3), fixed(r.msMin, 3), fixed(r.msMax, 3), fixed(r.traceMsMedian, 3),
-        fixed(r.fetchesPerRay, 3),
-        fixed(r.raysTraced, 0), fixed(r.error.rmse, 6), fixed(r.error.max, 6),
+        joined(r.sets, " "), joined(r.stages, "+"), std::to_string(r.map), std::to_string(r.frames),
+        fixed(r.msMedian, 3), fixed(r.msMin, 3), fixed(r.msMax, 3), stageTimes(r, "; "),
+        fixed(r.error.rmse, 6), fixed(r.error.max, 6),
         fixed(r.error.meanAbsInShadow, 6), fixed(r.error.p99, 6), fixed(r.error.meanSigned, 6),
         std::to_string(r.error.pixels), std::to_string(r.error.pixelsInShadow),
         std::to_string(info.referenceSamples * info.referenceSamples), fixed(r.referenceSeconds, 3),
@@ -60,10 +72,16 @@ std::string csv(const BenchRunInfo& info, const std::vector<BenchSetup>& setups,
   return out.str();
 }
 
+int rays(const BenchResult& r) {
+  const auto it = r.params.find("trace.rays");
+  return it == r.params.end() ? 0 : std::atoi(it->second.c_str());
+}
+
+// The Monte Carlo tables below: a result by family, rays per side and map size.
 const BenchResult* find(const std::vector<BenchResult>& results, size_t setup,
                         const std::string& family, int rays, int map) {
   for (const BenchResult& r : results)
-    if (r.setup == setup && r.family == family && (rays == 0 || r.rays == rays) && r.map == map)
+    if (r.setup == setup && r.family == family && (rays == 0 || ::rays(r) == rays) && r.map == map)
       return &r;
   return nullptr;
 }
@@ -159,7 +177,7 @@ void attyTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
 PlotSpec scatterOf(const std::vector<BenchResult>& results, size_t setup, const std::string& title) {
   PlotSpec spec;
   spec.title = title;
-  spec.xLabel = "milliseconds per frame (median, log scale)";
+  spec.xLabel = "milliseconds per frame (median over the method's stages, log scale)";
   spec.yLabel = "mean |visibility error| in shadow (Atty 2006), log";
   spec.frontierCaption = "Pareto frontier (ms, error):";
   spec.logY = true;  // the hard shadow's error is ~10x the Monte Carlo errors
@@ -176,10 +194,8 @@ PlotSpec scatterOf(const std::vector<BenchResult>& results, size_t setup, const 
 
 std::vector<std::string> benchCsvColumns() {
   return {"setup", "scene", "eye_width", "eye_height", "setup_axis", "setup_value", "config",
-          "method", "family", "search", "layers", "rays_per_side", "shadow_map", "deferred",
-          "filter", "frames", "ms_median", "ms_min", "ms_max", "trace_ms_median", "fetches_per_ray",
-          "rays_traced",
-          "rmse", "max_error", "mean_abs_error_in_shadow", "p99_abs_error", "mean_signed_error",
+          "method", "family", "sets", "timed_stages", "shadow_map", "frames", "ms_median", "ms_min",
+          "ms_max", "stage_ms_median", "rmse", "max_error", "mean_abs_error_in_shadow", "p99_abs_error", "mean_signed_error",
           "pixels", "pixels_in_shadow", "reference_samples", "reference_seconds",
           "reference_cache", "pareto"};
 }
@@ -207,9 +223,12 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
                                                      const std::vector<BenchResult>& results) {
   std::filesystem::create_directories(directory);
   std::vector<std::filesystem::path> written;
+  writeTextFile(directory / "results.json", benchJson(info, setupInfos(setups), results));
+  written.push_back(directory / "results.json");
   writeTextFile(directory / "results.csv", csv(info, setups, results));
   written.push_back(directory / "results.csv");
 
+  // 1. How it was measured, and the stages each method's time covers (from the graph).
   std::ostringstream md;
   md << "# Speed against error: `" << info.scene << "`, preset `" << info.preset << "`\n\n"
      << "Produced by `" << info.commandLine << "` on " << info.started << " in "
@@ -220,19 +239,25 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
      << "- Time: median of " << info.frames << " frames per configuration, taken in "
      << info.rounds << " rounds over all configurations of a setup (so load changes on the "
         "shared cores hit all of them alike), after " << info.warmup << " warm-up frames (1 after "
-        "each switch); glFinish + steady clock per stage, summed over the stages the method "
-        "needs: hard shadow = gbuffer + light_layers + hard_shadow + composite; Monte Carlo = "
-        "gbuffer + light_layers + nbuffer + classify + trace (+ filter when on) + composite. "
-        "Not counted: hash (a view), reference, error.\n"
+        "each switch); each frame runs only the stages the method's visibility depends on in "
+        "the stage graph, timed with glFinish + steady clock per stage and summed. Not counted: "
+        "composite, hash, reference, error.\n";
+  std::vector<std::string> charged;
+  for (const BenchResult& r : results) {
+    const std::string line = "`" + r.method + "`: " + joined(r.stages, " + ");
+    if (std::find(charged.begin(), charged.end(), line) == charged.end()) charged.push_back(line);
+  }
+  md << "- Stages timed per method (its visibility's dependencies under the configuration's "
+        "parameters): " << joined(charged, "; ") << ".\n"
      << "- Error: against the exact reference (" << info.referenceSamples << "x"
      << info.referenceSamples << " stratified light samples per pixel, real triangles, Embree "
         "on the CPU), over receiver pixels inside the light's map, on one frame (frame key 0). "
         "mean |e| in shadow = mean |error| over pixels whose reference < 1 (Atty et al. 2006 "
         "§4.2.1); RMSE and max by OpenImageIO `compare`; p99 = 99th percentile of |error|.\n"
-     << "- fetches/ray: texel fetches per ray set up, early outs included (hard shadow: one per pixel).\n"
      << "- Pareto: no other configuration of the same setup is both faster and more accurate "
-        "(ms, mean |e| in shadow).\n\n";
+        "(ms, mean |e| in shadow). Every number is also in results.json and results.csv.\n\n";
 
+  // 2. One table per setup.
   for (size_t s = 0; s < setups.size(); ++s) {
     double referenceSeconds = 0;
     int cache = 2;
@@ -241,37 +266,38 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
     md << "## " << setups[s].label << "\n\nReference: "
        << (cache == 0 ? "computed in " + fixed(referenceSeconds, 2) + " s"
                       : "from the disk cache (it took " + fixed(referenceSeconds, 2) + " s to trace)")
-       << ".\n\n| configuration | ms/frame | min-max | trace ms | fetches/ray | RMSE | max | mean abs e in shadow | p99 | Pareto |\n"
+       << ".\n\n| configuration | method | ms/frame | min-max | stage medians (ms) | RMSE | max | mean abs e in shadow | p99 | Pareto |\n"
        << "|---|---|---|---|---|---|---|---|---|---|\n";
     std::vector<std::string> frontier;
     for (const BenchResult& r : results) {
       if (r.setup != s) continue;
-      md << "| " << r.label << " | " << fixed(r.msMedian, 1) << " | " << fixed(r.msMin, 0) << "-"
-         << fixed(r.msMax, 0) << " | " << (r.method == "hard_shadow" ? "-" : fixed(r.traceMsMedian, 1))
-         << " | " << fixed(r.fetchesPerRay, 1) << " | " << fixed(r.error.rmse, 4)
-         << " | " << fixed(r.error.max, 3) << " | " << fixed(r.error.meanAbsInShadow, 4) << " | "
-         << fixed(r.error.p99, 3) << " | " << (r.pareto ? "**yes**" : "") << " |\n";
+      md << "| " << r.label << " | " << r.method << " | " << fixed(r.msMedian, 1) << " | "
+         << fixed(r.msMin, 0) << "-" << fixed(r.msMax, 0) << " | " << stageTimes(r) << " | "
+         << fixed(r.error.rmse, 4) << " | " << fixed(r.error.max, 3) << " | "
+         << fixed(r.error.meanAbsInShadow, 4) << " | " << fixed(r.error.p99, 3) << " | "
+         << (r.pareto ? "**yes**" : "") << " |\n";
       if (r.pareto) frontier.push_back(r.label);
     }
-    md << "\nPareto frontier: ";
-    for (size_t i = 0; i < frontier.size(); ++i) md << (i ? ", " : "") << frontier[i];
-    md << ".\n\n";
+    md << "\nPareto frontier: " << joined(frontier, ", ") << ".\n\n";
     // Speed ratio linear/binary : hierarchical at equal rays (thesis: 3.1x, dragon, 3x3).
     std::ostringstream ratios;
     for (const BenchResult& h : results) {
       if (h.setup != s || h.family != "hierarchical 2L") continue;
       for (const char* lb : {"linear/binary 2L", "linear/binary 3L"})
-        if (const BenchResult* other = find(results, s, lb, h.rays, h.map))
-          ratios << "| " << h.rays << "x" << h.rays << " | " << h.map << " | " << lb << " | "
+        if (const BenchResult* other = find(results, s, lb, rays(h), h.map)) {
+          const double otherTrace = other->stageMs.count("trace") ? other->stageMs.at("trace") : 0;
+          const double hTrace = h.stageMs.count("trace") ? h.stageMs.at("trace") : 0;
+          ratios << "| " << rays(h) << "x" << rays(h) << " | " << h.map << " | " << lb << " | "
                  << fixed(other->msMedian, 1) << " | " << fixed(h.msMedian, 1) << " | **"
-                 << fixed(other->msMedian / h.msMedian, 2) << "x** | " << fixed(other->traceMsMedian, 1)
-                 << " | " << fixed(h.traceMsMedian, 1) << " | **"
-                 << fixed(other->traceMsMedian / std::max(h.traceMsMedian, 1e-9), 2) << "x** |\n";
+                 << fixed(other->msMedian / h.msMedian, 2) << "x** | " << fixed(otherTrace, 1)
+                 << " | " << fixed(hTrace, 1) << " | **"
+                 << fixed(otherTrace / std::max(hTrace, 1e-9), 2) << "x** |\n";
+        }
     }
     if (!ratios.str().empty())
       md << "Speed ratio hierarchical : linear/binary at equal rays (time of linear/binary "
             "divided by time of hierarchical 2 layers; the thesis reports 3.1x on its dragon "
-            "at 3x3, Table 4.1), for the whole frame and for the trace stage alone:\n\n"
+            "at 3x3, Table 4.1), for the method's stages and for the trace stage alone:\n\n"
             "| rays | map | versus | linear/binary ms | hierarchical ms | ratio | "
             "linear/binary trace ms | hierarchical trace ms | trace ratio |\n"
             "|---|---|---|---|---|---|---|---|---|\n" << ratios.str() << "\n";
@@ -279,19 +305,19 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
   if (info.preset == "thesis-table-4.1") thesisTables(md, setups, results);
   if (info.preset == "atty-4.2") attyTables(md, setups, results);
 
-  // Plots: a speed-vs-error scatter for each setup with several configurations; for sweeps
-  // of a setup axis, error against the axis value.
-  std::string textNote;
+  // 3. Charts: a speed-vs-error scatter for each setup with several configurations; for
+  //    sweeps of a setup axis, error against the axis value.
+  std::vector<std::string> charts;
   for (size_t s = 0; s < setups.size(); ++s) {
     size_t count = 0;
     for (const BenchResult& r : results) count += r.setup == s;
-    // Setups of a scene/light sweep get the error-against-value plots below instead.
+    // Setups of a scene/light sweep get the error-against-value charts below instead.
     const bool sweptSetup = !setups[s].axis.empty() && setups[s].axis != "map";
     if (count < 3 || (sweptSetup && count < 6)) continue;
-    const auto path = directory / (s == 0 ? std::string("speed_vs_error.png")
-                                          : "speed_vs_error_" + fileSafe(setups[s].label) + ".png");
-    textNote = writeScatterPlot(path, scatterOf(results, s, "Speed against error: " + setups[s].label));
-    written.push_back(path);
+    const std::string stem = s == 0 ? "speed_vs_error" : "speed_vs_error_" + fileSafe(setups[s].label);
+    for (const auto& path : writePlot(directory / stem, scatterOf(results, s, "Speed against error: " + setups[s].label)))
+      written.push_back(path);
+    charts.push_back(stem);
   }
   std::map<std::string, PlotSpec> axisPlots;
   for (const BenchResult& r : results) {
@@ -308,14 +334,15 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
     spec.points.push_back({setup.axisValue, r.error.meanAbsInShadow, int(it - spec.seriesNames.begin()), r.label, false});
   }
   for (const auto& [axis, spec] : axisPlots) {
-    const auto path = directory / ("error_vs_" + fileSafe(axis) + ".png");
-    textNote = writeScatterPlot(path, spec);
-    written.push_back(path);
+    const std::string stem = "error_vs_" + fileSafe(axis);
+    for (const auto& path : writePlot(directory / stem, spec)) written.push_back(path);
+    charts.push_back(stem);
   }
-  if (!textNote.empty()) md << "Plots: ";
-  for (const auto& path : written)
-    if (path.extension() == ".png") md << "![" << path.filename().string() << "](" << path.filename().string() << ") ";
-  if (!textNote.empty()) md << "\n\n(plot text: " << textNote << ")\n";
+  if (!charts.empty()) {
+    md << "Charts (drawn with cairo; each also as .svg and .pdf): ";
+    for (const std::string& stem : charts) md << "![" << stem << "](" << stem << ".png) ";
+    md << "\n";
+  }
   writeTextFile(directory / "results.md", md.str());
   written.push_back(directory / "results.md");
   return written;

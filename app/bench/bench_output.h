@@ -1,20 +1,15 @@
-// The files `penumbra bench` writes: results.csv (one row per configuration, fixed
-// columns), results.md (tables a report can include, with the machine and method), and
-// speed_vs_error*.png / error_vs_*.png (app/bench/plot_png.h).
+// The files `penumbra bench` writes: results.json (everything, app/bench/bench_json.h),
+// results.csv (one row per configuration, fixed columns), results.md (tables a report can
+// include, with the machine, the method and the stages each method's time covers) and the
+// charts speed_vs_error* / error_vs_* as PNG, SVG and PDF (app/bench/plot.h).
 #pragma once
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "bench/bench_configs.h"
+#include "bench/bench_json.h"
 #include "bench/bench_report.h"
-
-struct BenchRunInfo {
-  std::string scene, preset, commandLine, renderer, cpu, started;
-  std::string loadBefore, loadAfter;  // /proc/loadavg: the cores are shared
-  int frames = 0, warmup = 0, rounds = 1, referenceSamples = 0;
-  double seconds = 0;
-};
 
 std::vector<std::string> benchCsvColumns();
 

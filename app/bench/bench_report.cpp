@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "bench/bench_configs.h"
+#include "bench/bench_measure.h"
 #include "bench/bench_output.h"
 #include "gl/gl_context.h"
 #include "core/pipeline.h"
@@ -19,12 +20,6 @@
 #include "scene/scene_builtin.h"
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 std::string firstLine(const std::string& path, const std::string& prefix = "") {
   std::ifstream file(path);
@@ -42,70 +37,6 @@ std::string loadAverage() {
   return line.substr(0, end);
 }
 
-// Every parameter back to its declared default between configurations.
-struct Defaults {
-  std::vector<std::pair<Param*, double>> values;
-  explicit Defaults(const Pipeline& pipeline) {
-    for (const std::string& key : pipeline.paramKeys())
-      values.push_back({&pipeline.param(key), pipeline.param(key).value});
-  }
-  void restore() const {
-    for (const auto& [param, value] : values) param->value = value;
-  }
-};
-
-std::string applySets(Pipeline& pipeline, const std::vector<std::string>& sets) {
-  for (const std::string& assignment : sets)
-    if (std::string problem = pipeline.set(assignment); !problem.empty()) return problem;
-  return "";
-}
-
-std::string family(const BenchResult& r) {
-  if (r.method == "hard_shadow") return "hard shadow";
-  const int layers = r.layers == "one" ? 1 : r.layers == "two" ? 2 : 3;
-  std::string name = (r.search == "linear_binary" ? "linear/binary" : r.search) + " " +
-                     std::to_string(layers) + "L";
-  if (!r.deferred) name += " forward";
-  if (!r.filter) name += " unfiltered";
-  return name;
-}
-
-// The configuration's parameters and its error against the reference, on one frame (key
-// 0; the reference is computed on the first call of a setup, then comes from memory).
-BenchResult measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchConfig& config,
-                         const BenchOptions& options) {
-  BenchResult r;
-  r.setup = setup;
-  r.label = config.label;
-  r.method = config.method;
-  r.search = pipeline.param("trace.search").asEnum();
-  r.layers = pipeline.param("light.layers").asEnum();
-  r.rays = pipeline.param("trace.rays").asInt();
-  r.map = pipeline.param("light.resolution").asInt();
-  r.deferred = pipeline.param("trace.deferred").asBool();
-  r.filter = pipeline.param("filter.enabled").asBool();
-  r.family = family(r);
-  pipeline.param("reference.enabled").value = 1;
-  pipeline.set("reference.samples=" + std::to_string(options.referenceSamples));
-  frame.frameKey = 0;
-  pipeline.run(frame);
-  const auto& c = frame.counters;
-  if (!c.count("error.rmse"))
-    throw std::runtime_error("no error metrics for " + config.label + " (reference missing)");
-  r.error.rmse = c.at("error.rmse");
-  r.error.max = c.at("error.max");
-  r.error.meanAbsInShadow = c.at("error.meanAbsInShadow");
-  r.error.p99 = c.at("error.p99");
-  r.error.meanSigned = c.at("error.meanSigned");
-  r.error.pixels = size_t(c.at("error.pixels"));
-  r.error.pixelsInShadow = size_t(c.at("error.pixelsInShadow"));
-  r.referenceSeconds = c.at("reference.seconds");
-  r.referenceCache = int(c.at("reference.cacheHit"));
-  r.fetchesPerRay = r.method == "hard_shadow" ? 1.0 : c.at("trace.fetchesPerRay");
-  r.raysTraced = r.method == "hard_shadow" ? 0.0 : c.at("trace.rays");
-  return r;
-}
-
 // The tracing time recorded next to a cached reference (0 if unknown).
 double cachedReferenceSeconds(const std::string& key) {
   try {
@@ -118,32 +49,24 @@ double cachedReferenceSeconds(const std::string& key) {
 
 }  // namespace
 
-std::vector<std::string> timedStages(const std::string& method, bool filter) {
-  if (method == "hard_shadow") return {"gbuffer", "light_layers", "hard_shadow", "composite"};
-  std::vector<std::string> stages = {"gbuffer", "light_layers", "nbuffer", "classify", "trace"};
-  if (filter) stages.push_back("filter");
-  stages.push_back("composite");
-  return stages;
-}
-
 int runBench(const BenchOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   // 1. The plan; every assignment checked before any GL work.
   std::vector<std::string> warnings;
   Scene scene;
   std::vector<BenchSetup> setups;
+  std::unique_ptr<GlContext> context;  // declared before the pipeline: GL objects die first
+  Pipeline pipeline;
+  const ParamSnapshot defaults(pipeline);
   try {
     scene = loadScene(options.scene, warnings);
     BenchPlanOptions planOptions{options.preset, options.sweeps, options.width, options.height};
-    setups = makeBenchPlan(scene, planOptions);
+    setups = makeBenchPlan(scene, planOptions, pipeline);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "penumbra bench: %s\n", error.what());
     return 2;
   }
   for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
-  std::unique_ptr<GlContext> context;  // declared before the pipeline: GL objects die first
-  Pipeline pipeline;
-  const Defaults defaults(pipeline);
   size_t configurationCount = 0;
   for (const BenchSetup& setup : setups)
     for (const BenchConfig& config : setup.configs) {
@@ -245,7 +168,7 @@ int runBench(const BenchOptions& options) {
       frame.eyeWidth = setup.width;
       frame.eyeHeight = setup.height;
       const size_t first = results.size();
-      std::vector<std::vector<double>> totals(setup.configs.size()), traces(setup.configs.size());
+      std::vector<FrameTimes> times(setup.configs.size());
       for (int round = 0; round < rounds; ++round) {
         const int share = options.frames / rounds + (round < options.frames % rounds ? 1 : 0);
         for (size_t k = 0; k < setup.configs.size(); ++k) {
@@ -253,34 +176,24 @@ int runBench(const BenchOptions& options) {
           defaults.restore();
           applySets(pipeline, options.sets);
           applySets(pipeline, config.sets);
-          if (round == 0) results.push_back(measureError(pipeline, frame, s, config, options));
+          if (round == 0) {
+            results.emplace_back();
+            if (!measureError(pipeline, frame, s, config, options.referenceSamples, results.back()))
+              throw std::runtime_error("reference still pending for " + config.label);
+          }
           const BenchResult& r = results[first + k];
-          const std::vector<std::string> stages = timedStages(r.method, r.filter);
           pipeline.param("reference.enabled").value = 0;
           const int warmup = round == 0 ? options.warmup : 1;
-          for (int i = 0; i < warmup + share; ++i) {
-            frame.frameKey = std::uint32_t(1 + round * 1000 + i);
-            pipeline.run(frame);
-            if (i < warmup) continue;
-            double total = 0;
-            for (const StageTime& time : pipeline.lastTimes()) {
-              if (std::find(stages.begin(), stages.end(), time.stage) != stages.end())
-                total += time.milliseconds;
-              if (time.stage == "trace") traces[k].push_back(time.milliseconds);
-            }
-            totals[k].push_back(total);
-          }
+          for (int i = 0; i < warmup + share; ++i)
+            timeFrame(pipeline, frame, r, std::uint32_t(1 + round * 1000 + i),
+                      i < warmup ? nullptr : &times[k]);
         }
         std::printf("  %s: round %d/%d done\n", setup.label.c_str(), round + 1, rounds);
         std::fflush(stdout);
       }
       for (size_t k = 0; k < setup.configs.size(); ++k) {
         BenchResult& r = results[first + k];
-        r.frames = int(totals[k].size());
-        r.msMedian = median(totals[k]);
-        r.msMin = *std::min_element(totals[k].begin(), totals[k].end());
-        r.msMax = *std::max_element(totals[k].begin(), totals[k].end());
-        r.traceMsMedian = r.method == "hard_shadow" ? 0.0 : median(traces[k]);
+        summarize(times[k], r);
         if (r.referenceCache == 2) r.referenceSeconds = cachedSeconds[s];
         std::printf("[%3zu/%zu] %s | %-40s %8.1f ms  mean|e| in shadow %.4f  RMSE %.4f\n", ++done,
                     configurationCount, setup.label.c_str(), r.label.c_str(), r.msMedian,

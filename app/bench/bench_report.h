@@ -1,10 +1,12 @@
 // `penumbra bench`: speed against error (DESIGN.md §7). For each setup of the plan
 // (app/bench/bench_configs.h) the exact reference is computed once (stage `reference`, cached on
 // disk); every configuration is timed (median of N frames after warm-up, glFinish + steady
-// clock per stage, summed over the stages the method needs) and compared with the
-// reference on one more frame. Writes results.csv, results.md and speed_vs_error.png into
-// --out. A benchmark program: it writes numbers and asserts nothing.
+// clock per stage, summed over the stages the method's visibility depends on in the graph)
+// and compared with the reference on one more frame. Writes results.json, results.csv,
+// results.md and the plots (PNG, SVG, PDF) into --out. A benchmark program: it writes
+// numbers and asserts nothing.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,23 +28,32 @@ struct BenchOptions {
 
 int runBench(const BenchOptions& options);
 
+class Pipeline;
+
 // One measured configuration.
 struct BenchResult {
   size_t setup = 0;                 // index into the plan
-  std::string label, method;        // method: "hard_shadow" or "monte_carlo"
-  std::string search, layers;       // from the pipeline's parameters after the sets
-  int rays = 0, map = 0;
-  bool deferred = true, filter = true;
-  std::string family;               // "hierarchical 2L", "hard shadow", ... (plot series)
+  std::string label, method;        // method: the stage whose visibility is measured
+  std::string family;               // plot series ("hierarchical 2L", or the method's name)
+  std::vector<std::string> sets;    // the configuration's assignments (--set ones first)
+  std::vector<std::string> stages;  // the stages timed: the method's dependency closure
+  std::map<std::string, std::string> params;  // every parameter of those stages, after the sets
+  int map = 0;                      // light.resolution
   int frames = 0;
-  double msMedian = 0, msMin = 0, msMax = 0;
-  double traceMsMedian = 0;         // the trace stage alone (Monte Carlo)
-  double fetchesPerRay = 0, raysTraced = 0;
+  double msMedian = 0, msMin = 0, msMax = 0;  // summed over `stages`
+  std::map<std::string, double> stageMs;      // the median of each timed stage alone
+  std::map<std::string, double> counters;     // the timed stages' counters on the error frame
   ErrorMetrics error;
   double referenceSeconds = 0;      // tracing time (0 when cached)
   int referenceCache = 0;           // 0 computed, 1 memory, 2 disk
   bool pareto = false;              // on the frontier of its setup (ms, mean |e| in shadow)
+
+  double counter(const std::string& name) const {
+    const auto it = counters.find(name);
+    return it == counters.end() ? 0.0 : it->second;
+  }
 };
 
-// Stages whose times make up a method's milliseconds per frame.
-std::vector<std::string> timedStages(const std::string& method, bool filter);
+// The stages whose times make up a method's milliseconds per frame: every stage its
+// visibility depends on under the pipeline's current parameters, in execution order.
+std::vector<std::string> timedStages(const Pipeline& pipeline, const std::string& method);

@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "bench/bench_measure.h"
 #include "gl/gl_context.h"
 #include "io/image_export.h"
 #include "core/pipeline.h"
@@ -13,17 +14,33 @@
 
 namespace {
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
+// One row: a method and its assignments. The Monte Carlo method (stage `filter`, which
+// depends on classify and trace) is swept over search type, rays and deferred; every other
+// method of the graph runs with its defaults.
 struct Config {
-  std::string search;
-  int rays;
-  bool deferred;
+  std::string label, method;
+  std::vector<std::string> sets;
 };
+
+std::vector<Config> configsOf(const Pipeline& pipeline) {
+  std::vector<Config> configs;
+  const std::vector<std::string> methods = pipeline.methods();
+  const bool monteCarlo = std::find(methods.begin(), methods.end(), "filter") != methods.end() &&
+                          pipeline.hasStage("trace");
+  if (monteCarlo)
+    for (int rays : {2, 3})
+      for (const auto& [search, deferred] : std::vector<std::pair<std::string, bool>>{
+               {"linear", true}, {"linear_binary", true}, {"hierarchical", true}, {"hierarchical", false}})
+        configs.push_back({search + " " + std::to_string(rays) + "x" + std::to_string(rays) +
+                               (deferred ? "" : " forward"),
+                           "filter",
+                           {"trace.search=" + search, "trace.rays=" + std::to_string(rays),
+                            std::string("trace.deferred=") + (deferred ? "true" : "false")}});
+  for (const std::string& method : methods)
+    if (!(monteCarlo && (method == "filter" || method == "trace")))
+      configs.push_back({method + " (defaults)", method, {}});
+  return configs;
+}
 
 std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> parts;
@@ -31,6 +48,12 @@ std::vector<std::string> split(const std::string& text) {
   for (std::string part; std::getline(stream, part, ',');)
     if (!part.empty()) parts.push_back(part);
   return parts;
+}
+
+std::string cell(double value, const char* format = "%.1f") {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
 }
 
 }  // namespace
@@ -42,20 +65,15 @@ int runBenchStages(const BenchStagesOptions& options) {
     std::fprintf(stderr, "penumbra bench-stages: %s\n", error.c_str());
     return 1;
   }
-  const std::vector<std::string> stageOrder = {"gbuffer", "hash", "light_layers", "nbuffer",
-                                               "classify", "trace", "filter", "composite"};
-  std::ostringstream table;
-  table << "# Stage benchmark\n\nMachine: " << context->renderer()
-        << (std::getenv("LP_NUM_THREADS") ? std::string(", LP_NUM_THREADS=") + std::getenv("LP_NUM_THREADS") : "")
-        << ". Eye " << options.width << "x" << options.height << ", shadow map " << options.mapSize
-        << "^2, median of " << options.frames << " frames after " << options.warmup
-        << " warm-up frames (glFinish + steady clock per stage). Produced by `penumbra bench-stages`.\n\n"
-        << "| scene | search | rays | deferred | ";
-  for (const std::string& stage : stageOrder) table << stage << " ms | ";
-  table << "total ms | fetches/ray | fetches/searched ray | spared by classify |\n|";
-  for (size_t i = 0; i < stageOrder.size() + 8; ++i) table << "---|";
-  table << "\n";
-
+  // 1. Every row measured first (the columns are the stages any row's method needs).
+  struct Row {
+    std::string scene, label;
+    std::map<std::string, double> stageMs;
+    double total = 0;
+    std::map<std::string, double> counters;
+  };
+  std::vector<Row> rows;
+  std::vector<std::string> columns;
   for (const std::string& sceneName : split(options.scenes)) {
     std::vector<std::string> warnings;
     Scene scene;
@@ -66,58 +84,77 @@ int runBenchStages(const BenchStagesOptions& options) {
       return 2;
     }
     GpuScene gpuScene(scene);
-    for (const Config& config : std::vector<Config>{{"linear", 2, true}, {"linear_binary", 2, true},
-                                                    {"hierarchical", 2, true}, {"hierarchical", 2, false},
-                                                    {"linear", 3, true}, {"linear_binary", 3, true},
-                                                    {"hierarchical", 3, true}, {"hierarchical", 3, false}}) {
+    const std::vector<Config> configs = configsOf(Pipeline{});
+    for (const Config& config : configs) {
       Pipeline pipeline;
       std::vector<std::string> assignments = options.sets;
-      for (const std::string& each :
-           {"trace.search=" + config.search, "trace.rays=" + std::to_string(config.rays),
-            std::string("trace.deferred=") + (config.deferred ? "true" : "false"),
-            "light.resolution=" + std::to_string(options.mapSize)})
-        assignments.push_back(each);
-      for (const std::string& assignment : assignments)
-        if (std::string problem = pipeline.set(assignment); !problem.empty()) {
-          std::fprintf(stderr, "penumbra bench-stages: %s\n", problem.c_str());
-          return 2;
-        }
+      for (const std::string& each : config.sets) assignments.push_back(each);
+      assignments.push_back("light.resolution=" + std::to_string(options.mapSize));
+      if (std::string problem = applySets(pipeline, assignments); !problem.empty()) {
+        std::fprintf(stderr, "penumbra bench-stages: %s\n", problem.c_str());
+        return 2;
+      }
       Frame frame(scene, gpuScene, pipeline);
       frame.eyeWidth = options.width;
       frame.eyeHeight = options.height;
-      std::map<std::string, std::vector<double>> times;
-      std::vector<double> totals;
-      for (int i = 0; i < options.warmup + options.frames; ++i) {
-        frame.frameKey = std::uint32_t(i);
-        pipeline.run(frame);
-        if (i < options.warmup) continue;
-        double total = 0;
-        for (const StageTime& time : pipeline.lastTimes()) {
-          times[time.stage].push_back(time.milliseconds);
-          total += time.milliseconds;
-        }
-        totals.push_back(total);
-      }
-      const auto& c = frame.counters;
-      const double receivers = c.at("classify.lit") + c.at("classify.penumbra") + c.at("classify.umbra");
-      table << "| " << sceneName << " | " << config.search << " | " << config.rays << "x"
-            << config.rays << " | " << (config.deferred ? "yes" : "no") << " | ";
-      char cell[64];
-      for (const std::string& stage : stageOrder) {
-        std::snprintf(cell, sizeof cell, "%.1f", median(times[stage]));
-        table << cell << " | ";
-      }
-      std::snprintf(cell, sizeof cell, "%.1f | %.2f | %.2f | ", median(totals),
-                    c.at("trace.rays") ? c.at("trace.fetches") / c.at("trace.rays") : 0.0,
-                    c.at("trace.raysSearched") ? c.at("trace.fetches") / c.at("trace.raysSearched") : 0.0);
-      table << cell;
-      std::snprintf(cell, sizeof cell, "%.1f%% |\n",
-                    config.deferred && receivers > 0 ? 100.0 * c.at("trace.pixelsClassified") / receivers : 0.0);
-      table << cell;
-      std::printf("%s %s %dx%d %s: %.1f ms per frame\n", sceneName.c_str(), config.search.c_str(),
-                  config.rays, config.rays, config.deferred ? "deferred" : "forward", median(totals));
+      BenchResult timed;
+      timed.method = config.method;
+      timed.label = config.label;
+      timed.stages = timedStages(pipeline, config.method);
+      FrameTimes times;
+      for (int i = 0; i < options.warmup + options.frames; ++i)
+        timeFrame(pipeline, frame, timed, std::uint32_t(i), i < options.warmup ? nullptr : &times);
+      summarize(times, timed);
+      for (const std::string& stage : pipeline.dependencies({pipeline.methodOutput(config.method)}))
+        if (std::find(columns.begin(), columns.end(), stage) == columns.end()) columns.push_back(stage);
+      rows.push_back({sceneName, config.label, timed.stageMs, timed.msMedian, frame.counters});
+      std::printf("%s %s: %.1f ms per frame\n", sceneName.c_str(), config.label.c_str(), timed.msMedian);
       std::fflush(stdout);
     }
+  }
+  // Columns in execution order.
+  {
+    std::vector<std::string> ordered;
+    const Pipeline graph;
+    for (const auto& stage : graph.stages())
+      if (std::find(columns.begin(), columns.end(), stage->name()) != columns.end())
+        ordered.push_back(stage->name());
+    columns = ordered;
+  }
+
+  // 2. The table.
+  std::ostringstream table;
+  table << "# Stage benchmark\n\nMachine: " << context->renderer()
+        << (std::getenv("LP_NUM_THREADS") ? std::string(", LP_NUM_THREADS=") + std::getenv("LP_NUM_THREADS") : "")
+        << ". Eye " << options.width << "x" << options.height << ", shadow map " << options.mapSize
+        << "^2, median of " << options.frames << " frames after " << options.warmup
+        << " warm-up frames (glFinish + steady clock per stage). Each row runs only the stages "
+           "its method's visibility depends on (the stage graph); \"-\": not needed by that "
+           "method. Produced by `penumbra bench-stages`.\n\n"
+        << "| scene | configuration | ";
+  for (const std::string& stage : columns) table << stage << " ms | ";
+  table << "total ms | fetches/ray | fetches/searched ray | spared by classify |\n|";
+  for (size_t i = 0; i < columns.size() + 6; ++i) table << "---|";
+  table << "\n";
+  for (const Row& row : rows) {
+    table << "| " << row.scene << " | " << row.label << " | ";
+    for (const std::string& stage : columns)
+      table << (row.stageMs.count(stage) ? cell(row.stageMs.at(stage)) : "-") << " | ";
+    table << cell(row.total) << " | ";
+    // Statistics of the Monte Carlo trace and classification, where the method has them.
+    auto counter = [&](const std::string& name) {
+      const auto it = row.counters.find(name);
+      return it == row.counters.end() ? 0.0 : it->second;
+    };
+    const double rays = counter("trace.rays"), searched = counter("trace.raysSearched");
+    const double receivers = counter("classify.lit") + counter("classify.penumbra") + counter("classify.umbra");
+    const bool deferred = row.label.find("forward") == std::string::npos;
+    table << (rays > 0 ? cell(counter("trace.fetches") / rays, "%.2f") : "-") << " | "
+          << (searched > 0 ? cell(counter("trace.fetches") / searched, "%.2f") : "-") << " | "
+          << (row.counters.count("trace.pixelsClassified") && receivers > 0
+                  ? cell(deferred ? 100.0 * counter("trace.pixelsClassified") / receivers : 0.0, "%.1f%%")
+                  : "-")
+          << " |\n";
   }
   table << "\nfetches/ray counts every ray set up (early outs included); fetches/searched ray "
            "only rays that reached a search loop. Forward rows trace every rasterized "

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
   BenchOptions report;
   CLI::App* benchCommand = app.add_subcommand(
       "bench", "speed against error: every configuration timed and compared with the exact "
-               "reference (writes results.csv, results.md, speed_vs_error.png)");
+               "reference (writes results.json, results.csv, results.md and charts as PNG, SVG, PDF)");
   benchCommand->add_option("--scene", report.scene, "built-in scene or scene file")->capture_default_str();
   benchCommand->add_option("--preset", report.preset, "default, minimal, thesis-table-4.1, atty-4.2");
   benchCommand->add_option("--sweep", report.sweeps, "stage.key=v1,v2,... or scene.light_scale=, "

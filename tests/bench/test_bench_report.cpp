@@ -1,9 +1,12 @@
-// `penumbra bench` (app/bench_*.h, app/bench/plot_png.h): a tiny real run through the binary, its
-// CSV's columns and numbers, the refusal when the reference would take too long, the Pareto
-// frontier, the setup modifiers of the presets, and the plot's text in both font modes.
+// `penumbra bench` (app/bench/bench_*.h, app/bench/plot.h): a tiny real run through the binary,
+// its CSV's columns and numbers and its results.json, the refusal when the reference would
+// take too long, the Pareto frontier, the setup modifiers of the presets, and the charts
+// (cairo) as PNG with text, SVG and PDF.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imagebuf.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <filesystem>
@@ -12,9 +15,12 @@
 #include <unistd.h>
 
 #include "bench/bench_configs.h"
+#include "bench/bench_json.h"
 #include "bench/bench_output.h"
+#include "bench/pareto.h"
+#include "bench/plot.h"
+#include "core/pipeline.h"
 #include "scene/light_frame.h"
-#include "bench/plot_png.h"
 #include "scene/scene_builtin.h"
 #include "support/command.h"
 
@@ -64,7 +70,7 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   const auto rows = readCsv(out / "results.csv");
   ASSERT_EQ(rows.size(), 4u) << result.output;  // header + hard shadow + hierarchical x 2 rays
   EXPECT_EQ(rows[0], benchCsvColumns());
-  const std::vector<std::string> numeric = {"ms_median", "ms_min", "ms_max", "fetches_per_ray",
+  const std::vector<std::string> numeric = {"ms_median", "ms_min", "ms_max", "shadow_map",
                                             "rmse", "max_error", "mean_abs_error_in_shadow",
                                             "p99_abs_error", "mean_signed_error", "pixels"};
   for (size_t r = 1; r < rows.size(); ++r) {
@@ -78,10 +84,37 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
     EXPECT_GT(std::stod(rows[r][ms]), 0);
   }
   EXPECT_EQ(rows[1][7], "hard_shadow");
-  EXPECT_EQ(rows[2][11], "1");  // rays_per_side of the swept rows
-  EXPECT_EQ(rows[3][11], "2");
+  const size_t sets = size_t(std::find(rows[0].begin(), rows[0].end(), "sets") - rows[0].begin());
+  EXPECT_NE(rows[2][sets].find("trace.rays=1"), std::string::npos);  // the swept rows
+  EXPECT_NE(rows[3][sets].find("trace.rays=2"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(out / "results.md"));
-  EXPECT_TRUE(std::filesystem::exists(out / "speed_vs_error.png"));
+  for (const char* extension : {".png", ".svg", ".pdf"})
+    EXPECT_TRUE(std::filesystem::exists(out / (std::string("speed_vs_error") + extension))) << extension;
+
+  // results.json holds the same rows, and each method's time covers exactly the stages its
+  // visibility depends on in the graph.
+  std::ifstream json(out / "results.json");
+  std::stringstream text;
+  text << json.rdbuf();
+  BenchRunInfo info;
+  std::vector<BenchSetupInfo> setups;
+  std::vector<BenchResult> results;
+  ASSERT_EQ(parseBenchJson(text.str(), info, setups, results), "");
+  ASSERT_EQ(results.size(), rows.size() - 1);
+  EXPECT_EQ(info.scene, "plate");
+  const Pipeline graph;
+  for (const BenchResult& r : results) {
+    EXPECT_EQ(r.stages, graph.dependencies({graph.methodOutput(r.method)})) << r.label;
+    double sum = 0;
+    for (const std::string& stage : r.stages) {
+      ASSERT_TRUE(r.stageMs.count(stage)) << r.label << " " << stage;
+      sum += r.stageMs.at(stage);
+    }
+    EXPECT_GT(sum, 0) << r.label;
+    EXPECT_TRUE(std::isfinite(r.error.meanAbsInShadow));
+  }
+  EXPECT_EQ(results[2].params.at("trace.rays"), "2");
+  EXPECT_EQ(results[0].params.count("trace.rays"), 0u);  // the hard shadow does not trace
   std::filesystem::remove_all(out);
   std::filesystem::remove_all(cache);
 }
@@ -108,18 +141,19 @@ TEST(BenchReport, UnknownPresetAndBadSweepAreRefused) {
 
 TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   const Scene plate = makeBuiltinScene("plate");
-  const auto thesis = makeBenchPlan(plate, {"thesis-table-4.1", {}, 0, 0});
+  const Pipeline graph;
+  const auto thesis = makeBenchPlan(plate, {"thesis-table-4.1", {}, 0, 0}, graph);
   ASSERT_EQ(thesis.size(), 3u);  // map sweep at 512x384, then 400x300 and 640x512
   EXPECT_EQ(thesis[0].configs.size(), 1u + 6u * 3u);
   EXPECT_EQ(thesis[1].width, 400);
   EXPECT_EQ(thesis[2].height, 512);
-  const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0});
+  const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0}, graph);
   EXPECT_EQ(atty.size(), 1u + 6u + 7u + 5u);
-  const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light.resolution=128,256"}, 0, 0});
+  const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light.resolution=128,256"}, 0, 0}, graph);
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_EQ(swept[1].width, 64);
   EXPECT_EQ(swept[0].configs.size(), 4u);  // both methods use the shadow map
-  EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}), std::invalid_argument);
+  EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}, graph), std::invalid_argument);
 }
 
 // Oracles from the plate's geometry: ground at y = 0, light 1 x 1 at y = 3 facing down.
@@ -152,29 +186,34 @@ TEST(Pareto, FrontierKeepsOnlyUndominatedPoints) {
   EXPECT_EQ(frontier, (std::vector<bool>{false, true, false, true, true}));
 }
 
-// Text must appear whether a font is found or the built-in bitmap font draws it.
-TEST(Plot, AxisLabelsAreDrawnWithAFontOrTheBitmapFont) {
-  for (bool bitmap : {false, true}) {
-    PlotSpec spec;
-    spec.title = "t";
-    spec.xLabel = "milliseconds per frame";
-    spec.yLabel = "error";
-    spec.seriesNames = {"a"};
-    spec.points = {{2, 0.5, 0, "p", true}, {20, 0.1, 0, "q", true}, {30, 0.3, 0, "r", false}};
-    spec.forceBitmapFont = bitmap;
-    const std::filesystem::path path = scratch(bitmap ? "plot-bitmap" : "plot-font").string() + ".png";
-    const std::string how = writeScatterPlot(path, spec);
-    if (bitmap) EXPECT_NE(how.find("bitmap"), std::string::npos);
-    std::printf("plot text: %s\n", how.c_str());
-    OIIO::ImageBuf image(path.string());
-    ASSERT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::FLOAT)) << how;
-    const int w = image.spec().width, h = image.spec().height;
-    int dark = 0;  // the x label's band, centred under the axes
-    for (int y = h - 40; y < h - 10; ++y)
-      for (int x = 96; x < spec.width - 24; ++x) dark += image.getchannel(x, y, 0, 0) < 0.5f;
-    EXPECT_GT(dark, 40) << how;
-    EXPECT_LT(dark, 20000) << how;
-    (void)w;
-    std::filesystem::remove(path);
-  }
+// The chart in three formats; the PNG has text where the x label goes.
+TEST(Plot, ChartsAreWrittenAsPngSvgAndPdfWithText) {
+  PlotSpec spec;
+  spec.title = "t";
+  spec.xLabel = "milliseconds per frame";
+  spec.yLabel = "error";
+  spec.seriesNames = {"a"};
+  spec.points = {{2, 0.5, 0, "p", true}, {20, 0.1, 0, "q", true}, {30, 0.3, 0, "r", false}};
+  const std::filesystem::path stem = scratch("plot");
+  const auto paths = writePlot(stem, spec);
+  ASSERT_EQ(paths.size(), 3u);
+  OIIO::ImageBuf image(paths[0].string());
+  ASSERT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::FLOAT));
+  const int h = image.spec().height;
+  int dark = 0;  // the x label's band, centred under the axes
+  for (int y = h - 40; y < h - 10; ++y)
+    for (int x = 96; x < spec.width - 24; ++x) dark += image.getchannel(x, y, 0, 0) < 0.5f;
+  EXPECT_GT(dark, 40);
+  EXPECT_LT(dark, 20000);
+  auto head = [](const std::filesystem::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::string text(4096, '\0');
+    file.read(text.data(), std::streamsize(text.size()));
+    text.resize(size_t(file.gcount()));
+    return text;
+  };
+  EXPECT_NE(head(paths[1]).find("<svg"), std::string::npos);
+  EXPECT_EQ(head(paths[2]).rfind("%PDF", 0), 0u);
+  for (const auto& path : paths) std::filesystem::remove(path);
+  EXPECT_THROW(writePlot("/nonexistent-directory/x", spec), std::runtime_error);
 }

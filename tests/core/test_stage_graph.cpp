@@ -7,6 +7,7 @@
 #include <set>
 
 #include "bench/bench_configs.h"
+#include "bench/bench_measure.h"
 #include "core/pipeline.h"
 #include "scene/scene_builtin.h"
 #include "scene/scene_stress.h"
@@ -325,4 +326,56 @@ TEST(StageGraph, AnExtraMethodAppearsInCompositeAndError) {
     ++checked;
   }
   EXPECT_GT(checked, 100);
+}
+
+// ... and in `penumbra bench`'s configurations, with its defaults in every preset, timed over
+// exactly the stages its visibility depends on (the G-buffer and itself), and measured
+// against the reference like any other method.
+TEST(StageGraph, AnExtraMethodAppearsInTheBenchPlanAndIsTimedOverItsStages) {
+  auto pipeline = pipelineWithHalfLight();
+  const Scene plate = makeBuiltinScene("plate");
+  for (const std::string& preset : benchPresetNames()) {
+    const std::vector<BenchSetup> plan = makeBenchPlan(plate, {preset, {}, 0, 0}, *pipeline);
+    size_t found = 0;
+    for (const BenchSetup& setup : plan)
+      for (const BenchConfig& config : setup.configs) {
+        if (config.method != "half_light") continue;
+        ++found;
+        EXPECT_EQ(config.family, "half_light");
+        const ParamSnapshot defaults(*pipeline);
+        EXPECT_EQ(applySets(*pipeline, config.sets), "") << config.label;
+        EXPECT_EQ(pipeline->param("error.method").asEnum(), "half_light");
+        EXPECT_EQ(pipeline->param("composite.shadow").asEnum(), "half_light");
+        defaults.restore();
+      }
+    EXPECT_GT(found, 0u) << preset;
+    // The real registry's plan does not have it.
+    for (const BenchSetup& setup : makeBenchPlan(plate, {preset, {}, 0, 0}, Pipeline()))
+      for (const BenchConfig& config : setup.configs) EXPECT_NE(config.method, "half_light");
+  }
+  EXPECT_EQ(timedStages(*pipeline, "half_light"), (std::vector<std::string>{"gbuffer", "half_light"}));
+
+  // Measured like the others: error against the reference, then timed frames.
+  headlessContext();
+  GpuScene gpuScene(plate);
+  Frame frame(plate, gpuScene, *pipeline);
+  frame.eyeWidth = 48, frame.eyeHeight = 32;
+  const auto plan = makeBenchPlan(plate, {"minimal", {}, 48, 32}, *pipeline);
+  const BenchConfig& config = *std::find_if(plan[0].configs.begin(), plan[0].configs.end(),
+                                            [](const BenchConfig& c) { return c.method == "half_light"; });
+  ASSERT_EQ(applySets(*pipeline, config.sets), "");
+  ASSERT_EQ(pipeline->set("reference.cache=false"), "");
+  BenchResult result;
+  ASSERT_TRUE(measureError(*pipeline, frame, 0, config, 2, result));
+  EXPECT_EQ(result.stages, (std::vector<std::string>{"gbuffer", "half_light"}));
+  EXPECT_GT(result.error.pixels, 0u);
+  EXPECT_GT(result.error.meanAbsInShadow, 0.0);  // 0.5 is not the truth anywhere in shadow
+  FrameTimes times;
+  for (int i = 0; i < 3; ++i) timeFrame(*pipeline, frame, result, std::uint32_t(i + 1), &times);
+  summarize(times, result);
+  EXPECT_FALSE(pipeline->lastTime("trace").ran);  // only its own stages ran
+  EXPECT_EQ(result.frames, 3);
+  ASSERT_EQ(result.stageMs.size(), 2u);
+  EXPECT_GE(result.msMedian, result.stageMs.at("half_light"));
+  EXPECT_GT(result.msMedian, 0.0);
 }

@@ -1,98 +1,120 @@
-// The speed-vs-error panel's pure parts (app/window/panels/ui_speed_error.h): reading bench's CSV by its
-// header, the Pareto frontier against a brute-force dominance check, and the match of the
-// current pipeline parameters. No window needed.
+// The speed-vs-error panel's pure parts (app/window/panels/ui_speed_error.h,
+// app/bench/live_bench.h, app/bench/bench_json.h): results.json read back as written, the
+// Pareto frontier against a brute-force dominance check, the match of the current pipeline
+// parameters, and the scene fingerprint that keeps another view's points from being
+// "current". No window needed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "bench/bench_output.h"
+#include "bench/bench_json.h"
+#include "bench/live_bench.h"
+#include "bench/pareto.h"
 #include "core/pipeline.h"
+#include "scene/scene_builtin.h"
 #include "window/panels/ui_speed_error.h"
 
 namespace {
 
-std::string header() {
-  std::string line;
-  for (const std::string& c : benchCsvColumns()) line += (line.empty() ? "" : ",") + c;
-  return line + "\n";
-}
-
-// A row in bench_output.cpp's column order, with the fields the panel reads set.
-std::string row(const std::string& config, const std::string& method, const std::string& search,
-                const std::string& layers, int rays, int map, bool deferred, bool filter,
-                double ms, double error) {
-  std::vector<std::string> f(benchCsvColumns().size());
-  const auto cols = benchCsvColumns();
-  auto set = [&](const std::string& name, const std::string& v) {
-    for (size_t i = 0; i < cols.size(); ++i) if (cols[i] == name) f[i] = v;
-  };
-  set("setup", "\"cube, 256x256\"");  // quoted, with a comma
-  set("config", config);
-  set("method", method);
-  set("search", search);
-  set("layers", layers);
-  set("rays_per_side", rays ? std::to_string(rays) : "");
-  set("shadow_map", std::to_string(map));
-  set("deferred", deferred ? "1" : "0");
-  set("filter", filter ? "1" : "0");
-  set("ms_median", std::to_string(ms));
-  set("mean_abs_error_in_shadow", std::to_string(error));
-  std::string line;
-  for (size_t i = 0; i < f.size(); ++i) line += (i ? "," : "") + f[i];
-  return line + "\n";
+// A result as `penumbra bench` records it: the method and every parameter of its stages
+// after the configuration's sets (no GL: nothing is run).
+BenchResult resultOf(const std::vector<std::string>& sets, double ms, double error) {
+  Pipeline pipeline;
+  for (const std::string& set : sets) EXPECT_EQ(pipeline.set(set), "") << set;
+  const BenchConfig config = currentConfig(pipeline);
+  BenchResult r;
+  r.label = config.label;
+  r.method = config.method;
+  for (const std::string& stage : pipeline.dependencies({pipeline.methodOutput(r.method)}))
+    for (const Param& param : pipeline.stage(stage).params())
+      r.params[stage + "." + param.key] = param.toString();
+  r.msMedian = ms;
+  r.error.meanAbsInShadow = error;
+  r.frames = 3;
+  return r;
 }
 
 }  // namespace
 
-TEST(SpeedErrorPanel, ParsesBenchColumnsAndQuotedFields) {
-  const std::string text = header() + row("hard", "hard_shadow", "", "", 0, 512, true, true, 2, 0.2) +
-                           row("hier 2x2", "monte_carlo", "hierarchical", "two", 2, 512, true, true, 8.5, 0.05);
-  std::vector<SpeedErrorPoint> points;
-  ASSERT_EQ(parseSpeedErrorCsv(text, points), "");
-  ASSERT_EQ(points.size(), 2u);
-  EXPECT_EQ(points[0].setup, "cube, 256x256");
-  EXPECT_EQ(points[1].search, "hierarchical");
-  EXPECT_EQ(points[1].layers, "two");
-  EXPECT_EQ(points[1].rays, 2);
-  EXPECT_DOUBLE_EQ(points[1].msMedian, 8.5);
-  EXPECT_DOUBLE_EQ(points[1].meanAbsErrorInShadow, 0.05);
-  EXPECT_NE(parseSpeedErrorCsv("a,b\n1,2\n", points), "");  // not a bench CSV
+TEST(SpeedErrorPanel, ResultsJsonReadsBackWhatWasWritten) {
+  BenchRunInfo info;
+  info.scene = "cube";
+  info.preset = "minimal";
+  info.frames = 10;
+  std::vector<BenchResult> results = {
+      resultOf({"composite.shadow=hard_shadow"}, 2, 0.2),
+      resultOf({"composite.shadow=filter", "trace.rays=2"}, 8.5, 0.05)};
+  results[1].stages = {"light", "trace"};
+  results[1].stageMs = {{"light", 0.5}, {"trace", 8}};
+  results[1].counters = {{"trace.fetchesPerRay", 4.9}};
+  results[1].pareto = true;
+  const std::string text = benchJson(info, {{"cube, 256x256", "", 0, 256, 256}}, results);
+  BenchRunInfo readInfo;
+  std::vector<BenchSetupInfo> setups;
+  std::vector<BenchResult> read;
+  ASSERT_EQ(parseBenchJson(text, readInfo, setups, read), "");
+  ASSERT_EQ(read.size(), 2u);
+  ASSERT_EQ(setups.size(), 1u);
+  EXPECT_EQ(setups[0].label, "cube, 256x256");
+  EXPECT_EQ(readInfo.frames, 10);
+  EXPECT_EQ(read[1].method, "filter");
+  EXPECT_EQ(read[1].params, results[1].params);
+  EXPECT_EQ(read[1].stages, results[1].stages);
+  EXPECT_DOUBLE_EQ(read[1].stageMs.at("trace"), 8);
+  EXPECT_DOUBLE_EQ(read[1].counter("trace.fetchesPerRay"), 4.9);
+  EXPECT_DOUBLE_EQ(read[1].msMedian, 8.5);
+  EXPECT_DOUBLE_EQ(read[1].error.meanAbsInShadow, 0.05);
+  EXPECT_TRUE(read[1].pareto);
+  EXPECT_NE(parseBenchJson("{\"a\": 1}", readInfo, setups, read), "");  // not a bench file
+  EXPECT_NE(parseBenchJson("not json", readInfo, setups, read), "");
 }
 
 TEST(SpeedErrorPanel, FrontierIsExactlyTheNonDominatedPoints) {
-  std::vector<SpeedErrorPoint> points;
   const double data[][2] = {{1, 0.5}, {2, 0.3}, {3, 0.4}, {4, 0.1}, {5, 0.1}, {2.5, 0.3}, {10, 0.01}, {0.5, 0.9}};
-  for (auto& d : data) {
-    SpeedErrorPoint p;
-    p.msMedian = d[0];
-    p.meanAbsErrorInShadow = d[1];
-    points.push_back(p);
-  }
-  const std::vector<size_t> frontier = paretoFrontier(points);
-  for (size_t i = 0; i < points.size(); ++i) {
+  std::vector<double> ms, error;
+  for (auto& d : data) ms.push_back(d[0]), error.push_back(d[1]);
+  const std::vector<bool> frontier = paretoFrontier(ms, error);
+  size_t count = 0;
+  for (size_t i = 0; i < ms.size(); ++i) {
     bool dominated = false;  // brute force: some other point no worse in both, better in one
-    for (size_t j = 0; j < points.size(); ++j)
-      dominated |= j != i && points[j].msMedian <= points[i].msMedian &&
-                   points[j].meanAbsErrorInShadow <= points[i].meanAbsErrorInShadow &&
-                   (points[j].msMedian < points[i].msMedian ||
-                    points[j].meanAbsErrorInShadow < points[i].meanAbsErrorInShadow);
-    const bool on = std::find(frontier.begin(), frontier.end(), i) != frontier.end();
-    EXPECT_EQ(on, !dominated) << "point " << i;
+    for (size_t j = 0; j < ms.size(); ++j)
+      dominated |= j != i && ms[j] <= ms[i] && error[j] <= error[i] &&
+                   (ms[j] < ms[i] || error[j] < error[i]);
+    EXPECT_EQ(bool(frontier[i]), !dominated) << "point " << i;
+    count += frontier[i];
   }
-  EXPECT_EQ(frontier.size(), 5u);  // 0.5, 1, 2, 4, 10 ms
+  EXPECT_EQ(count, 5u);  // 0.5, 1, 2, 4, 10 ms
 }
 
 TEST(SpeedErrorPanel, MatchesTheCurrentPipelineParameters) {
-  const std::string text = header() + row("hard", "hard_shadow", "", "", 0, 512, true, true, 2, 0.2) +
-                           row("a", "monte_carlo", "hierarchical", "two", 2, 512, true, true, 8, 0.05) +
-                           row("b", "monte_carlo", "hierarchical", "two", 3, 512, true, true, 12, 0.03);
-  std::vector<SpeedErrorPoint> points;
-  ASSERT_EQ(parseSpeedErrorCsv(text, points), "");
+  const std::vector<BenchResult> points = {
+      resultOf({"composite.shadow=hard_shadow"}, 2, 0.2),
+      resultOf({"composite.shadow=filter", "trace.search=hierarchical", "light.layers=two",
+                "trace.rays=2", "light.resolution=512"}, 8, 0.05),
+      resultOf({"composite.shadow=filter", "trace.search=hierarchical", "light.layers=two",
+                "trace.rays=3", "light.resolution=512"}, 12, 0.03)};
   Pipeline pipeline;
-  for (const char* s : {"trace.search=hierarchical", "light.layers=two", "trace.rays=3",
-                        "light.resolution=512", "trace.deferred=true", "filter.enabled=true"})
+  for (const char* s : {"composite.shadow=filter", "trace.search=hierarchical", "light.layers=two",
+                        "trace.rays=3", "light.resolution=512", "trace.deferred=true",
+                        "filter.enabled=true"})
     ASSERT_EQ(pipeline.set(s), "") << s;
-  EXPECT_EQ(matchingPoint(points, pipelineConfigOf(pipeline)), 2);
+  EXPECT_EQ(matchingResult(points, pipeline), 2);
   ASSERT_EQ(pipeline.set("trace.deferred=false"), "");
-  EXPECT_EQ(matchingPoint(points, pipelineConfigOf(pipeline)), -1);  // no exact match
+  EXPECT_EQ(matchingResult(points, pipeline), -1);  // no exact match
+  ASSERT_EQ(pipeline.set("composite.shadow=hard_shadow"), "");
+  EXPECT_EQ(matchingResult(points, pipeline), 0);  // trace's parameters do not matter to it
+  ASSERT_EQ(pipeline.set("hard_shadow.offset=0.05"), "");
+  EXPECT_EQ(matchingResult(points, pipeline), -1);
+}
+
+TEST(SpeedErrorPanel, SceneFingerprintFollowsGeometryLightAndCamera) {
+  const Scene cube = makeBuiltinScene("cube");
+  EXPECT_EQ(sceneFingerprint(cube), sceneFingerprint(makeBuiltinScene("cube")));
+  EXPECT_NE(sceneFingerprint(cube), sceneFingerprint(makeBuiltinScene("plate")));
+  Scene moved = cube;
+  moved.camera.position.x += 0.01f;
+  EXPECT_NE(sceneFingerprint(moved), sceneFingerprint(cube));
+  Scene lit = cube;
+  lit.light.width *= 2;
+  EXPECT_NE(sceneFingerprint(lit), sceneFingerprint(cube));
 }

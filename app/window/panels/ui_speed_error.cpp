@@ -5,154 +5,59 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
+#include <memory>
 #include <sstream>
 
+#include "bench/bench_json.h"
+#include "bench/live_bench.h"
+#include "bench/pareto.h"
 #include "core/pipeline.h"
 #include "window/ui_state.h"
 
-namespace {
-
-// 1. CSV: fields may be quoted ("" inside quotes is a quote), as bench_output.cpp writes them.
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
-    else if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) fields.emplace_back();
-    else if (c != '\r') fields.back() += c;
-  }
-  return fields;
-}
-
-}  // namespace
-
-std::string parseSpeedErrorCsv(const std::string& text, std::vector<SpeedErrorPoint>& points) {
-  points.clear();
-  std::istringstream in(text);
-  std::string line;
-  if (!std::getline(in, line)) return "empty file";
-  std::map<std::string, size_t> column;
-  const std::vector<std::string> header = splitCsvLine(line);
-  for (size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
-  for (const char* name : {"setup", "config", "method", "search", "layers", "rays_per_side",
-                           "shadow_map", "deferred", "filter", "ms_median",
-                           "mean_abs_error_in_shadow"})
-    if (!column.count(name)) return std::string("no column ") + name + " (not a bench results.csv?)";
-  int row = 1;
-  while (std::getline(in, line)) {
-    ++row;
-    if (line.empty()) continue;
-    const std::vector<std::string> f = splitCsvLine(line);
-    if (f.size() != header.size()) return "row " + std::to_string(row) + ": wrong field count";
-    auto get = [&](const char* name) { return f[column[name]]; };
-    auto number = [&](const char* name) { return get(name).empty() ? 0.0 : std::stod(get(name)); };
-    SpeedErrorPoint p;
-    try {
-      p.setup = get("setup");
-      p.config = get("config");
-      p.method = get("method");
-      p.search = get("search");
-      p.layers = get("layers");
-      p.rays = int(number("rays_per_side"));
-      p.shadowMap = int(number("shadow_map"));
-      p.deferred = get("deferred") == "1";
-      p.filter = get("filter") == "1";
-      p.msMedian = number("ms_median");
-      p.meanAbsErrorInShadow = number("mean_abs_error_in_shadow");
-    } catch (const std::exception&) {
-      return "row " + std::to_string(row) + ": not a number";
-    }
-    points.push_back(p);
-  }
-  return "";
-}
-
-std::vector<size_t> paretoFrontier(const std::vector<SpeedErrorPoint>& points) {
-  std::vector<size_t> order(points.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    if (points[a].msMedian != points[b].msMedian) return points[a].msMedian < points[b].msMedian;
-    return points[a].meanAbsErrorInShadow < points[b].meanAbsErrorInShadow;
-  });
-  // Sweep by increasing time: a point is on the frontier if it is more accurate than every
-  // faster point.
-  std::vector<size_t> frontier;
-  double bestError = INFINITY;
-  for (size_t i : order)
-    if (points[i].meanAbsErrorInShadow < bestError) {
-      frontier.push_back(i);
-      bestError = points[i].meanAbsErrorInShadow;
-    }
-  return frontier;
-}
-
-int matchingPoint(const std::vector<SpeedErrorPoint>& points, const PipelineConfig& c) {
-  for (size_t i = 0; i < points.size(); ++i) {
-    const SpeedErrorPoint& p = points[i];
-    if (p.method == "monte_carlo" && p.search == c.search && p.layers == c.layers &&
-        p.rays == c.rays && p.shadowMap == c.shadowMap && p.deferred == c.deferred &&
-        p.filter == c.filter)
-      return int(i);
-  }
-  return -1;
-}
-
-PipelineConfig pipelineConfigOf(const Pipeline& pipeline) {
-  PipelineConfig c;
-  c.search = pipeline.param("trace.search").asEnum();
-  c.layers = pipeline.param("light.layers").asEnum();
-  c.rays = int(pipeline.param("trace.rays").value);
-  c.shadowMap = int(pipeline.param("light.resolution").value);
-  c.deferred = pipeline.param("trace.deferred").value != 0;
-  c.filter = pipeline.param("filter.enabled").value != 0;
-  return c;
-}
-
-std::string newestBenchCsv(const std::filesystem::path& directory) {
+std::string newestBenchJson(const std::filesystem::path& directory) {
   namespace fs = std::filesystem;
   std::error_code error;
   fs::path newest;
   fs::file_time_type newestTime{};
   for (const auto& entry : fs::directory_iterator(directory / "bench", error)) {
-    const fs::path csv = entry.path() / "results.csv";
-    if (!fs::is_regular_file(csv, error)) continue;
-    const auto time = fs::last_write_time(csv, error);
-    if (newest.empty() || time > newestTime) newest = csv, newestTime = time;
+    const fs::path json = entry.path() / "results.json";
+    if (!fs::is_regular_file(json, error)) continue;
+    const auto time = fs::last_write_time(json, error);
+    if (newest.empty() || time > newestTime) newest = json, newestTime = time;
   }
   return newest.empty() ? "" : fs::relative(newest, directory, error).string();
 }
 
-// 2. The panel.
 namespace {
 
+// 1. The panel's state: the live run, or a loaded file.
 struct PanelState {
   bool initialised = false;
+  bool live = true;  // showing the live run (else the loaded file)
+  LiveBench bench;
+  int preset = 1;    // index into benchPresetNames(): "minimal"
+  std::string liveMessage;
   char path[512] = "";
-  std::string loadedPath, message;
-  std::vector<SpeedErrorPoint> all;
-  std::vector<std::string> setups;
-  int setup = 0;
+  std::string loadedPath, fileMessage;
+  BenchRunInfo fileInfo;
+  std::vector<BenchSetupInfo> fileSetups;
+  std::vector<BenchResult> fileResults;
+  int fileSetup = 0;
 };
 
 void load(PanelState& panel) {
   panel.loadedPath = panel.path;
-  panel.all.clear();
-  panel.setups.clear();
-  panel.setup = 0;
+  panel.fileResults.clear();
+  panel.fileSetups.clear();
+  panel.fileSetup = 0;
   std::ifstream file(panel.path);
   if (!file) {
-    panel.message = panel.loadedPath.empty() ? "no results.csv given" : "cannot read " + panel.loadedPath;
+    panel.fileMessage = panel.loadedPath.empty() ? "no results.json given" : "cannot read " + panel.loadedPath;
     return;
   }
   std::stringstream text;
   text << file.rdbuf();
-  panel.message = parseSpeedErrorCsv(text.str(), panel.all);
-  for (const SpeedErrorPoint& p : panel.all)
-    if (std::find(panel.setups.begin(), panel.setups.end(), p.setup) == panel.setups.end())
-      panel.setups.push_back(p.setup);
+  panel.fileMessage = parseBenchJson(text.str(), panel.fileInfo, panel.fileSetups, panel.fileResults);
 }
 
 // Log-scale axes over the points, one decade at least.
@@ -174,7 +79,16 @@ LogAxis axisFor(const std::vector<double>& values) {
   return {lo, std::max(hi, lo + 0.5)};
 }
 
-void drawPlot(const std::vector<SpeedErrorPoint>& points, int match) {
+// Colour per method, in the order the methods first appear.
+ImU32 methodColour(size_t index) {
+  static const ImU32 colours[] = {IM_COL32(110, 170, 255, 255), IM_COL32(230, 90, 90, 255),
+                                  IM_COL32(120, 220, 140, 255), IM_COL32(220, 140, 240, 255),
+                                  IM_COL32(240, 220, 90, 255), IM_COL32(160, 160, 160, 255)};
+  return colours[index % std::size(colours)];
+}
+
+// 2. The chart: points (only those measured: frames > 0), frontier, the current one ringed.
+void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   const ImVec2 size{ImGui::GetContentRegionAvail().x, 260};
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("##plot", size);
@@ -184,10 +98,10 @@ void drawPlot(const std::vector<SpeedErrorPoint>& points, int match) {
   draw->AddRectFilled({left, top}, {right, bottom}, IM_COL32(30, 30, 34, 255));
   draw->AddRect({left, top}, {right, bottom}, IM_COL32(120, 120, 120, 255));
   std::vector<double> xs, ys;
-  for (const SpeedErrorPoint& p : points) xs.push_back(p.msMedian), ys.push_back(p.meanAbsErrorInShadow);
+  for (const BenchResult* p : points) xs.push_back(p->msMedian), ys.push_back(p->error.meanAbsInShadow);
   const LogAxis ax = axisFor(xs), ay = axisFor(ys);
-  auto at = [&](const SpeedErrorPoint& p) {
-    return ImVec2{ax.to(p.msMedian, left, right), ay.to(p.meanAbsErrorInShadow, bottom, top)};
+  auto at = [&](const BenchResult& p) {
+    return ImVec2{ax.to(p.msMedian, left, right), ay.to(p.error.meanAbsInShadow, bottom, top)};
   };
   // Decade and 2x / 5x ticks with labels.
   const ImU32 grid = IM_COL32(70, 70, 76, 255), label = IM_COL32(180, 180, 180, 255);
@@ -211,95 +125,152 @@ void drawPlot(const std::vector<SpeedErrorPoint>& points, int match) {
       std::snprintf(text, sizeof text, "%g", v);
       draw->AddText({origin.x, y - 7}, label, text);
     }
-  draw->AddText({left + 60, bottom + 17}, label, "ms per frame (median, log)");
+  draw->AddText({left + 60, bottom + 17}, label, "ms per frame (median of the method's stages, log)");
   draw->AddText({left + 4, top + 2}, label, "mean |error| in shadow (log)");
-  // Frontier, points, the current configuration.
-  const std::vector<size_t> frontier = paretoFrontier(points);
+  // Frontier (increasing time), points coloured by method, the current configuration.
+  const std::vector<bool> onFrontier = paretoFrontier(xs, ys);
+  std::vector<size_t> frontier;
+  for (size_t i = 0; i < points.size(); ++i) if (onFrontier[i]) frontier.push_back(i);
+  std::sort(frontier.begin(), frontier.end(), [&](size_t a, size_t b) { return xs[a] < xs[b]; });
   for (size_t i = 1; i < frontier.size(); ++i)
-    draw->AddLine(at(points[frontier[i - 1]]), at(points[frontier[i]]), IM_COL32(255, 190, 60, 255), 2);
+    draw->AddLine(at(*points[frontier[i - 1]]), at(*points[frontier[i]]), IM_COL32(255, 190, 60, 255), 2);
+  std::vector<std::string> methods;
   int hovered = -1;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   for (size_t i = 0; i < points.size(); ++i) {
-    const ImVec2 p = at(points[i]);
-    const bool onFrontier = std::find(frontier.begin(), frontier.end(), i) != frontier.end();
-    const ImU32 colour = points[i].method == "hard_shadow" ? IM_COL32(230, 90, 90, 255)
-                         : onFrontier                       ? IM_COL32(255, 190, 60, 255)
-                                                            : IM_COL32(110, 170, 255, 255);
-    draw->AddCircleFilled(p, 3.5f, colour);
+    auto it = std::find(methods.begin(), methods.end(), points[i]->method);
+    if (it == methods.end()) methods.push_back(points[i]->method), it = methods.end() - 1;
+    const ImVec2 p = at(*points[i]);
+    draw->AddCircleFilled(p, 3.5f, methodColour(size_t(it - methods.begin())));
+    if (onFrontier[i]) draw->AddCircle(p, 5.5f, IM_COL32(255, 190, 60, 255));
     if (std::hypot(mouse.x - p.x, mouse.y - p.y) < 6) hovered = int(i);
   }
-  if (match >= 0) {
-    const ImVec2 p = at(points[size_t(match)]);
-    draw->AddCircle(p, 8, IM_COL32(80, 255, 120, 255), 0, 2.5f);
-  }
+  if (current >= 0) draw->AddCircle(at(*points[size_t(current)]), 8, IM_COL32(80, 255, 120, 255), 0, 2.5f);
   if (hovered >= 0 && ImGui::IsItemHovered()) {
-    const SpeedErrorPoint& p = points[size_t(hovered)];
-    ImGui::SetTooltip("%s\n%.2f ms/frame, mean |error| in shadow %.4f", p.config.c_str(),
-                      p.msMedian, p.meanAbsErrorInShadow);
+    const BenchResult& p = *points[size_t(hovered)];
+    std::string stages;
+    for (const std::string& stage : p.stages) stages += (stages.empty() ? "" : " + ") + stage;
+    ImGui::SetTooltip("%s\n%.2f ms/frame (%s), mean |error| in shadow %.4f", p.label.c_str(),
+                      p.msMedian, stages.c_str(), p.error.meanAbsInShadow);
   }
+  ImGui::TextColored({1, 0.75f, 0.25f, 1}, "-- Pareto frontier");
+  for (size_t m = 0; m < methods.size(); ++m) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(m)), "o %s", methods[m].c_str());
+  }
+}
+
+// 3. The live run's controls: preset, measure / cancel, progress.
+void drawLiveControls(PanelState& panel, UiState& state) {
+  const std::vector<std::string> presets = benchPresetNames();
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::BeginCombo("preset", presets[size_t(panel.preset)].c_str())) {
+    for (size_t i = 0; i < presets.size(); ++i)
+      if (ImGui::Selectable(presets[i].c_str(), int(i) == panel.preset)) panel.preset = int(i);
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The configurations measured: the preset's first setup (as `penumbra "
+                      "bench --preset`), plus the window's current parameters.");
+  ImGui::SameLine();
+  if (panel.bench.running()) {
+    if (ImGui::Button("Cancel")) panel.bench.cancel();
+  } else if (ImGui::Button("Measure this scene")) {
+    try {
+      LiveBenchOptions options;
+      options.preset = presets[size_t(panel.preset)];
+      panel.bench.start(state.session.scene, state.session.pipeline, options);
+      panel.liveMessage.clear();
+    } catch (const std::exception& error) {
+      panel.liveMessage = error.what();
+    }
+  }
+  if (panel.bench.running()) {
+    ImGui::ProgressBar(panel.bench.progress(), {-1, 0});
+    ImGui::TextWrapped("%s", panel.bench.status().c_str());
+  }
+  if (!panel.liveMessage.empty()) ImGui::TextColored({1, 0.5f, 0.4f, 1}, "%s", panel.liveMessage.c_str());
 }
 
 }  // namespace
 
 void drawSpeedErrorPanel(UiState& state, float x, float y, float width) {
-  static PanelState panel;
+  // Never destroyed: its live run holds GL objects, and the GL context is gone at exit.
+  static PanelState& panel = *new PanelState;
   if (!panel.initialised) {
     panel.initialised = true;
-    const std::string newest = newestBenchCsv(std::filesystem::current_path());
+    const std::string newest = newestBenchJson(std::filesystem::current_path());
     std::snprintf(panel.path, sizeof panel.path, "%s", newest.c_str());
-    load(panel);
+  }
+  // One step of the live run per window frame, whether the panel is open or not.
+  if (panel.bench.running()) {
+    try {
+      panel.bench.step();
+    } catch (const std::exception& error) {
+      panel.liveMessage = error.what();
+      panel.bench.cancel();
+    }
   }
   ImGui::SetNextWindowPos({x, y}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({width, 0}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Speed vs error (penumbra bench)", nullptr, 0)) {
+  if (!ImGui::Begin("Speed vs error", nullptr, 0)) {
     ImGui::End();
     return;
   }
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 60);
-  const bool entered = ImGui::InputText("##csv", panel.path, sizeof panel.path,
-                                        ImGuiInputTextFlags_EnterReturnsTrue);
+  if (ImGui::RadioButton("live: this scene", panel.live)) panel.live = true;
   ImGui::SameLine();
-  if (ImGui::Button("Load") || entered) load(panel);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("A results.csv written by `penumbra bench --out DIR`.");
-  if (!panel.message.empty()) ImGui::TextColored({1, 0.5f, 0.4f, 1}, "%s", panel.message.c_str());
-  if (panel.setups.size() > 1) {
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
-    if (ImGui::BeginCombo("##setup", panel.setups[size_t(panel.setup)].c_str())) {
-      for (size_t i = 0; i < panel.setups.size(); ++i)
-        if (ImGui::Selectable(panel.setups[i].c_str(), int(i) == panel.setup)) panel.setup = int(i);
-      ImGui::EndCombo();
-    }
+  if (ImGui::RadioButton("a results.json", !panel.live)) {
+    panel.live = false;
+    if (panel.loadedPath.empty()) load(panel);
   }
-  std::vector<SpeedErrorPoint> points;  // the chosen setup: the frontier is per setup
-  for (const SpeedErrorPoint& p : panel.all)
-    if (!panel.setups.empty() && p.setup == panel.setups[size_t(panel.setup)]) points.push_back(p);
-  if (!points.empty()) {
-    int match = -1;
-    std::string current = "?";
-    try {
-      const PipelineConfig config = pipelineConfigOf(state.session.pipeline);
-      match = matchingPoint(points, config);
-      char text[160];
-      std::snprintf(text, sizeof text, "%s %s layers %dx%d map %d%s%s", config.search.c_str(),
-                    config.layers.c_str(), config.rays, config.rays, config.shadowMap,
-                    config.deferred ? "" : " forward", config.filter ? "" : " unfiltered");
-      current = text;
-    } catch (const std::exception& error) {
-      current = error.what();
+
+  std::vector<const BenchResult*> points;
+  int current = -1;
+  if (panel.live) {
+    drawLiveControls(panel, state);
+    for (const BenchResult& r : panel.bench.results())
+      if (r.frames > 0) points.push_back(&r);
+    if (!points.empty()) {
+      const bool sameScene = panel.bench.fingerprint() == sceneFingerprint(state.session.scene);
+      std::vector<BenchResult> measured;
+      for (const BenchResult* r : points) measured.push_back(*r);
+      if (sameScene) current = matchingResult(measured, state.session.pipeline);
+      ImGui::TextWrapped("%s%s", panel.bench.setupLabel().c_str(),
+                         sameScene ? "" : " (the scene, light or camera changed since: no point is current)");
     }
-    drawPlot(points, match);
-    ImGui::TextColored({1, 0.75f, 0.25f, 1}, "-- Pareto frontier");
+  } else {
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 60);
+    const bool entered = ImGui::InputText("##json", panel.path, sizeof panel.path,
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    ImGui::TextColored({0.4f, 0.67f, 1, 1}, "o Monte Carlo");
-    ImGui::SameLine();
-    ImGui::TextColored({0.9f, 0.35f, 0.35f, 1}, "o hard shadow");
-    if (match >= 0)
+    if (ImGui::Button("Load") || entered) load(panel);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("A results.json written by `penumbra bench --out DIR`.");
+    if (!panel.fileMessage.empty()) ImGui::TextColored({1, 0.5f, 0.4f, 1}, "%s", panel.fileMessage.c_str());
+    if (panel.fileSetups.size() > 1) {
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+      if (ImGui::BeginCombo("##setup", panel.fileSetups[size_t(panel.fileSetup)].label.c_str())) {
+        for (size_t i = 0; i < panel.fileSetups.size(); ++i)
+          if (ImGui::Selectable(panel.fileSetups[i].label.c_str(), int(i) == panel.fileSetup))
+            panel.fileSetup = int(i);
+        ImGui::EndCombo();
+      }
+    }
+    for (const BenchResult& r : panel.fileResults)  // the frontier is per setup
+      if (r.setup == size_t(panel.fileSetup)) points.push_back(&r);
+    if (!points.empty())
+      ImGui::TextWrapped("%s, %s (another run: no point is marked current)",
+                         panel.fileInfo.scene.c_str(), panel.fileInfo.started.c_str());
+  }
+  if (!points.empty()) {
+    drawPlot(points, current);
+    if (current >= 0)
       ImGui::TextColored({0.3f, 1, 0.5f, 1}, "(O) current: %s, %.2f ms, error %.4f",
-                         points[size_t(match)].config.c_str(), points[size_t(match)].msMedian,
-                         points[size_t(match)].meanAbsErrorInShadow);
-    else
-      ImGui::TextWrapped("current (%s): no exact match in this report", current.c_str());
+                         points[size_t(current)]->label.c_str(), points[size_t(current)]->msMedian,
+                         points[size_t(current)]->error.meanAbsInShadow);
+    else if (panel.live)
+      ImGui::TextWrapped("The current parameters were not measured in this run on this view "
+                         "(measure again to add them).");
   }
   ImGui::End();
 }

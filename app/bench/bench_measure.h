@@ -1,0 +1,50 @@
+// Measuring one bench configuration, shared by `penumbra bench` (app/bench/bench_report.cpp)
+// and the window's live speed-against-error panel: the configuration's error against the
+// ground truth on one frame, then timed frames of only the stages its visibility depends
+// on (Pipeline::dependencies of the method's output; glFinish + steady clock per stage).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bench/bench_configs.h"
+#include "bench/bench_report.h"
+
+class Pipeline;
+struct Frame;
+struct Param;
+
+// Every parameter's value now, restored between configurations.
+class ParamSnapshot {
+public:
+  explicit ParamSnapshot(const Pipeline& pipeline);
+  void restore() const;
+
+private:
+  std::vector<std::pair<Param*, double>> values_;
+};
+
+// Applies "stage.key=value" assignments in order; "" or the first problem.
+std::string applySets(Pipeline& pipeline, const std::vector<std::string>& sets);
+
+// With the configuration's sets applied: its method, family, timed stages and their
+// parameters, and its error against the ground truth on one frame (frame key 0; the
+// reference at m x m `referenceSamples`). Returns false while the reference is still being
+// traced in the background (reference.background: call again on a later frame). Throws
+// std::runtime_error when the frame gives no error metrics.
+bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchConfig& config,
+                  int referenceSamples, BenchResult& result);
+
+// Collects timed frames of one configuration (its sets applied): each frame runs only the
+// method's stages.
+struct FrameTimes {
+  std::vector<double> totals;                          // ms per frame, summed over the stages
+  std::map<std::string, std::vector<double>> stages;  // ms per frame of each timed stage
+};
+void timeFrame(Pipeline& pipeline, Frame& frame, const BenchResult& result, std::uint32_t frameKey,
+               FrameTimes* times);  // times == nullptr: a warm-up frame
+// Fills the result's frames, median / min / max and per-stage medians.
+void summarize(const FrameTimes& times, BenchResult& result);
+
+double median(std::vector<double> values);

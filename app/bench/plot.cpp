@@ -1,0 +1,307 @@
+#include "bench/plot.h"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+#include <system_error>
+
+namespace {
+
+using Color = std::array<double, 3>;
+const Color kBlack{0, 0, 0}, kGrid{0.88, 0.88, 0.88}, kFrontier{0.1, 0.1, 0.1};
+// Colour-blind-safe series colours (Okabe-Ito), then grey.
+const Color kSeries[] = {{0.0, 0.45, 0.70}, {0.90, 0.62, 0.0}, {0.0, 0.62, 0.45},
+                         {0.80, 0.47, 0.65}, {0.84, 0.37, 0.0}, {0.35, 0.70, 0.90},
+                         {0.94, 0.89, 0.26}, {0.4, 0.4, 0.4}};
+const char* kFont = "DejaVu Sans";
+
+std::string tickText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// "Nice" linear ticks (1, 2, 5 x 10^k) covering [0, top].
+std::vector<double> linearTicks(double top, double& axisTop) {
+  const double raw = top / 5, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double factor : {1.0, 2.0, 5.0, 10.0})
+    if (factor * magnitude >= raw) { step = factor * magnitude; break; }
+  axisTop = std::ceil(top / step) * step;
+  std::vector<double> ticks;
+  for (double t = 0; t <= axisTop * (1 + 1e-9); t += step) ticks.push_back(t);
+  return ticks;
+}
+
+// Linear ticks at a 1, 2, 5 x 10^k step inside [low, high].
+std::vector<double> rangeTicks(double low, double high) {
+  double unused = 0;
+  const std::vector<double> fromZero = linearTicks(high - low, unused);
+  const double step = fromZero.size() > 1 ? fromZero[1] : 1;
+  std::vector<double> ticks;
+  for (double t = std::ceil(low / step) * step; t <= high + 1e-9 * step; t += step)
+    ticks.push_back(std::fabs(t) < 1e-12 * step ? 0.0 : t);
+  return ticks;
+}
+
+// Log ticks at 1, 2, 5 x 10^k inside [low, high]; at 1..9 x 10^k when that gives fewer
+// than three.
+std::vector<double> logTicks(double low, double high) {
+  std::vector<double> ticks;
+  for (const std::vector<double>& factors : {std::vector<double>{1, 2, 5},
+                                             std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
+    ticks.clear();
+    for (int k = int(std::floor(std::log10(low))); k <= int(std::ceil(std::log10(high))); ++k)
+      for (double factor : factors) {
+        const double t = factor * std::pow(10.0, k);
+        if (t >= low && t <= high) ticks.push_back(t);
+      }
+    if (ticks.size() >= 3) break;
+  }
+  return ticks;
+}
+
+enum class Align { Left, Center, Right };
+
+// Text whose top edge is at y (as the layout below measures it).
+void text(cairo_t* cr, double x, double y, const std::string& s, double size, const Color& c,
+          Align align = Align::Left, bool vertical = false) {
+  cairo_save(cr);
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, s.c_str(), &extents);
+  cairo_translate(cr, x, y);
+  if (vertical) cairo_rotate(cr, -M_PI / 2);
+  const double shift = align == Align::Left ? 0 : align == Align::Center ? extents.x_advance / 2
+                                                                         : extents.x_advance;
+  cairo_move_to(cr, -shift, vertical ? size * 0.8 : size * 0.8);
+  cairo_show_text(cr, s.c_str());
+  cairo_new_path(cr);  // no current point left for the next shape to join
+  cairo_restore(cr);
+}
+
+double textWidth(cairo_t* cr, const std::string& s, double size) {
+  cairo_save(cr);
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, s.c_str(), &extents);
+  cairo_restore(cr);
+  return extents.x_advance;
+}
+
+void line(cairo_t* cr, double xa, double ya, double xb, double yb, const Color& c, double width = 1) {
+  cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+  cairo_set_line_width(cr, width);
+  cairo_move_to(cr, xa, ya);
+  cairo_line_to(cr, xb, yb);
+  cairo_stroke(cr);
+}
+
+// Square, diamond or triangle by series, so colour is not the only cue.
+void marker(cairo_t* cr, double x, double y, int series, double r) {
+  const Color& c = kSeries[size_t(series) % std::size(kSeries)];
+  cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+  const int shape = series / int(std::size(kSeries)) + series % 3;
+  if (shape % 3 == 0) {
+    cairo_rectangle(cr, x - r, y - r, 2 * r, 2 * r);
+  } else if (shape % 3 == 1) {
+    cairo_move_to(cr, x, y - r * 1.3), cairo_line_to(cr, x + r * 1.3, y);
+    cairo_line_to(cr, x, y + r * 1.3), cairo_line_to(cr, x - r * 1.3, y);
+    cairo_close_path(cr);
+  } else {
+    cairo_move_to(cr, x, y - r * 1.2), cairo_line_to(cr, x + r * 1.2, y + r);
+    cairo_line_to(cr, x - r * 1.2, y + r);
+    cairo_close_path(cr);
+  }
+  cairo_fill(cr);
+}
+
+struct Layout {
+  std::vector<const PlotPoint*> points, frontier;  // drawable; frontier by increasing x
+  std::vector<std::string> frontierLines;
+  double width = 0, height = 0;
+};
+
+// 1. The points that can be drawn (finite; log axes need > 0) and the frontier, numbered
+//    left to right; the legend sits right of the axes so it never hides a point.
+Layout layout(const PlotSpec& spec) {
+  Layout l;
+  for (const PlotPoint& p : spec.points)
+    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0) && (!spec.logY || p.y > 0))
+      l.points.push_back(&p);
+  for (const PlotPoint* p : l.points) if (p->frontier) l.frontier.push_back(p);
+  std::sort(l.frontier.begin(), l.frontier.end(), [](auto a, auto b) { return a->x < b->x; });
+  for (size_t i = 0; i < l.frontier.size(); ++i) {
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, " (%.3g, %.3g)", l.frontier[i]->x, l.frontier[i]->y);
+    l.frontierLines.push_back(std::to_string(i + 1) + ". " + l.frontier[i]->label + numbers);
+  }
+  cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+  cairo_t* cr = cairo_create(scratch);
+  double legend = textWidth(cr, spec.frontierCaption, 14) + 22;
+  for (const std::string& name : spec.seriesNames) legend = std::max(legend, 22 + textWidth(cr, name, 14));
+  for (const std::string& s : l.frontierLines) legend = std::max(legend, 4 + textWidth(cr, s, 13));
+  cairo_destroy(cr);
+  cairo_surface_destroy(scratch);
+  l.width = std::ceil(spec.width + legend + 24);
+  l.height = spec.height;
+  return l;
+}
+
+void draw(cairo_t* cr, const PlotSpec& spec, const Layout& l) {
+  const double W = l.width, H = l.height;
+  const double x0 = 96, x1 = spec.width - 24, y0 = H - 78, y1 = 56;
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+
+  // 2. Ranges and mappings.
+  double xLow = 1, xHigh = 10, yLow = 0.1, yHigh = 1;
+  if (!l.points.empty()) {
+    xLow = xHigh = l.points[0]->x;
+    yLow = yHigh = l.points[0]->y;
+    for (const PlotPoint* p : l.points) {
+      xLow = std::min(xLow, p->x), xHigh = std::max(xHigh, p->x);
+      yLow = std::min(yLow, p->y), yHigh = std::max(yHigh, p->y);
+    }
+  }
+  if (spec.logX) { xLow /= 1.25; xHigh *= 1.25; }
+  else { const double pad = 0.05 * std::max(xHigh - xLow, 1e-9); xLow -= pad; xHigh += pad; }
+  if (xHigh <= xLow) xHigh = xLow * 2 + 1;
+  double yTop = 1, yBottom = 0;
+  std::vector<double> yTicks;
+  if (spec.logY) {
+    yBottom = yLow / 1.25;
+    yTop = std::max(yHigh * 1.25, yBottom * 2);
+    yTicks = logTicks(yBottom, yTop);
+  } else {
+    yTicks = linearTicks(std::max(yHigh * 1.08, 1e-6), yTop);
+  }
+  auto px = [&](double x) {
+    const double t = spec.logX ? (std::log(x) - std::log(xLow)) / (std::log(xHigh) - std::log(xLow))
+                               : (x - xLow) / (xHigh - xLow);
+    return x0 + t * (x1 - x0);
+  };
+  auto py = [&](double y) {
+    const double t = spec.logY ? (std::log(y) - std::log(yBottom)) / (std::log(yTop) - std::log(yBottom))
+                               : y / yTop;
+    return y0 - t * (y0 - y1);
+  };
+
+  // 3. Grid, axes, ticks, labels.
+  const std::vector<double> xTicks = spec.logX ? logTicks(xLow, xHigh) : rangeTicks(xLow, xHigh);
+  for (double t : xTicks) {
+    if (t < xLow || t > xHigh) continue;
+    line(cr, px(t), y0, px(t), y1, kGrid);
+    line(cr, px(t), y0, px(t), y0 + 5, kBlack);
+    text(cr, px(t), y0 + 8, tickText(t), 15, kBlack, Align::Center);
+  }
+  for (double t : yTicks) {
+    line(cr, x0, py(t), x1, py(t), kGrid);
+    line(cr, x0 - 5, py(t), x0, py(t), kBlack);
+    text(cr, x0 - 8, py(t) - 8, tickText(t), 15, kBlack, Align::Right);
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 1);
+  cairo_rectangle(cr, x0, y1, x1 - x0, y0 - y1);
+  cairo_stroke(cr);
+  text(cr, (x0 + x1) / 2, H - 34, spec.xLabel, 17, kBlack, Align::Center);
+  text(cr, 12, (y0 + y1) / 2, spec.yLabel, 17, kBlack, Align::Center, /*vertical=*/true);
+  text(cr, W / 2, 14, spec.title, 19, kBlack, Align::Center);
+
+  // 4. The frontier's line, the series' lines, every marker, the frontier's rings and numbers.
+  for (size_t i = 1; i < l.frontier.size(); ++i)
+    line(cr, px(l.frontier[i - 1]->x), py(l.frontier[i - 1]->y), px(l.frontier[i]->x),
+         py(l.frontier[i]->y), kFrontier, 1.5);
+  if (spec.connectSeries)
+    for (size_t series = 0; series < spec.seriesNames.size(); ++series) {
+      std::vector<const PlotPoint*> run;
+      for (const PlotPoint* p : l.points) if (p->series == int(series)) run.push_back(p);
+      std::sort(run.begin(), run.end(), [](auto a, auto b) { return a->x < b->x; });
+      for (size_t i = 1; i < run.size(); ++i)
+        line(cr, px(run[i - 1]->x), py(run[i - 1]->y), px(run[i]->x), py(run[i]->y),
+             kSeries[series % std::size(kSeries)], 1.5);
+    }
+  for (const PlotPoint* p : l.points) marker(cr, px(p->x), py(p->y), p->series, 4);
+  for (size_t i = 0; i < l.frontier.size(); ++i) {
+    const double fx = px(l.frontier[i]->x), fy = py(l.frontier[i]->y);
+    cairo_set_source_rgb(cr, kFrontier[0], kFrontier[1], kFrontier[2]);
+    cairo_set_line_width(cr, 1.2);
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, fx, fy, 8, 0, 2 * M_PI);
+    cairo_stroke(cr);
+    text(cr, fx + 9, fy - 26, std::to_string(i + 1), 14, kFrontier);
+  }
+
+  // 5. The legend.
+  const double lx = x1 + 24;
+  double ly = y1;
+  for (size_t s = 0; s < spec.seriesNames.size(); ++s, ly += 20) {
+    marker(cr, lx + 8, ly + 8, int(s), 4);
+    text(cr, lx + 22, ly, spec.seriesNames[s], 14, kBlack);
+  }
+  if (!l.frontier.empty()) {
+    ly += 10;
+    line(cr, lx, ly + 8, lx + 16, ly + 8, kFrontier, 1.5);
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, lx + 8, ly + 8, 6, 0, 2 * M_PI);
+    cairo_stroke(cr);
+    text(cr, lx + 22, ly, spec.frontierCaption, 14, kBlack);
+    ly += 22;
+    for (const std::string& s : l.frontierLines) {
+      text(cr, lx + 4, ly, s, 13, kFrontier);
+      ly += 17;
+    }
+  }
+}
+
+// Draws onto a surface made by `make` for the temporary path, checks cairo's status, and
+// renames the file into place.
+void writeOne(const std::filesystem::path& path, const Layout& l, const PlotSpec& spec,
+              const std::function<cairo_surface_t*(const char*)>& make, bool png) {
+  const std::filesystem::path temporary = path.string() + ".tmp";
+  cairo_surface_t* surface = make(temporary.c_str());
+  cairo_t* cr = cairo_create(surface);
+  draw(cr, spec, l);
+  cairo_status_t status = cairo_status(cr);
+  cairo_destroy(cr);
+  if (png && status == CAIRO_STATUS_SUCCESS)
+    status = cairo_surface_write_to_png(surface, temporary.c_str());
+  cairo_surface_finish(surface);
+  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("cannot write " + path.string() + ": " + cairo_status_to_string(status));
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, const PlotSpec& spec) {
+  const Layout l = layout(spec);
+  const auto png = std::filesystem::path(stem.string() + ".png");
+  const auto svg = std::filesystem::path(stem.string() + ".svg");
+  const auto pdf = std::filesystem::path(stem.string() + ".pdf");
+  writeOne(png, l, spec, [&](const char*) {
+    return cairo_image_surface_create(CAIRO_FORMAT_RGB24, int(l.width), int(l.height));
+  }, true);
+  writeOne(svg, l, spec, [&](const char* file) {
+    return cairo_svg_surface_create(file, l.width, l.height);
+  }, false);
+  writeOne(pdf, l, spec, [&](const char* file) {
+    return cairo_pdf_surface_create(file, l.width, l.height);
+  }, false);
+  return {png, svg, pdf};
+}

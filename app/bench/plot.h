@@ -1,0 +1,30 @@
+// The report's charts (`penumbra bench`): the speed-against-error scatter (one marker per
+// configuration, coloured by series, the Pareto frontier drawn as a line through its points,
+// numbered and listed in the legend) and the error curves of the setup sweeps (a line per
+// series). Drawn with cairo and written as PNG, SVG and PDF.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+struct PlotPoint {
+  double x = 0, y = 0;
+  int series = 0;         // index into PlotSpec::seriesNames (colour and marker)
+  std::string label;      // listed for frontier points
+  bool frontier = false;  // on the Pareto frontier: ringed, joined, numbered
+};
+
+struct PlotSpec {
+  std::string title, xLabel, yLabel;
+  std::vector<std::string> seriesNames;
+  std::vector<PlotPoint> points;
+  std::string frontierCaption = "Pareto frontier (x, y):";
+  bool logX = true;
+  bool logY = false;
+  bool connectSeries = false;  // a line through each series' points, in x order (sweeps)
+  int width = 1000, height = 680;  // the axes' area; the legend widens the page
+};
+
+// Writes `stem`.png, .svg and .pdf (each atomically: a temporary file renamed); returns
+// their paths. Throws std::runtime_error naming the file it cannot write.
+std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, const PlotSpec& spec);

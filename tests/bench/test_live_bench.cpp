@@ -1,0 +1,78 @@
+// The window's live speed-against-error run (app/bench/live_bench.h): stepped to the end it
+// measures every configuration of the preset plus the window's own, the window's own is the
+// one matched as "current", only while the parameters stay; cancel keeps what is complete.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <thread>
+#include <unistd.h>
+
+#include "bench/live_bench.h"
+#include "core/pipeline.h"
+#include "scene/scene_builtin.h"
+#include "support/gl_test.h"
+
+namespace {
+
+int stepToTheEnd(LiveBench& bench) {
+  int steps = 0;
+  while (bench.running() && steps < 100000) {
+    bench.step();
+    ++steps;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));  // the reference's thread
+  }
+  return steps;
+}
+
+}  // namespace
+
+TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
+  const auto cache = std::filesystem::temp_directory_path() /
+                     ("penumbra-live-bench-" + std::to_string(::getpid()));
+  setenv("PENUMBRA_CACHE", cache.c_str(), 1);
+  headlessContext();
+  const Scene plate = makeBuiltinScene("plate");
+  Pipeline window;  // the window's parameters: a configuration the preset does not have
+  ASSERT_EQ(window.set("trace.rays=3"), "");
+  ASSERT_EQ(window.set("composite.shadow=filter"), "");
+  LiveBench bench;
+  LiveBenchOptions options;
+  options.preset = "minimal";
+  options.width = 48, options.height = 32;
+  options.frames = 2, options.warmup = 1, options.referenceSamples = 2;
+  bench.start(plate, window, options);
+  EXPECT_TRUE(bench.running());
+  EXPECT_EQ(bench.fingerprint(), sceneFingerprint(plate));
+  const int steps = stepToTheEnd(bench);
+  ASSERT_FALSE(bench.running()) << steps << " steps: " << bench.status();
+  EXPECT_FLOAT_EQ(bench.progress(), 1.0f);
+  const std::vector<BenchResult> results = bench.results();
+  ASSERT_EQ(results.size(), 3u);  // hard shadow, hierarchical 2x2, current
+  for (const BenchResult& r : results) {
+    EXPECT_EQ(r.frames, 2) << r.label;
+    EXPECT_GT(r.msMedian, 0) << r.label;
+    EXPECT_TRUE(std::isfinite(r.error.meanAbsInShadow)) << r.label;
+    EXPECT_GT(r.error.pixels, 0u) << r.label;
+  }
+  EXPECT_EQ(results.back().family, "current");
+  EXPECT_EQ(matchingResult(results, window), int(results.size()) - 1);
+  ASSERT_EQ(window.set("trace.rays=4"), "");  // changed since: not measured
+  EXPECT_EQ(matchingResult(results, window), -1);
+  ASSERT_EQ(window.set("trace.rays=2"), "");  // the preset's hierarchical 2x2 map 512
+  const int match = matchingResult(results, window);
+  ASSERT_GE(match, 0);
+  EXPECT_EQ(results[size_t(match)].params.at("trace.rays"), "2");
+
+  // Cancel while the second configuration is measured: the first one remains, complete,
+  // and nothing runs on.
+  bench.start(plate, window, options);
+  while (bench.running() && bench.results().size() < 2) bench.step();
+  bench.cancel();
+  EXPECT_FALSE(bench.running());
+  ASSERT_EQ(bench.results().size(), 1u);
+  EXPECT_EQ(bench.results()[0].frames, 2);
+  EXPECT_FALSE(bench.step());
+  std::filesystem::remove_all(cache);
+}
