@@ -6,10 +6,13 @@
 #include <map>
 #include <sstream>
 
+#include "core/input_error.h"
 #include "gl/gl_context.h"
 #include "io/image_export.h"
+#include "io/output_path.h"
 #include "core/pipeline.h"
 #include "scene/scene_builtin.h"
+#include "scene/scene_checks.h"
 
 namespace {
 
@@ -36,6 +39,18 @@ std::vector<std::string> split(const std::string& text) {
 }  // namespace
 
 int runBenchStages(const BenchStagesOptions& options) {
+  // 1. Input first: the output path and every scene, before any GL work.
+  checkOutputFile(options.out, "--out");
+  const std::vector<std::string> sceneNames = split(options.scenes);
+  if (sceneNames.empty())
+    throw InputError("--scenes '" + printable(options.scenes) + "' names no scene (e.g. cube,engine)");
+  std::vector<Scene> scenes;
+  for (const std::string& sceneName : sceneNames) {
+    std::vector<std::string> warnings;
+    scenes.push_back(loadScene(sceneName, warnings));
+    for (const std::string& warning : lightWarnings(scenes.back())) warnings.push_back(warning);
+    for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  }
   std::string error;
   auto context = GlContext::createHeadless(error);
   if (!context) {
@@ -56,15 +71,9 @@ int runBenchStages(const BenchStagesOptions& options) {
   for (size_t i = 0; i < stageOrder.size() + 8; ++i) table << "---|";
   table << "\n";
 
-  for (const std::string& sceneName : split(options.scenes)) {
-    std::vector<std::string> warnings;
-    Scene scene;
-    try {
-      scene = loadScene(sceneName, warnings);
-    } catch (const std::exception& failure) {
-      std::fprintf(stderr, "penumbra bench-stages: %s\n", failure.what());
-      return 2;
-    }
+  for (size_t sceneIndex = 0; sceneIndex < scenes.size(); ++sceneIndex) {
+    const std::string& sceneName = sceneNames[sceneIndex];
+    const Scene& scene = scenes[sceneIndex];
     GpuScene gpuScene(scene);
     for (const Config& config : std::vector<Config>{{"linear", 2, true}, {"linear_binary", 2, true},
                                                     {"hierarchical", 2, true}, {"hierarchical", 2, false},
@@ -78,10 +87,8 @@ int runBenchStages(const BenchStagesOptions& options) {
             "light.resolution=" + std::to_string(options.mapSize)})
         assignments.push_back(each);
       for (const std::string& assignment : assignments)
-        if (std::string problem = pipeline.set(assignment); !problem.empty()) {
-          std::fprintf(stderr, "penumbra bench-stages: %s\n", problem.c_str());
-          return 2;
-        }
+        if (std::string problem = pipeline.set(assignment); !problem.empty())
+          throw InputError("--set " + problem);
       Frame frame(scene, gpuScene, pipeline);
       frame.eyeWidth = options.width;
       frame.eyeHeight = options.height;

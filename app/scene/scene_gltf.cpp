@@ -5,6 +5,8 @@
 // declares, not the library), and without TINYGLTF_IMPLEMENTATION.
 #include <tiny_gltf.h>
 
+#include "core/input_error.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -25,7 +27,6 @@ namespace {
 // (deep chains exhaust the stack, nodes shared by many parents multiply instances).
 constexpr int kMaxNodeDepth = 256;
 constexpr size_t kMaxNodeVisits = 1'000'000;
-constexpr size_t kMaxTriangles = 50'000'000;
 const glm::vec3 kDefaultColor{0.8f};
 
 bool finite(const glm::dvec3& v) {
@@ -90,14 +91,14 @@ struct AccessorView {
 class Importer {
  public:
   Importer(const std::string& path, const tinygltf::Model& model,
-           std::vector<std::string>& warnings)
-      : path_(path), model_(model), warnings_(warnings) {}
+           std::vector<std::string>& warnings, SceneBudget& budget)
+      : path_(path), model_(model), warnings_(warnings), budget_(budget) {}
 
   std::vector<SceneObject> run(const glm::dmat4& worldFromFile);
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error(path_ + ": " + what);
+    throw InputError(path_ + ": " + what);
   }
   // One warning per distinct problem, not one per instance of a shared mesh.
   void warn(const std::string& what) {
@@ -121,15 +122,22 @@ class Importer {
   std::string path_;
   const tinygltf::Model& model_;
   std::vector<std::string>& warnings_;
+  SceneBudget& budget_;
   std::set<std::string> warned_;
   std::vector<char> onPath_;  // nodes on the current root-to-node path: a revisit is a cycle
   size_t visits_ = 0;
   size_t triangles_ = 0;
   size_t skippedPrimitives_ = 0;
+  size_t singularInstances_ = 0;
   std::vector<SceneObject> objects_;
 };
 
 std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
+  // tinygltf reads glTF 1.0 JSON too, without its meshes: say so rather than "no triangles".
+  const std::string& version = model_.asset.version;
+  if (version.empty() || version[0] != '2')
+    fail("glTF " + (version.empty() ? std::string("without asset.version") : printable(version)) +
+         " is not supported (only glTF 2.0)");
   checkExtensions();
   if (!model_.skins.empty()) warn("skins are ignored; skinned meshes keep their bind pose");
   onPath_.assign(model_.nodes.size(), 0);
@@ -137,7 +145,10 @@ std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
   if (objects_.empty())
     fail("no triangles to load (" + std::to_string(model_.meshes.size()) + " meshes, " +
          std::to_string(model_.nodes.size()) + " nodes, " + std::to_string(model_.scenes.size()) +
-         " scenes, " + std::to_string(skippedPrimitives_) + " non-triangle primitives skipped)");
+         " scenes, " + std::to_string(skippedPrimitives_) + " non-triangle primitives skipped, " +
+         std::to_string(singularInstances_) + " mesh instances with a singular transform)");
+  budget_.triangles -= triangles_;
+  budget_.objects -= objects_.size();
   return std::move(objects_);
 }
 
@@ -234,6 +245,7 @@ void Importer::addMeshInstance(int nodeIndex, int meshIndex, const glm::dmat4& w
   if (!std::isfinite(det) || det == 0) {
     // Zero scale is a legitimate way to hide a node; there is no surface to shade.
     warn("node " + std::to_string(nodeIndex) + " has a singular transform; its mesh is skipped");
+    ++singularInstances_;
     return;
   }
   const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
@@ -397,7 +409,7 @@ void repairNormals(Mesh& mesh, const std::vector<char>& bad) {
 bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
                             const std::string& objectName, const glm::dmat4& world, bool mirrored) {
   const tinygltf::Primitive& p = mesh.primitives[primitiveIndex];
-  const std::string where = (mesh.name.empty() ? "mesh" : "mesh '" + mesh.name + "'") +
+  const std::string where = (mesh.name.empty() ? "mesh" : "mesh '" + printable(mesh.name) + "'") +
                             " primitive " + std::to_string(primitiveIndex);
   const int mode = p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES) {
@@ -433,9 +445,16 @@ bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
   if (out.indices.size() % 3 != 0)
     fail(where + ": " + std::to_string(out.indices.size()) +
          " indices is not a multiple of 3 for TRIANGLES");
+  // The scene's budget (app/scene/scene.h), shared by every file of the scene.
   triangles_ += out.triangleCount();
-  if (triangles_ > kMaxTriangles)
-    fail("more than " + std::to_string(kMaxTriangles) + " triangles after instancing");
+  if (triangles_ > budget_.triangles)
+    fail("more than the scene budget of " + std::to_string(kMaxSceneTriangles) +
+         " triangles after instancing (" + std::to_string(kMaxSceneTriangles - budget_.triangles) +
+         " already in the scene)");
+  if (objects_.size() + 1 > budget_.objects)
+    fail("more than the scene budget of " + std::to_string(kMaxSceneObjects) +
+         " mesh instances (" + std::to_string(kMaxSceneObjects - budget_.objects) +
+         " already in the scene)");
 
   const auto normal = p.attributes.find("NORMAL");
   if (normal != p.attributes.end()) {
@@ -501,8 +520,8 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
-                                  std::vector<std::string>& warnings) {
-  auto fail = [&](const std::string& what) { throw std::runtime_error(path + ": " + what); };
+                                  std::vector<std::string>& warnings, SceneBudget* budget) {
+  auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
   for (int c = 0; c < 4; ++c)
     if (!finite(glm::dvec3(worldFromFile[c])) || !std::isfinite(worldFromFile[c][3]))
       fail("non-finite placement transform");
@@ -531,6 +550,7 @@ std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worl
     fail(err.empty() ? "tinygltf could not load it" : "tinygltf: " + oneLine(err));
   if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + oneLine(warn));
 
-  Importer importer(path, model, warnings);
+  SceneBudget whole;
+  Importer importer(path, model, warnings, budget ? *budget : whole);
   return importer.run(glm::dmat4(worldFromFile));
 }

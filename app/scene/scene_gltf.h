@@ -13,6 +13,7 @@
 // every root node when the file has no scenes), one SceneObject per primitive instance,
 // with positions and normals transformed by worldFromFile * (node transforms).
 // Repairable problems (bad normals, non-triangle primitives, ignored features) are
-// appended to `warnings`; anything else throws std::runtime_error("<path>: <problem>").
+// appended to `warnings`; anything else throws InputError("<path>: <problem>"). What is
+// loaded counts against `budget` (the scene's; a whole budget when null).
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
-                                  std::vector<std::string>& warnings);
+                                  std::vector<std::string>& warnings, SceneBudget* budget = nullptr);
