@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages penumbra needs, only those missing (idempotent).
+# `setup.sh fuzz` adds what `make fuzz` needs: clang, libFuzzer, llvm-cov.
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
@@ -9,6 +10,7 @@ packages=(
   libembree-dev
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
 )
+if [ "${1:-}" = fuzz ]; then packages+=(clang libfuzzer-14-dev llvm-14); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -329,14 +329,21 @@ Camera readCamera(const Reader& r, const json& root) {
 }  // namespace
 
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings) {
-  const Reader r(path);
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) throw InputError(path + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file");
   std::stringstream text;
   text << in.rdbuf();
+  return parseSceneFile(text.str(), path, warnings);
+}
+
+Scene parseSceneFile(const std::string& text, const std::string& path,
+                     std::vector<std::string>& warnings) {
+  const Reader r(path);
   json root;
   try {
-    root = json::parse(text.str());
+    root = json::parse(text);
   } catch (const json::exception& e) {
     // Drop the "[json.exception.parse_error.101] " prefix; keep line and column.
     std::string what = e.what();
@@ -345,7 +352,7 @@ Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings)
                      (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   }
   DuplicateKeys duplicates;
-  json::sax_parse(text.str(), &duplicates);
+  json::sax_parse(text, &duplicates);
   if (!duplicates.duplicate.empty()) r.fail(duplicates.duplicate, "key given twice");
   r.expectObject(root, "", {"name", "objects", "light", "camera"});
 

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <set>
@@ -77,6 +78,40 @@ std::string oneLine(std::string text) {
 bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                const unsigned char*, int, void*) {
   return true;
+}
+
+// File access for tinygltf (the file and its external buffers): regular files only, so a
+// buffer URI naming /dev/zero or a FIFO cannot hang or exhaust memory; paths are taken as
+// written (the default expands them with wordexp); nothing is ever written.
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 32;
+
+bool regularFileExists(const std::string& path, void*) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error);
+}
+
+std::string unexpandedPath(const std::string& path, void*) { return path; }
+
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void*) {
+  std::error_code error;
+  const auto reject = [&](const std::string& why) {
+    if (err) *err += "buffer file '" + printable(path, 200) + "': " + why + "\n";
+    return false;
+  };
+  if (!std::filesystem::is_regular_file(path, error)) return reject("not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size >= kMaxFileBytes) return reject("unreadable or 4 GiB or more");
+  std::ifstream in(path, std::ios::binary);
+  out->resize(size_t(size));
+  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size)))
+    return reject("cannot read it");
+  return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "writing is not supported\n";
+  return false;
 }
 
 // A validated accessor: `count` elements, element i starts at data + i * stride, and all
@@ -522,33 +557,50 @@ std::string lowerExtension(const std::string& path) {
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
                                   std::vector<std::string>& warnings, SceneBudget* budget) {
   auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) fail("no such file");
+  // tinygltf passes sizes as 32 bits; larger files would be read truncated.
+  if (std::filesystem::file_size(path, error) >= kMaxFileBytes)
+    fail("files of 4 GiB or more are not supported");
+  std::vector<unsigned char> bytes;
+  std::string problem;
+  if (!readRegularFile(&bytes, &problem, path, nullptr)) fail(oneLine(problem));
+  return loadGltfFromMemory(bytes, path, worldFromFile, warnings, budget);
+}
+
+std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& bytes,
+                                            const std::string& path, const glm::mat4& worldFromFile,
+                                            std::vector<std::string>& warnings, SceneBudget* budget) {
+  auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
   for (int c = 0; c < 4; ++c)
     if (!finite(glm::dvec3(worldFromFile[c])) || !std::isfinite(worldFromFile[c][3]))
       fail("non-finite placement transform");
   const std::string ext = lowerExtension(path);
   if (ext != ".gltf" && ext != ".glb")
     fail("unknown extension '" + ext + "' (expected .gltf or .glb)");
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) fail("no such file");
-  // tinygltf passes the GLB size as 32 bits; larger files would be read truncated.
-  if (ext == ".glb" && std::filesystem::file_size(path, error) >= (1ull << 32))
-    fail("GLB files of 4 GiB or more are not supported");
+  if (bytes.size() >= kMaxFileBytes) fail("files of 4 GiB or more are not supported");
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skipImage, nullptr);
+  loader.SetFsCallbacks({regularFileExists, unexpandedPath, readRegularFile, refuseWrite, nullptr});
   tinygltf::Model model;
   std::string err, warn;
+  const std::string baseDir = std::filesystem::path(path).parent_path().string();
   bool ok = false;
   try {
-    ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                       : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    ok = ext == ".glb"
+             ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                           unsigned(bytes.size()), baseDir)
+             : loader.LoadASCIIFromString(&model, &err, &warn,
+                                          reinterpret_cast<const char*>(bytes.data()),
+                                          unsigned(bytes.size()), baseDir);
   } catch (const std::exception& e) {
     fail(std::string("tinygltf: ") + e.what());
   }
   // tinygltf sometimes reports an error yet returns true; both mean the file is broken.
   if (!ok || !err.empty())
-    fail(err.empty() ? "tinygltf could not load it" : "tinygltf: " + oneLine(err));
-  if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + oneLine(warn));
+    fail(err.empty() ? "tinygltf could not load it" : "tinygltf: " + printable(oneLine(err), 400));
+  if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + printable(oneLine(warn), 400));
 
   SceneBudget whole;
   Importer importer(path, model, warnings, budget ? *budget : whole);

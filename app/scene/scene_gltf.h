@@ -17,3 +17,10 @@
 // loaded counts against `budget` (the scene's; a whole budget when null).
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
                                   std::vector<std::string>& warnings, SceneBudget* budget = nullptr);
+// The same from bytes already in memory (the fuzzing harness, tests/fuzz/); `path` names
+// the file in messages, gives the format by its extension and the directory of external
+// buffers.
+std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& bytes,
+                                            const std::string& path, const glm::mat4& worldFromFile,
+                                            std::vector<std::string>& warnings,
+                                            SceneBudget* budget = nullptr);
