@@ -79,7 +79,11 @@ bool isDecimal(const std::string& text) {
 }  // namespace
 
 std::string Param::set(const std::string& text) {
-  const auto invalid = [&] { return "'" + printable(text) + "' is not valid for " + key + ": expected " + rangeText(); };
+  const auto invalid = [&] {
+    std::string message(1, '\'');
+    return message.append(printable(text)).append("' is not valid for ").append(key)
+        .append(": expected ").append(rangeText());
+  };
   switch (type) {
     case Type::Bool:
       if (text == "true" || text == "1" || text == "on") value = 1;

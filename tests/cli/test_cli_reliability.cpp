@@ -38,7 +38,7 @@ std::vector<std::string> leftovers(const fs::path& directory) {
   return names;
 }
 
-const char* kSmall = " --width 32 --height 32 --set light_layers.resolution=128";
+const char* kSmall = " --width 32 --height 32 --set light.resolution=128";
 
 }  // namespace
 
