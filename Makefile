@@ -5,7 +5,7 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 
-.PHONY: setup build run test clean
+.PHONY: setup build run test clean fuzz sanitize
 setup:
 	@scripts/setup.sh
 
@@ -20,5 +20,14 @@ run: build
 test: build
 	@cd $(BUILD) && xvfb-run -a -s '-screen 0 1280x800x24' ctest --output-on-failure -j 2
 
+# Reliability (docs/reliability.md): libFuzzer on the scene JSON reader and the glTF importer
+# (FUZZ_SECONDS each, default 60), and the test suite under ASan + UBSan with leak checking.
+fuzz:
+	@scripts/setup.sh fuzz
+	@scripts/fuzz.sh
+
+sanitize: setup
+	@scripts/sanitize.sh
+
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) build-fuzz build-sanitize out

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages penumbra needs, only those missing (idempotent).
+# `setup.sh fuzz` adds what `make fuzz` needs: clang, libFuzzer, llvm-cov.
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config
@@ -10,6 +11,7 @@ packages=(
   libcairo2-dev  # the bench report's charts as PNG, SVG and PDF (app/bench/plot.cpp)
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
 )
+if [ "${1:-}" = fuzz ]; then packages+=(clang libfuzzer-14-dev llvm-14); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,5 +1,7 @@
 #include "bench/bench_output.h"
 
+#include "io/output_path.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -217,11 +219,13 @@ void markParetoFrontiers(std::vector<BenchResult>& results) {
   }
 }
 
-std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path& directory,
+std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path& target,
                                                      const BenchRunInfo& info,
                                                      const std::vector<BenchSetup>& setups,
                                                      const std::vector<BenchResult>& results) {
-  std::filesystem::create_directories(directory);
+  // Staged in a temporary directory, moved into place when every file is written.
+  DirectoryTransaction transaction(target);
+  const std::filesystem::path directory = transaction.path();
   std::vector<std::filesystem::path> written;
   writeTextFile(directory / "results.json", benchJson(info, setupInfos(setups), results));
   written.push_back(directory / "results.json");
@@ -345,5 +349,7 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
   }
   writeTextFile(directory / "results.md", md.str());
   written.push_back(directory / "results.md");
+  transaction.commitFiles("results.md");
+  for (auto& path : written) path = transaction.target() / path.filename();
   return written;
 }

@@ -13,11 +13,14 @@
 #include "bench/bench_configs.h"
 #include "bench/bench_measure.h"
 #include "bench/bench_output.h"
-#include "gl/gl_context.h"
+#include "core/input_error.h"
 #include "core/pipeline.h"
+#include "gl/gl_context.h"
+#include "io/output_path.h"
 #include "reference/reference_cache.h"
 #include "reference/reference_request.h"
 #include "scene/scene_builtin.h"
+#include "scene/scene_checks.h"
 
 namespace {
 
@@ -51,7 +54,8 @@ double cachedReferenceSeconds(const std::string& key) {
 
 int runBench(const BenchOptions& options) {
   const auto started = std::chrono::steady_clock::now();
-  // 1. The plan; every assignment checked before any GL work.
+  // 1. The output path and the plan; every assignment checked before any GL work.
+  checkOutputDirectory(options.out, "--out", "");
   std::vector<std::string> warnings;
   Scene scene;
   std::vector<BenchSetup> setups;
@@ -66,6 +70,7 @@ int runBench(const BenchOptions& options) {
     std::fprintf(stderr, "penumbra bench: %s\n", error.what());
     return 2;
   }
+  for (const std::string& warning : lightWarnings(scene)) warnings.push_back(warning);
   for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
   size_t configurationCount = 0;
   for (const BenchSetup& setup : setups)

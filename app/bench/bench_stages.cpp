@@ -7,10 +7,13 @@
 #include <sstream>
 
 #include "bench/bench_measure.h"
+#include "core/input_error.h"
 #include "gl/gl_context.h"
 #include "io/image_export.h"
+#include "io/output_path.h"
 #include "core/pipeline.h"
 #include "scene/scene_builtin.h"
+#include "scene/scene_checks.h"
 
 namespace {
 
@@ -59,13 +62,25 @@ std::string cell(double value, const char* format = "%.1f") {
 }  // namespace
 
 int runBenchStages(const BenchStagesOptions& options) {
+  // 1. Input first: the output path and every scene, before any GL work.
+  checkOutputFile(options.out, "--out");
+  const std::vector<std::string> sceneNames = split(options.scenes);
+  if (sceneNames.empty())
+    throw InputError("--scenes '" + printable(options.scenes) + "' names no scene (e.g. cube,engine)");
+  std::vector<Scene> scenes;
+  for (const std::string& sceneName : sceneNames) {
+    std::vector<std::string> warnings;
+    scenes.push_back(loadScene(sceneName, warnings));
+    for (const std::string& warning : lightWarnings(scenes.back())) warnings.push_back(warning);
+    for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  }
   std::string error;
   auto context = GlContext::createHeadless(error);
   if (!context) {
     std::fprintf(stderr, "penumbra bench-stages: %s\n", error.c_str());
     return 1;
   }
-  // 1. Every row measured first (the columns are the stages any row's method needs).
+  // 2. Every row measured first (the columns are the stages any row's method needs).
   struct Row {
     std::string scene, label;
     std::map<std::string, double> stageMs;
@@ -74,15 +89,9 @@ int runBenchStages(const BenchStagesOptions& options) {
   };
   std::vector<Row> rows;
   std::vector<std::string> columns;
-  for (const std::string& sceneName : split(options.scenes)) {
-    std::vector<std::string> warnings;
-    Scene scene;
-    try {
-      scene = loadScene(sceneName, warnings);
-    } catch (const std::exception& failure) {
-      std::fprintf(stderr, "penumbra bench-stages: %s\n", failure.what());
-      return 2;
-    }
+  for (size_t sceneIndex = 0; sceneIndex < scenes.size(); ++sceneIndex) {
+    const std::string& sceneName = sceneNames[sceneIndex];
+    const Scene& scene = scenes[sceneIndex];
     GpuScene gpuScene(scene);
     const std::vector<Config> configs = configsOf(Pipeline{});
     for (const Config& config : configs) {
@@ -90,10 +99,8 @@ int runBenchStages(const BenchStagesOptions& options) {
       std::vector<std::string> assignments = options.sets;
       for (const std::string& each : config.sets) assignments.push_back(each);
       assignments.push_back("light.resolution=" + std::to_string(options.mapSize));
-      if (std::string problem = applySets(pipeline, assignments); !problem.empty()) {
-        std::fprintf(stderr, "penumbra bench-stages: %s\n", problem.c_str());
-        return 2;
-      }
+      if (std::string problem = applySets(pipeline, assignments); !problem.empty())
+        throw InputError("--set " + problem);
       Frame frame(scene, gpuScene, pipeline);
       frame.eyeWidth = options.width;
       frame.eyeHeight = options.height;
@@ -122,7 +129,7 @@ int runBenchStages(const BenchStagesOptions& options) {
     columns = ordered;
   }
 
-  // 2. The table.
+  // 3. The table.
   std::ostringstream table;
   table << "# Stage benchmark\n\nMachine: " << context->renderer()
         << (std::getenv("LP_NUM_THREADS") ? std::string(", LP_NUM_THREADS=") + std::getenv("LP_NUM_THREADS") : "")

@@ -4,12 +4,16 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "core/input_error.h"
 #include "io/headless_session.h"
 #include "io/image_export.h"
+#include "io/output_path.h"
 
-std::vector<std::string> exportFrame(const std::string& directory, const Frame& frame,
+std::vector<std::string> exportFrame(const std::string& target, const Frame& frame,
                                      const Pipeline& pipeline, const std::string& renderer) {
-  std::filesystem::create_directories(directory);
+  // One transaction: every file goes into a temporary directory, renamed into place last.
+  DirectoryTransaction transaction(target);
+  const std::filesystem::path directory = transaction.path();
   std::vector<std::string> written;
   nlohmann::json run;
   run["scene"] = frame.scene.name;
@@ -34,38 +38,34 @@ std::vector<std::string> exportFrame(const std::string& directory, const Frame& 
       for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer) {
         const std::string stem = texture.isArray() ? key + ".L" + std::to_string(layer) : key;
         for (const auto& path : exportTexture(directory, stem, texture, output, layer))
-          written.push_back(path.string());
+          written.push_back((transaction.target() / path.filename()).string());
       }
     }
   }
   for (const StageTime& time : pipeline.lastTimes())
     run["stage_milliseconds"][time.stage] = time.milliseconds;
   for (const auto& [name, value] : frame.counters) run["counters"][name] = value;
-  const auto runJson = std::filesystem::path(directory) / "run.json";
-  writeTextFile(runJson, run.dump(2) + "\n");
-  written.push_back(runJson.string());
+  writeTextFile(directory / "run.json", run.dump(2) + "\n");
+  written.push_back((transaction.target() / "run.json").string());
+  transaction.commit();
   return written;
 }
 
 int runExport(const ExportOptions& options) {
+  checkOutputDirectory(options.outDirectory, "--out", "run.json");  // before any rendering
   HeadlessSession session;
   if (int status = session.open("export", options.scene, options.sets, options.width, options.height))
     return status;
-  try {
-    Frame& frame = *session.frame;
-    frame.frameKey = options.frameKey;
-    session.pipeline.run(frame);
-    const std::string renderer = session.context->renderer();
-    const auto written = exportFrame(options.outDirectory, frame, session.pipeline, renderer);
-    std::printf("penumbra export: scene '%s' (%zu triangles) on %s\n", session.scene.name.c_str(),
-                session.scene.triangleCount(), renderer.c_str());
-    for (const StageTime& time : session.pipeline.lastTimes())
-      std::printf("  %-14s %8.2f ms\n", time.stage.c_str(), time.milliseconds);
-    std::printf("wrote %zu files into %s\n", written.size(),
-                std::filesystem::absolute(options.outDirectory).c_str());
-  } catch (const std::exception& failure) {
-    std::fprintf(stderr, "penumbra export: %s\n", failure.what());
-    return 1;
-  }
+  Frame& frame = *session.frame;
+  frame.frameKey = options.frameKey;
+  session.pipeline.run(frame);
+  const std::string renderer = session.context->renderer();
+  const auto written = exportFrame(options.outDirectory, frame, session.pipeline, renderer);
+  std::printf("penumbra export: scene '%s' (%zu triangles) on %s\n",
+              printable(session.scene.name).c_str(), session.scene.triangleCount(), renderer.c_str());
+  for (const StageTime& time : session.pipeline.lastTimes())
+    std::printf("  %-14s %8.2f ms\n", time.stage.c_str(), time.milliseconds);
+  std::printf("wrote %zu files into %s\n", written.size(),
+              std::filesystem::absolute(options.outDirectory).c_str());
   return 0;
 }

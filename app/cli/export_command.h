@@ -18,7 +18,9 @@ struct ExportOptions {
 
 int runExport(const ExportOptions& options);
 
-// Writes every output in `frame` (array textures: one file per layer) and run.json.
-// Returns the written paths. Used by export and by the window's "export all stages".
+// Writes every output in `frame` (array textures: one file per layer) and run.json, as one
+// transaction (app/io/output_path.h): `directory` then holds this export entirely, or, if
+// anything fails, still the previous one. Returns the written paths. Used by export and
+// by the window's "export all stages".
 std::vector<std::string> exportFrame(const std::string& directory, const Frame& frame,
                                      const Pipeline& pipeline, const std::string& renderer);

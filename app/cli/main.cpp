@@ -1,17 +1,56 @@
 // penumbra: a step-by-step visualizer of Monte Carlo soft shadows (Curtis & Olano 2009).
-// Subcommands (DESIGN.md §1); bad arguments print what is wrong and exit with status 2.
+// Subcommands (DESIGN.md §1). One handler for every command: bad input (InputError: flags,
+// scenes, parameter values, output paths) prints what is wrong and exits with status 2;
+// any other exception is an internal failure, printed, exit status 1. Nothing escapes.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <new>
 
 #include "bench/bench_report.h"
 #include "bench/bench_stages.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
 #include "cli/trace_command.h"
+#include "core/input_error.h"
 #include "core/pipeline.h"
 #include "window/window_app.h"
+
+namespace {
+
+// A positive finite number of seconds (CLI::PositiveNumber prints DBL_MAX in full).
+std::string positiveSeconds(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end || !std::isfinite(value) || value <= 0 || value > 1e7)
+    return "'" + printable(text) + "' is not a number of seconds in (0, 1e7]";
+  return "";
+}
+
+// Every command, under the one handler.
+int runCommand(const std::string& command, const std::function<int()>& run) {
+  const std::string prefix = "penumbra" + (command.empty() ? "" : " " + command) + ": ";
+  try {
+    return run();
+  } catch (const InputError& error) {
+    std::fprintf(stderr, "%s%s\n", prefix.c_str(), error.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "%sout of memory\n", prefix.c_str());
+    return 1;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "%sinternal error: %s\n", prefix.c_str(), error.what());
+    return 1;
+  } catch (...) {
+    std::fprintf(stderr, "%sinternal error (unknown exception)\n", prefix.c_str());
+    return 1;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"penumbra - a step-by-step visualizer of real-time soft shadows"};
@@ -113,7 +152,7 @@ int main(int argc, char** argv) {
   benchCommand->add_option("--reference-samples", report.referenceSamples, "m: m x m light samples "
                            "per pixel in the reference")->check(CLI::Range(1, 64))->capture_default_str();
   benchCommand->add_option("--time-limit", report.timeLimit, "seconds of reference tracing allowed "
-                           "(estimated before starting)")->check(CLI::PositiveNumber)->capture_default_str();
+                           "(estimated before starting)")->check(positiveSeconds)->capture_default_str();
 
   CLI::App* graphCommand = app.add_subcommand(
       "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
@@ -130,21 +169,24 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (*graphCommand) {
-    std::fputs(Pipeline().dot().c_str(), stdout);
-    return 0;
-  }
-  if (*exportCommand) return runExport(exporting);
-  if (*traceCommand) return runTraceCommand(tracing);
-  if (*benchStagesCommand) return runBenchStages(benching);
-  if (*benchCommand) {
-    for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
-    return runBench(report);
-  }
-  if (*hashCommand) return runHashCommand(hashing);
-  if (*lessonCommand) {
-    lesson.interactiveLesson = lesson.exportDirectory.empty();
-    return runWindow(lesson);
-  }
-  return runWindow(window);
+  const std::string command = app.get_subcommands().empty() ? "" : app.get_subcommands()[0]->get_name();
+  return runCommand(command, [&] {
+    if (*graphCommand) {
+      std::fputs(Pipeline().dot().c_str(), stdout);
+      return 0;
+    }
+    if (*exportCommand) return runExport(exporting);
+    if (*traceCommand) return runTraceCommand(tracing);
+    if (*benchStagesCommand) return runBenchStages(benching);
+    if (*benchCommand) {
+      for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
+      return runBench(report);
+    }
+    if (*hashCommand) return runHashCommand(hashing);
+    if (*lessonCommand) {
+      lesson.interactiveLesson = lesson.exportDirectory.empty();
+      return runWindow(lesson);
+    }
+    return runWindow(window);
+  });
 }

@@ -3,8 +3,11 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 #include "io/headless_session.h"
 #include "io/image_export.h"
+#include "io/output_path.h"
 
 const char* stepDecisionName(int decision) {
   static const char* names[] = {"descend", "advance", "ascend", "hit", "miss",
@@ -53,24 +56,23 @@ int runTraceCommand(const TraceOptions& options) {
                  options.pixel.c_str(), options.width, options.height);
     return 2;
   }
+  if (!options.out.empty()) checkOutputFile(options.out, "--out");  // before any rendering
   std::vector<std::string> sets = options.sets;
   sets.push_back("trace.record_x=" + std::to_string(x));
   sets.push_back("trace.record_y=" + std::to_string(y));
   HeadlessSession session;
   if (int status = session.open("trace", options.scene, sets, options.width, options.height))
     return status;
-  try {
-    session.pipeline.run(*session.frame);
-    const std::string json = traceStepsJson(*session.frame, x, y);
-    if (options.out.empty()) std::fputs(json.c_str(), stdout);
-    else {
-      writeTextFile(options.out, json);
-      std::printf("penumbra trace: %zu steps written to %s\n", session.frame->traceSteps.size(),
-                  options.out.c_str());
-    }
-  } catch (const std::exception& failure) {
-    std::fprintf(stderr, "penumbra trace: %s\n", failure.what());
-    return 1;
+  session.pipeline.run(*session.frame);
+  const std::string json = traceStepsJson(*session.frame, x, y);
+  if (options.out.empty()) {
+    std::fputs(json.c_str(), stdout);
+    return 0;
   }
+  const std::filesystem::path out(options.out);
+  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+  writeTextFile(out, json);
+  std::printf("penumbra trace: %zu steps written to %s\n", session.frame->traceSteps.size(),
+              options.out.c_str());
   return 0;
 }

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "core/input_error.h"
+
 Param Param::boolean(std::string key, std::string doc, bool value) {
   return {std::move(key), std::move(doc), Type::Bool, double(value), 0, 1, {}};
 }
@@ -48,8 +50,40 @@ std::string Param::rangeText() const {
   return out.str();
 }
 
+namespace {
+
+// Plain decimal only: [+-] digits [. digits] [e [+-] digits]. strtod alone would also take
+// hex ("0x4"), "inf", "nan" and leading spaces.
+bool isDecimal(const std::string& text) {
+  size_t i = 0, digits = 0;
+  const auto run = [&] {
+    size_t n = 0;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i, ++n;
+    return n;
+  };
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+  digits += run();
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    digits += run();
+  }
+  if (digits == 0) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (run() == 0) return false;
+  }
+  return i == text.size();
+}
+
+}  // namespace
+
 std::string Param::set(const std::string& text) {
-  const auto invalid = [&] { return "'" + text + "' is not valid for " + key + ": expected " + rangeText(); };
+  const auto invalid = [&] {
+    std::string message(1, '\'');
+    return message.append(printable(text)).append("' is not valid for ").append(key)
+        .append(": expected ").append(rangeText());
+  };
   switch (type) {
     case Type::Bool:
       if (text == "true" || text == "1" || text == "on") value = 1;
@@ -62,9 +96,9 @@ std::string Param::set(const std::string& text) {
       return invalid();
     case Type::Int:
     case Type::Float: {
-      char* end = nullptr;
-      const double parsed = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(parsed)) return invalid();
+      if (!isDecimal(text)) return invalid();
+      const double parsed = std::strtod(text.c_str(), nullptr);
+      if (!std::isfinite(parsed)) return invalid();
       if (type == Type::Int && parsed != std::floor(parsed)) return invalid();
       if (parsed < min || parsed > max) return invalid();
       value = parsed;

@@ -1,14 +1,46 @@
 #include "gl/gl_texture.h"
 
+#include <cstdio>
+#include <algorithm>
 #include <stdexcept>
+
+void clearGlErrors() {
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+  }
+}
+
+void checkGlAllocation(const std::string& what, size_t bytes) {
+  const GLenum error = glGetError();
+  if (error == GL_NO_ERROR) return;
+  clearGlErrors();
+  char size[64];
+  std::snprintf(size, sizeof size, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+  if (error == GL_OUT_OF_MEMORY)
+    throw std::runtime_error("OpenGL is out of memory: cannot allocate " + what + " (" + size +
+                             "); use a smaller image, map or scene");
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%04x", error);
+  throw std::runtime_error("OpenGL refused to allocate " + what + " (" + size + "): error " +
+                           code + " (beyond the driver's limits?)");
+}
 
 GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
     : format_(internalFormat), width_(width), height_(height), layers_(layers) {
+  clearGlErrors();
   glCreateTextures(layers > 0 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
   if (layers > 0)
     glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
   else
     glTextureStorage2D(id_, 1, internalFormat, width, height);
+  try {
+    checkGlAllocation("a " + std::to_string(width) + "x" + std::to_string(height) +
+                          (layers > 0 ? "x" + std::to_string(layers) : std::string()) + " texture",
+                      size_t(width) * size_t(height) * size_t(std::max(layers, 1)) *
+                          size_t(channelCount()) * 4);
+  } catch (...) {
+    release();
+    throw;
+  }
   // Exact values: every read is a texelFetch or a nearest sample.
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

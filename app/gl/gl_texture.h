@@ -6,6 +6,13 @@
 #include <utility>
 #include <vector>
 
+// Every GL allocation is followed by this check: GL_OUT_OF_MEMORY (or a size the driver
+// refuses) throws, naming what was allocated and its size, instead of leaving an object
+// without storage that later renders, reads back or exports as garbage. Errors pending
+// from earlier calls are cleared first by clearGlErrors().
+void clearGlErrors();
+void checkGlAllocation(const std::string& what, size_t bytes);
+
 class GlTexture {
 public:
   GlTexture() = default;
@@ -66,7 +73,9 @@ public:
     return id_;
   }
   void upload(const void* data, size_t bytes) {
+    clearGlErrors();
     glNamedBufferData(id(), GLsizeiptr(bytes), data, GL_DYNAMIC_DRAW);
+    checkGlAllocation("a buffer", bytes);
   }
 
 private:

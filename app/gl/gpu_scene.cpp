@@ -1,6 +1,19 @@
 #include "gl/gpu_scene.h"
 
+#include <string>
+
+#include "gl/gl_texture.h"
+
 GpuScene::GpuScene(const Scene& scene) {
+  try {
+    upload(scene);
+  } catch (...) {
+    release();  // what was created before the failure
+    throw;
+  }
+}
+
+void GpuScene::upload(const Scene& scene) {
   for (const SceneObject& object : scene.objects) {
     DrawItem item{};
     std::vector<float> vertices;
@@ -10,14 +23,19 @@ GpuScene::GpuScene(const Scene& scene) {
       const glm::vec3& n = object.mesh.normals[i];
       vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
     }
+    clearGlErrors();
     glCreateBuffers(1, &item.vertexBuffer);
+    glCreateBuffers(1, &item.indexBuffer);
+    glCreateVertexArrays(1, &item.vertexArray);
+    items_.push_back(item);  // owned from here: released on failure
     glNamedBufferStorage(item.vertexBuffer, GLsizeiptr(vertices.size() * sizeof(float)),
                          vertices.data(), 0);
-    glCreateBuffers(1, &item.indexBuffer);
+    checkGlAllocation("the vertices of '" + object.name + "'", vertices.size() * sizeof(float));
     glNamedBufferStorage(item.indexBuffer,
                          GLsizeiptr(object.mesh.indices.size() * sizeof(std::uint32_t)),
                          object.mesh.indices.data(), 0);
-    glCreateVertexArrays(1, &item.vertexArray);
+    checkGlAllocation("the indices of '" + object.name + "'",
+                      object.mesh.indices.size() * sizeof(std::uint32_t));
     glVertexArrayVertexBuffer(item.vertexArray, 0, item.vertexBuffer, 0, 6 * sizeof(float));
     glVertexArrayElementBuffer(item.vertexArray, item.indexBuffer);
     for (GLuint attribute : {0u, 1u}) {
@@ -29,16 +47,19 @@ GpuScene::GpuScene(const Scene& scene) {
     item.indexCount = GLsizei(object.mesh.indices.size());
     item.baseColor = object.baseColor;
     item.receiverOnly = object.receiverOnly;
-    items_.push_back(item);
+    items_.back() = item;
   }
 }
 
-GpuScene::~GpuScene() {
+GpuScene::~GpuScene() { release(); }
+
+void GpuScene::release() {
   for (DrawItem& item : items_) {
     glDeleteVertexArrays(1, &item.vertexArray);
     glDeleteBuffers(1, &item.vertexBuffer);
     glDeleteBuffers(1, &item.indexBuffer);
   }
+  items_.clear();
 }
 
 void GpuScene::draw(bool includeReceivers, GLint colorLocation) const {

@@ -1,4 +1,5 @@
-// The scene's triangles on the GPU: one vertex/index buffer pair per object.
+// The scene's triangles on the GPU: one vertex/index buffer pair per object. Every
+// allocation is checked: out of memory throws (naming the object) and frees what was made.
 #pragma once
 #include <epoxy/gl.h>
 
@@ -25,5 +26,7 @@ public:
   const std::vector<DrawItem>& items() const { return items_; }
 
 private:
+  void upload(const Scene& scene);
+  void release();
   std::vector<DrawItem> items_;
 };

@@ -8,7 +8,10 @@ static_assert(sizeof(glm::uvec4) == 16 && alignof(glm::uvec4) <= 16);
 namespace {
 void ensureSize(const GlBuffer& buffer, size_t& current, size_t bytes, GLenum usage) {
   if (bytes <= current) return;
+  clearGlErrors();
   glNamedBufferData(buffer.id(), GLsizeiptr(bytes), nullptr, usage);
+  current = 0;
+  checkGlAllocation("a hash buffer", bytes);
   current = bytes;
 }
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "scene/scene_builtin.h"
+#include "scene/scene_checks.h"
 
 int HeadlessSession::open(const std::string& command, const std::string& sceneNameOrPath,
                           const std::vector<std::string>& sets, int width, int height) {
@@ -18,6 +19,8 @@ int HeadlessSession::open(const std::string& command, const std::string& sceneNa
     return fail(2, error.what());
   }
   for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  for (const std::string& warning : lightWarnings(scene))
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
   for (const std::string& assignment : sets)
     if (std::string problem = pipeline.set(assignment); !problem.empty())
       return fail(2, "--set " + problem);

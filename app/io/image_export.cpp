@@ -2,6 +2,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -22,8 +24,12 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
   if (!out->open(temporary.string(), spec) || !out->write_image(type, topRowFirst) ||
-      !out->close())
-    throw std::runtime_error("cannot write " + path.string() + ": " + out->geterror());
+      !out->close()) {
+    const std::string reason = out->geterror();
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("cannot write " + path.string() + ": " + reason);
+  }
   std::filesystem::rename(temporary, path);
 }
 
@@ -86,9 +92,16 @@ std::vector<std::filesystem::path> exportTexture(const std::filesystem::path& di
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
   const auto temporary = temporaryName(path);
   {
+    errno = 0;
     std::ofstream out(temporary);
     out << text;
-    if (!out) throw std::runtime_error("cannot write " + path.string());
+    out.flush();
+    if (!out) {
+      const std::string reason = errno ? std::strerror(errno) : "write failed";
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw std::runtime_error("cannot write " + path.string() + ": " + reason);
+    }
   }
   std::filesystem::rename(temporary, path);
 }

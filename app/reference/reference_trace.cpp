@@ -29,6 +29,24 @@ std::uint32_t mix32(std::uint32_t x) {
 
 float unitFloat(std::uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }
 
+// Embree asserts on rays past 1.8e18 (ray.valid()); scenes are limited to kMaxCoordinate
+// (app/scene/scene.h), so a point beyond twice that is refused here, before Embree sees it.
+bool representable(const float* p) {
+  return std::abs(p[0]) <= 2 * kMaxCoordinate && std::abs(p[1]) <= 2 * kMaxCoordinate &&
+         std::abs(p[2]) <= 2 * kMaxCoordinate;
+}
+
+void checkInRange(const ReferenceRequest& request) {
+  const float light[3] = {request.wsLightCenter.x, request.wsLightCenter.y, request.wsLightCenter.z};
+  bool inRange = representable(light) && request.halfWidth <= kMaxCoordinate &&
+                 request.halfHeight <= kMaxCoordinate;
+  for (size_t i = 0; inRange && i < request.wsPosition.size() / 4; ++i)
+    inRange = request.wsPosition[4 * i + 3] <= 0 || representable(&request.wsPosition[4 * i]);
+  if (!inRange)
+    throw std::runtime_error("reference: a point or the light lies beyond the scene limit of "
+                             "+-1e6 (app/scene/scene.h); Embree cannot trace it");
+}
+
 void throwOnDeviceError(RTCDevice device, const char* what) {
   const RTCError error = rtcGetDeviceError(device);
   if (error != RTC_ERROR_NONE)
@@ -149,8 +167,14 @@ ReferenceTracer::ReferenceTracer(const Scene& sceneIn) : impl_(std::make_unique<
         geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
         mesh.triangleCount()));
     throwOnDeviceError(device, "geometry buffers");
-    for (size_t i = 0; i < mesh.positions.size(); ++i)
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+      if (!representable(&mesh.positions[i].x)) {
+        rtcReleaseGeometry(geometry);
+        throw std::runtime_error("reference: object '" + object.name + "' has a vertex beyond "
+                                 "the scene limit (app/scene/scene.h)");
+      }
       for (int c = 0; c < 3; ++c) vertices[3 * i + c] = mesh.positions[i][c];
+    }
     for (size_t i = 0; i < mesh.indices.size(); ++i) indices[i] = mesh.indices[i];
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(impl_->scene, geometry);
@@ -179,6 +203,7 @@ bool ReferenceTracer::trace(const ReferenceRequest& request, std::vector<float>&
   if (request.samplesPerSide < 1 || w < 1 || h < 1 ||
       request.wsPosition.size() != size_t(w) * h * 4 || request.wsNormal.size() != size_t(w) * h * 4)
     throw std::invalid_argument("ReferenceTracer::trace: inconsistent request");
+  checkInRange(request);  // here: the worker threads must not throw
   visibility.assign(size_t(w) * h, 1.0f);
   if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::min(threads, h);
@@ -208,6 +233,7 @@ bool ReferenceTracer::trace(const ReferenceRequest& request, std::vector<float>&
 }
 
 double ReferenceTracer::estimateSeconds(const ReferenceRequest& request, int stride) const {
+  checkInRange(request);
   const size_t pixels = size_t(request.width) * request.height;
   size_t covered = 0, timed = 0;
   for (size_t i = 0; i < pixels; ++i) covered += request.wsPosition[4 * i + 3] > 0;

@@ -7,6 +7,22 @@
 #include <string>
 #include <vector>
 
+// Scene limits (README "Scene files"), what every back end can represent:
+// - coordinates within +-kMaxCoordinate: the GPU stages compute in single precision, where
+//   products of three coordinates (squared distances, projections) must stay below 3.4e38,
+//   and Embree rejects rays past 1.8e18; at 1e6 they keep a wide margin;
+// - a budget for the whole scene, whatever files it is made of: GpuScene keeps a vertex and
+//   an index buffer per object and Embree a BVH over every occluder triangle, in memory.
+constexpr double kMaxCoordinate = 1e6;
+constexpr size_t kMaxSceneTriangles = 5'000'000;
+constexpr size_t kMaxSceneObjects = 100'000;  // mesh instances (one draw call each)
+
+// What is left of the budget while a scene is assembled (app/scene/scene_gltf.h).
+struct SceneBudget {
+  size_t triangles = kMaxSceneTriangles;
+  size_t objects = kMaxSceneObjects;
+};
+
 struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;  // one per position, unit length
@@ -52,5 +68,6 @@ struct Scene {
 };
 
 // Checks what every consumer relies on: finite positions and normals, indices in range,
-// a light with positive finite size and orthogonal frame. Returns "" or a message.
+// a light with positive finite size and orthogonal frame, the limits above. Returns "" or
+// a message naming the limit.
 std::string validateScene(const Scene& scene);

@@ -1,5 +1,7 @@
 #include "scene/scene_builtin.h"
 
+#include "core/input_error.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <functional>
@@ -108,12 +110,14 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "engine") return gltfOnGround(kEnginePath, "engine", warnings);
   std::string valid;
   for (const std::string& each : builtinSceneNames()) valid += (valid.empty() ? "" : ", ") + each;
-  throw std::runtime_error("unknown scene '" + name + "'; built-in scenes: " + valid +
+  throw InputError("unknown scene '" + printable(name, 200) + "'; built-in scenes: " + valid +
                            " (stress scenes: stress_grazing, stress_contact, ...), or a path to "
                            "a .json, .gltf or .glb file");
 }
 
-Scene loadScene(const std::string& nameOrPath, std::vector<std::string>& warnings) {
+namespace {
+
+Scene loadSceneOrThrow(const std::string& nameOrPath, std::vector<std::string>& warnings) {
   Scene scene;
   const std::string extension = std::filesystem::path(nameOrPath).extension().string();
   if (isStressScene(nameOrPath))
@@ -128,6 +132,20 @@ Scene loadScene(const std::string& nameOrPath, std::vector<std::string>& warning
   else
     scene = makeBuiltinScene(nameOrPath);  // throws with the list of valid names
   if (std::string problem = validateScene(scene); !problem.empty())
-    throw std::runtime_error(nameOrPath + ": " + problem);
+    throw InputError(printable(nameOrPath, 200) + ": " + problem);
   return scene;
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& nameOrPath, std::vector<std::string>& warnings) {
+  const size_t before = warnings.size();
+  try {
+    return loadSceneOrThrow(nameOrPath, warnings);
+  } catch (const InputError& error) {
+    // The warnings often say why (a singular transform skipped every mesh): keep them.
+    std::string message = error.what();
+    for (size_t i = before; i < warnings.size(); ++i) message += "\n  after warning: " + warnings[i];
+    throw InputError(message);
+  }
 }

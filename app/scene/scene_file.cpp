@@ -2,6 +2,7 @@
 
 #include "scene/mesh_builders.h"
 
+#include "core/input_error.h"
 #include "scene/scene_gltf.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,10 +21,11 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// RFC 6901 escaping, so that a pointer built from a hostile key still reads unambiguously.
+// RFC 6901 escaping, so that a pointer built from a hostile key still reads unambiguously
+// (and bounded, control characters escaped: printable()).
 std::string pointerTo(const std::string& parent, const std::string& key) {
   std::string escaped;
-  for (char c : key) {
+  for (char c : printable(key)) {
     if (c == '~')
       escaped += "~0";
     else if (c == '/')
@@ -38,6 +41,64 @@ std::string typeOf(const json& value) {
   return (type == "object" || type == "array" ? "an " : "a ") + type;
 }
 
+// JSON allows an object to repeat a key and nlohmann keeps the last one; in a scene file a
+// repeated key is a mistake (which one was meant?), so a first SAX pass finds them.
+class DuplicateKeys : public nlohmann::json_sax<json> {
+ public:
+  std::string duplicate;  // JSON pointer of the first repeated key, "" if none
+
+  bool start_object(std::size_t) override { return push(true); }
+  bool end_object() override { return pop(); }
+  bool start_array(std::size_t) override { return push(false); }
+  bool end_array() override { return pop(); }
+  bool key(string_t& name) override {
+    Level& level = levels_.back();
+    level.key = name;
+    if (level.keys.insert(name).second) return true;
+    duplicate = pointer();
+    return false;  // stop parsing
+  }
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;  // the DOM parse reports it with line and column
+  }
+
+ private:
+  struct Level {
+    bool isObject;
+    std::set<std::string> keys;
+    std::string key;
+    size_t index = 0;
+  };
+  bool value() {
+    if (!levels_.empty() && !levels_.back().isObject) ++levels_.back().index;
+    return true;
+  }
+  bool push(bool isObject) {
+    if (!levels_.empty() && !levels_.back().isObject) ++levels_.back().index;
+    levels_.push_back({isObject, {}, {}, 0});
+    return true;
+  }
+  bool pop() {
+    levels_.pop_back();
+    return true;
+  }
+  std::string pointer() const {
+    std::string result;
+    for (const Level& level : levels_)
+      result = level.isObject ? pointerTo(result, level.key)
+                              : result + "/" + std::to_string(level.index - 1);
+    return result;
+  }
+  std::vector<Level> levels_;
+};
+
 class Reader {
  public:
   explicit Reader(std::string path) : path_(std::move(path)) {}
@@ -46,7 +107,7 @@ class Reader {
     return path_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + what;
   }
   [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
-    throw std::runtime_error(message(pointer, what));
+    throw InputError(message(pointer, what));
   }
 
   // Objects must be objects and hold only known keys: a misspelt key is an error.
@@ -60,7 +121,7 @@ class Reader {
         known = known || key == name;
         list += (list.empty() ? "" : ", ") + std::string(name);
       }
-      if (!known) fail(pointer, "unknown key '" + key + "' (valid keys: " + list + ")");
+      if (!known) fail(pointer, "unknown key '" + printable(key) + "' (valid keys: " + list + ")");
     }
   }
 
@@ -94,6 +155,22 @@ class Reader {
             number(value[2], pointer + "/2")};
   }
 
+  // A position: within the scene limit (app/scene/scene.h) every back end can represent.
+  glm::vec3 point(const json& value, const std::string& pointer) const {
+    const glm::vec3 p = vec3(value, pointer);
+    for (int i = 0; i < 3; ++i) limited(p[i], pointer + "/" + std::to_string(i), kMaxCoordinate);
+    return p;
+  }
+  double limited(double v, const std::string& pointer, double bound) const {
+    if (std::abs(v) > bound) {
+      std::ostringstream text;
+      text << "must be within +-" << bound << " (the scene limit: the GPU computes in single "
+           << "precision and Embree rejects larger rays; scale the scene down), got " << v;
+      fail(pointer, text.str());
+    }
+    return v;
+  }
+
   std::string string(const json& value, const std::string& pointer) const {
     if (!value.is_string()) fail(pointer, "expected a string, got " + typeOf(value));
     return value.get<std::string>();
@@ -119,7 +196,7 @@ class Reader {
 // then moved.
 glm::mat4 placement(const Reader& r, const json& object, const std::string& pointer) {
   glm::vec3 translate(0), rotate(0), scale(1);
-  if (object.contains("translate")) translate = r.vec3(object["translate"], pointer + "/translate");
+  if (object.contains("translate")) translate = r.point(object["translate"], pointer + "/translate");
   if (object.contains("rotate_degrees"))
     rotate = r.vec3(object["rotate_degrees"], pointer + "/rotate_degrees");
   if (object.contains("scale")) {
@@ -138,7 +215,8 @@ glm::mat4 placement(const Reader& r, const json& object, const std::string& poin
 }
 
 void readObject(const Reader& r, const json& object, const std::string& pointer,
-                const fs::path& baseDir, Scene& scene, std::vector<std::string>& warnings) {
+                const fs::path& baseDir, Scene& scene, std::vector<std::string>& warnings,
+                SceneBudget& budget) {
   if (!object.is_object()) r.fail(pointer, "expected an object, got " + typeOf(object));
   const bool isGltf = object.contains("gltf"), isGround = object.contains("ground");
   if (isGltf == isGround) r.fail(pointer, "needs exactly one of 'gltf' or 'ground'");
@@ -150,15 +228,22 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     r.expectObject(object, pointer, {"ground", "name", "color", "receiver_only"});
     const std::string at = pointer + "/ground";
     r.expectObject(object["ground"], at, {"size", "y"});
-    const float size =
-        static_cast<float>(r.positive(r.required(object["ground"], at, "size"), at + "/size"));
+    const float size = static_cast<float>(r.limited(
+        r.positive(r.required(object["ground"], at, "size"), at + "/size"), at + "/size",
+        2 * kMaxCoordinate));
     const float y = object["ground"].contains("y")
-                        ? static_cast<float>(r.number(object["ground"]["y"], at + "/y"))
+                        ? static_cast<float>(r.limited(r.number(object["ground"]["y"], at + "/y"),
+                                                       at + "/y", kMaxCoordinate))
                         : 0.0f;
     SceneObject ground;
     ground.name = name.empty() ? "ground" : name;
     ground.mesh = makeQuad(size, glm::translate(glm::mat4(1), {0, y, 0}));
     ground.receiverOnly = true;  // a floor rarely shadows anything; saves a depth layer
+    if (budget.objects < 1 || budget.triangles < ground.mesh.triangleCount())
+      r.fail(pointer, "more than the scene budget of " + std::to_string(kMaxSceneObjects) +
+                          " objects");
+    budget.objects -= 1;
+    budget.triangles -= ground.mesh.triangleCount();
     scene.objects.push_back(std::move(ground));
   } else {
     r.expectObject(
@@ -172,7 +257,7 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     const glm::mat4 world = placement(r, object, pointer);
     std::vector<SceneObject> loaded;
     try {
-      loaded = loadGltf(modelPath.string(), world, warnings);
+      loaded = loadGltf(modelPath.string(), world, warnings, &budget);
     } catch (const std::exception& e) {
       r.fail(at, e.what());
     }
@@ -195,23 +280,26 @@ AreaLight readLight(const Reader& r, const json& root, std::vector<std::string>&
   const std::string at = "/light";
   r.expectObject(light, at, {"center", "forward", "up", "width", "height"});
   AreaLight result;
-  result.center = r.vec3(r.required(light, at, "center"), at + "/center");
-  glm::vec3 forward = r.vec3(r.required(light, at, "forward"), at + "/forward");
-  glm::vec3 up = r.vec3(r.required(light, at, "up"), at + "/up");
-  result.width = static_cast<float>(r.positive(r.required(light, at, "width"), at + "/width"));
-  result.height = static_cast<float>(r.positive(r.required(light, at, "height"), at + "/height"));
-  if (glm::length(forward) < 1e-6f) r.fail(at + "/forward", "must not be zero");
-  if (glm::length(up) < 1e-6f) r.fail(at + "/up", "must not be zero");
+  result.center = r.point(r.required(light, at, "center"), at + "/center");
+  // Directions in double: no overflow for any finite input.
+  glm::dvec3 forward = r.vec3(r.required(light, at, "forward"), at + "/forward");
+  glm::dvec3 up = r.vec3(r.required(light, at, "up"), at + "/up");
+  result.width = static_cast<float>(r.limited(
+      r.positive(r.required(light, at, "width"), at + "/width"), at + "/width", 2 * kMaxCoordinate));
+  result.height = static_cast<float>(r.limited(
+      r.positive(r.required(light, at, "height"), at + "/height"), at + "/height", 2 * kMaxCoordinate));
+  if (glm::length(forward) < 1e-6) r.fail(at + "/forward", "must not be zero");
+  if (glm::length(up) < 1e-6) r.fail(at + "/up", "must not be zero");
   forward = glm::normalize(forward);
   up = glm::normalize(up);
   // Consumers build the light's frame from these two; give them an orthonormal pair.
-  const float cosine = glm::dot(forward, up);
-  if (std::abs(cosine) > 0.999f) r.fail(at + "/up", "is parallel to forward");
-  if (std::abs(cosine) > 1e-3f)
+  const double cosine = glm::dot(forward, up);
+  if (std::abs(cosine) > 0.999) r.fail(at + "/up", "is parallel to forward");
+  if (std::abs(cosine) > 1e-3)
     warnings.push_back(
         r.message(at + "/up", "not perpendicular to forward; using its perpendicular part"));
-  result.forward = forward;
-  result.up = glm::normalize(up - cosine * forward);
+  result.forward = glm::vec3(forward);
+  result.up = glm::vec3(glm::normalize(up - cosine * forward));
   return result;
 }
 
@@ -220,8 +308,8 @@ Camera readCamera(const Reader& r, const json& root) {
   const std::string at = "/camera";
   r.expectObject(camera, at, {"position", "target", "up", "fov_y_degrees"});
   Camera result;
-  result.position = r.vec3(r.required(camera, at, "position"), at + "/position");
-  result.target = r.vec3(r.required(camera, at, "target"), at + "/target");
+  result.position = r.point(r.required(camera, at, "position"), at + "/position");
+  result.target = r.point(r.required(camera, at, "target"), at + "/target");
   if (camera.contains("up")) result.up = r.vec3(camera["up"], at + "/up");
   if (camera.contains("fov_y_degrees")) {
     result.fovYDegrees =
@@ -229,10 +317,11 @@ Camera readCamera(const Reader& r, const json& root) {
     if (!(result.fovYDegrees > 1 && result.fovYDegrees < 179))
       r.fail(at + "/fov_y_degrees", "must be in (1, 179)");
   }
-  const glm::vec3 view = result.target - result.position;
-  if (glm::length(view) < 1e-6f) r.fail(at + "/target", "must differ from position");
-  if (glm::length(result.up) < 1e-6f ||
-      glm::length(glm::cross(glm::normalize(view), glm::normalize(result.up))) < 1e-3f)
+  // In double: no overflow for any finite input.
+  const glm::dvec3 view = glm::dvec3(result.target) - glm::dvec3(result.position);
+  const glm::dvec3 up(result.up);
+  if (glm::length(view) < 1e-6) r.fail(at + "/target", "must differ from position");
+  if (glm::length(up) < 1e-6 || glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) < 1e-3)
     r.fail(at + "/up", "must be non-zero and not parallel to the view direction");
   return result;
 }
@@ -240,21 +329,31 @@ Camera readCamera(const Reader& r, const json& root) {
 }  // namespace
 
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings) {
-  const Reader r(path);
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) throw InputError(path + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open file");
+  if (!in) throw InputError(path + ": cannot open file");
   std::stringstream text;
   text << in.rdbuf();
+  return parseSceneFile(text.str(), path, warnings);
+}
+
+Scene parseSceneFile(const std::string& text, const std::string& path,
+                     std::vector<std::string>& warnings) {
+  const Reader r(path);
   json root;
   try {
-    root = json::parse(text.str());
+    root = json::parse(text);
   } catch (const json::exception& e) {
     // Drop the "[json.exception.parse_error.101] " prefix; keep line and column.
     std::string what = e.what();
     const size_t bracket = what.find("] ");
-    throw std::runtime_error(path + ": not valid JSON: " +
-                             (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+    throw InputError(path + ": not valid JSON: " +
+                     (bracket == std::string::npos ? what : what.substr(bracket + 2)));
   }
+  DuplicateKeys duplicates;
+  json::sax_parse(text, &duplicates);
+  if (!duplicates.duplicate.empty()) r.fail(duplicates.duplicate, "key given twice");
   r.expectObject(root, "", {"name", "objects", "light", "camera"});
 
   Scene scene;
@@ -264,12 +363,13 @@ Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings)
   if (!objects.is_array() || objects.empty())
     r.fail("/objects", "expected a non-empty array of objects");
   const fs::path baseDir = fs::path(path).parent_path();
+  SceneBudget budget;  // shared by every object of the file
   for (size_t i = 0; i < objects.size(); ++i)
-    readObject(r, objects[i], "/objects/" + std::to_string(i), baseDir, scene, warnings);
+    readObject(r, objects[i], "/objects/" + std::to_string(i), baseDir, scene, warnings, budget);
   scene.light = readLight(r, root, warnings);
   scene.camera = readCamera(r, root);
 
   const std::string problem = validateScene(scene);
-  if (!problem.empty()) throw std::runtime_error(path + ": " + problem);
+  if (!problem.empty()) throw InputError(path + ": " + problem);
   return scene;
 }

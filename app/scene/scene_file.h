@@ -14,3 +14,7 @@
 // appended to `warnings`.
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings);
 
+// The same from the file's text (the fuzzing harness, tests/fuzz/); `path` names it in
+// messages and gives the directory of relative glTF paths.
+Scene parseSceneFile(const std::string& text, const std::string& path,
+                     std::vector<std::string>& warnings);

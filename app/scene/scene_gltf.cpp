@@ -5,6 +5,8 @@
 // declares, not the library), and without TINYGLTF_IMPLEMENTATION.
 #include <tiny_gltf.h>
 
+#include "core/input_error.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <set>
@@ -25,7 +28,6 @@ namespace {
 // (deep chains exhaust the stack, nodes shared by many parents multiply instances).
 constexpr int kMaxNodeDepth = 256;
 constexpr size_t kMaxNodeVisits = 1'000'000;
-constexpr size_t kMaxTriangles = 50'000'000;
 const glm::vec3 kDefaultColor{0.8f};
 
 bool finite(const glm::dvec3& v) {
@@ -78,6 +80,40 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
+// File access for tinygltf (the file and its external buffers): regular files only, so a
+// buffer URI naming /dev/zero or a FIFO cannot hang or exhaust memory; paths are taken as
+// written (the default expands them with wordexp); nothing is ever written.
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t(1) << 32;
+
+bool regularFileExists(const std::string& path, void*) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error);
+}
+
+std::string unexpandedPath(const std::string& path, void*) { return path; }
+
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                     void*) {
+  std::error_code error;
+  const auto reject = [&](const std::string& why) {
+    if (err) *err += "buffer file '" + printable(path, 200) + "': " + why + "\n";
+    return false;
+  };
+  if (!std::filesystem::is_regular_file(path, error)) return reject("not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size >= kMaxFileBytes) return reject("unreadable or 4 GiB or more");
+  std::ifstream in(path, std::ios::binary);
+  out->resize(size_t(size));
+  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size)))
+    return reject("cannot read it");
+  return true;
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "writing is not supported\n";
+  return false;
+}
+
 // A validated accessor: `count` elements, element i starts at data + i * stride, and all
 // of them lie inside the buffer.
 struct AccessorView {
@@ -90,14 +126,14 @@ struct AccessorView {
 class Importer {
  public:
   Importer(const std::string& path, const tinygltf::Model& model,
-           std::vector<std::string>& warnings)
-      : path_(path), model_(model), warnings_(warnings) {}
+           std::vector<std::string>& warnings, SceneBudget& budget)
+      : path_(path), model_(model), warnings_(warnings), budget_(budget) {}
 
   std::vector<SceneObject> run(const glm::dmat4& worldFromFile);
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error(path_ + ": " + what);
+    throw InputError(path_ + ": " + what);
   }
   // One warning per distinct problem, not one per instance of a shared mesh.
   void warn(const std::string& what) {
@@ -121,15 +157,22 @@ class Importer {
   std::string path_;
   const tinygltf::Model& model_;
   std::vector<std::string>& warnings_;
+  SceneBudget& budget_;
   std::set<std::string> warned_;
   std::vector<char> onPath_;  // nodes on the current root-to-node path: a revisit is a cycle
   size_t visits_ = 0;
   size_t triangles_ = 0;
   size_t skippedPrimitives_ = 0;
+  size_t singularInstances_ = 0;
   std::vector<SceneObject> objects_;
 };
 
 std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
+  // tinygltf reads glTF 1.0 JSON too, without its meshes: say so rather than "no triangles".
+  const std::string& version = model_.asset.version;
+  if (version.empty() || version[0] != '2')
+    fail("glTF " + (version.empty() ? std::string("without asset.version") : printable(version)) +
+         " is not supported (only glTF 2.0)");
   checkExtensions();
   if (!model_.skins.empty()) warn("skins are ignored; skinned meshes keep their bind pose");
   onPath_.assign(model_.nodes.size(), 0);
@@ -137,7 +180,10 @@ std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
   if (objects_.empty())
     fail("no triangles to load (" + std::to_string(model_.meshes.size()) + " meshes, " +
          std::to_string(model_.nodes.size()) + " nodes, " + std::to_string(model_.scenes.size()) +
-         " scenes, " + std::to_string(skippedPrimitives_) + " non-triangle primitives skipped)");
+         " scenes, " + std::to_string(skippedPrimitives_) + " non-triangle primitives skipped, " +
+         std::to_string(singularInstances_) + " mesh instances with a singular transform)");
+  budget_.triangles -= triangles_;
+  budget_.objects -= objects_.size();
   return std::move(objects_);
 }
 
@@ -234,6 +280,7 @@ void Importer::addMeshInstance(int nodeIndex, int meshIndex, const glm::dmat4& w
   if (!std::isfinite(det) || det == 0) {
     // Zero scale is a legitimate way to hide a node; there is no surface to shade.
     warn("node " + std::to_string(nodeIndex) + " has a singular transform; its mesh is skipped");
+    ++singularInstances_;
     return;
   }
   const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
@@ -397,7 +444,7 @@ void repairNormals(Mesh& mesh, const std::vector<char>& bad) {
 bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
                             const std::string& objectName, const glm::dmat4& world, bool mirrored) {
   const tinygltf::Primitive& p = mesh.primitives[primitiveIndex];
-  const std::string where = (mesh.name.empty() ? "mesh" : "mesh '" + mesh.name + "'") +
+  const std::string where = (mesh.name.empty() ? "mesh" : "mesh '" + printable(mesh.name) + "'") +
                             " primitive " + std::to_string(primitiveIndex);
   const int mode = p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES) {
@@ -433,9 +480,16 @@ bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
   if (out.indices.size() % 3 != 0)
     fail(where + ": " + std::to_string(out.indices.size()) +
          " indices is not a multiple of 3 for TRIANGLES");
+  // The scene's budget (app/scene/scene.h), shared by every file of the scene.
   triangles_ += out.triangleCount();
-  if (triangles_ > kMaxTriangles)
-    fail("more than " + std::to_string(kMaxTriangles) + " triangles after instancing");
+  if (triangles_ > budget_.triangles)
+    fail("more than the scene budget of " + std::to_string(kMaxSceneTriangles) +
+         " triangles after instancing (" + std::to_string(kMaxSceneTriangles - budget_.triangles) +
+         " already in the scene)");
+  if (objects_.size() + 1 > budget_.objects)
+    fail("more than the scene budget of " + std::to_string(kMaxSceneObjects) +
+         " mesh instances (" + std::to_string(kMaxSceneObjects - budget_.objects) +
+         " already in the scene)");
 
   const auto normal = p.attributes.find("NORMAL");
   if (normal != p.attributes.end()) {
@@ -501,36 +555,54 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
-                                  std::vector<std::string>& warnings) {
-  auto fail = [&](const std::string& what) { throw std::runtime_error(path + ": " + what); };
+                                  std::vector<std::string>& warnings, SceneBudget* budget) {
+  auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) fail("no such file");
+  // tinygltf passes sizes as 32 bits; larger files would be read truncated.
+  if (std::filesystem::file_size(path, error) >= kMaxFileBytes)
+    fail("files of 4 GiB or more are not supported");
+  std::vector<unsigned char> bytes;
+  std::string problem;
+  if (!readRegularFile(&bytes, &problem, path, nullptr)) fail(oneLine(problem));
+  return loadGltfFromMemory(bytes, path, worldFromFile, warnings, budget);
+}
+
+std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& bytes,
+                                            const std::string& path, const glm::mat4& worldFromFile,
+                                            std::vector<std::string>& warnings, SceneBudget* budget) {
+  auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
   for (int c = 0; c < 4; ++c)
     if (!finite(glm::dvec3(worldFromFile[c])) || !std::isfinite(worldFromFile[c][3]))
       fail("non-finite placement transform");
   const std::string ext = lowerExtension(path);
   if (ext != ".gltf" && ext != ".glb")
     fail("unknown extension '" + ext + "' (expected .gltf or .glb)");
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) fail("no such file");
-  // tinygltf passes the GLB size as 32 bits; larger files would be read truncated.
-  if (ext == ".glb" && std::filesystem::file_size(path, error) >= (1ull << 32))
-    fail("GLB files of 4 GiB or more are not supported");
+  if (bytes.size() >= kMaxFileBytes) fail("files of 4 GiB or more are not supported");
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skipImage, nullptr);
+  loader.SetFsCallbacks({regularFileExists, unexpandedPath, readRegularFile, refuseWrite, nullptr});
   tinygltf::Model model;
   std::string err, warn;
+  const std::string baseDir = std::filesystem::path(path).parent_path().string();
   bool ok = false;
   try {
-    ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                       : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    ok = ext == ".glb"
+             ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                           unsigned(bytes.size()), baseDir)
+             : loader.LoadASCIIFromString(&model, &err, &warn,
+                                          reinterpret_cast<const char*>(bytes.data()),
+                                          unsigned(bytes.size()), baseDir);
   } catch (const std::exception& e) {
     fail(std::string("tinygltf: ") + e.what());
   }
   // tinygltf sometimes reports an error yet returns true; both mean the file is broken.
   if (!ok || !err.empty())
-    fail(err.empty() ? "tinygltf could not load it" : "tinygltf: " + oneLine(err));
-  if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + oneLine(warn));
+    fail(err.empty() ? "tinygltf could not load it" : "tinygltf: " + printable(oneLine(err), 400));
+  if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + printable(oneLine(warn), 400));
 
-  Importer importer(path, model, warnings);
+  SceneBudget whole;
+  Importer importer(path, model, warnings, budget ? *budget : whole);
   return importer.run(glm::dmat4(worldFromFile));
 }

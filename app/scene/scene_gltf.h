@@ -13,6 +13,14 @@
 // every root node when the file has no scenes), one SceneObject per primitive instance,
 // with positions and normals transformed by worldFromFile * (node transforms).
 // Repairable problems (bad normals, non-triangle primitives, ignored features) are
-// appended to `warnings`; anything else throws std::runtime_error("<path>: <problem>").
+// appended to `warnings`; anything else throws InputError("<path>: <problem>"). What is
+// loaded counts against `budget` (the scene's; a whole budget when null).
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
-                                  std::vector<std::string>& warnings);
+                                  std::vector<std::string>& warnings, SceneBudget* budget = nullptr);
+// The same from bytes already in memory (the fuzzing harness, tests/fuzz/); `path` names
+// the file in messages, gives the format by its extension and the directory of external
+// buffers.
+std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& bytes,
+                                            const std::string& path, const glm::mat4& worldFromFile,
+                                            std::vector<std::string>& warnings,
+                                            SceneBudget* budget = nullptr);

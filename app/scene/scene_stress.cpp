@@ -1,5 +1,7 @@
 #include "scene/scene_stress.h"
 
+#include "core/input_error.h"
+
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
@@ -69,7 +71,7 @@ Scene makeStressScene(const std::string& name) {
   } else {
     std::string valid;
     for (const std::string& each : stressSceneNames()) valid += (valid.empty() ? "" : ", ") + each;
-    throw std::runtime_error("unknown stress scene '" + name + "'; valid: " + valid);
+    throw InputError("unknown stress scene '" + name + "'; valid: " + valid);
   }
   return scene;
 }

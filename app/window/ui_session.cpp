@@ -121,9 +121,11 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
   try {
     pipeline.run(*frame, key.requested);
   } catch (const std::exception& error) {
-    problem = std::string("pipeline: ") + error.what();
+    runError = error.what();
+    problem = "pipeline failed: " + runError + " (exports are refused until a run succeeds)";
     return false;
   }
+  runError.clear();
   ++pipelineRuns;
   if (!previewing) fullResolutionMs = lastPipelineMs();
   return true;
@@ -134,8 +136,10 @@ std::string Session::runAll() {
   try {
     pipeline.run(*frame);
   } catch (const std::exception& error) {
+    runError = error.what();
     return std::string("pipeline: ") + error.what();
   }
+  runError.clear();
   ++pipelineRuns;
   return "";
 }

@@ -59,6 +59,8 @@ struct Session {
   int pipelineRuns = 0;
   glm::ivec2 requestedEye{0, 0};  // "fit view": runs once the layout holds for a frame
   std::deque<double> frameSeconds;  // UI frame intervals (per-stage times: the pipeline's)
+  std::string runError;  // why the last run failed, "" after a success: the frame then holds
+                         // new, blank and stale outputs, so exports are refused (ui_export.h)
 
   // 3. Scenes and parameters; "" or a message naming what is valid.
   void adoptScene(Scene loaded, const std::string& source);  // GpuScene and Frame rebuilt

@@ -1,5 +1,7 @@
 #include "window/ui_state.h"
 
+#include "scene/scene_checks.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -37,6 +39,18 @@ void UiState::adoptScene(Scene loaded, const std::string& source) {
   for (ViewPanel& view : views.panels) view.fitPending = true;
   const Scene& scene = session.scene;
   status = "scene '" + scene.name + "' (" + std::to_string(scene.triangleCount()) + " triangles)";
+  sceneWarnings = lightWarnings(scene);
+  checkedLight = scene.light;
+}
+
+void UiState::checkLight() {
+  const AreaLight& l = session.scene.light;
+  const AreaLight& c = checkedLight;
+  if (l.center == c.center && l.forward == c.forward && l.up == c.up && l.width == c.width &&
+      l.height == c.height)
+    return;
+  sceneWarnings = lightWarnings(session.scene);
+  checkedLight = l;
 }
 
 // 2. Selection: into the view that takes it, with the output's declared display.
@@ -117,6 +131,7 @@ bool UiState::needsRun() const {
 }
 
 bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
+  checkLight();
   std::string problem;
   const bool ran = session.runIfNeeded(viewRegion, requestedOutputs(), problem);
   if (!problem.empty()) status = problem;

@@ -19,6 +19,8 @@ public:
 
   // Messages.
   std::string status;     // the status line: what happened last
+  std::vector<std::string> sceneWarnings;  // app/scene/scene_checks.h, shown in the status line
+  AreaLight checkedLight;                  // the light sceneWarnings were computed for
   std::string shaderLog;  // last failed hot reload
   bool showHelp = false, showShaderLog = false;
 
@@ -37,4 +39,5 @@ public:
   // Whether the next runIfNeeded would run (the key changed, or run every frame).
   bool needsRun() const;
   bool runIfNeeded(glm::ivec2 viewRegion);  // Session::runIfNeeded on what is shown
+  void checkLight();  // recomputes sceneWarnings when the light moved since the last check
 };

@@ -13,7 +13,9 @@
 #include <memory>
 
 #include "gl/gl_context.h"
+#include "core/input_error.h"
 #include "io/image_export.h"
+#include "io/output_path.h"
 #include "scene/scene_builtin.h"
 #include "window/panels/ui_export.h"
 #include "window/ui_help.h"
@@ -120,6 +122,16 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
   const float speedWidth = ImGui::CalcTextSize(speed).x;
   ImGui::PushClipRect(ImGui::GetCursorScreenPos(),
                       {layout.width - speedWidth - 20, layout.height}, true);
+  if (!state.sceneWarnings.empty()) {  // what the depth-map methods cannot show (scene_checks.h)
+    ImGui::TextColored({1.0f, 0.8f, 0.2f, 1.0f}, "warning: %s%s", state.sceneWarnings.front().c_str(),
+                       state.sceneWarnings.size() > 1 ? " (+ more: hover)" : "");
+    if (ImGui::IsItemHovered()) {
+      std::string all;
+      for (const std::string& warning : state.sceneWarnings) all += warning + "\n";
+      ImGui::SetTooltip("%s", all.c_str());
+    }
+    ImGui::SameLine();
+  }
   ImGui::TextUnformatted(state.status.empty() ? "F1: help" : state.status.c_str());
   ImGui::PopClipRect();
   ImGui::SameLine(layout.width - speedWidth - 10);
@@ -184,8 +196,15 @@ void applySyntheticInput(UiState& state) {
   io.MouseWheel = input.wheel;
 }
 
-// 5. What can be checked before a window opens: scene, --set, script.
+// 5. What can be checked before a window opens: output paths, scene, --set, script.
 int checkOptions(const WindowOptions& options, Scene& scene, std::vector<ScriptAction>& script) {
+  try {
+    if (!options.screenshot.empty()) checkOutputFile(options.screenshot, "--screenshot");
+    if (!options.exportDirectory.empty()) checkOutputDirectory(options.exportDirectory, "--export", "");
+  } catch (const InputError& error) {
+    std::fprintf(stderr, "penumbra: %s\n", error.what());
+    return 2;
+  }
   std::vector<std::string> warnings;
   try {
     scene = loadScene(options.scene, warnings);

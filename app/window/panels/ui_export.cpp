@@ -13,6 +13,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// After a failed run the frame holds a mix of new, blank and stale outputs.
+std::string refusal(const UiState& state) {
+  return "export refused: the last pipeline run failed (" + state.session.runError +
+         "); its outputs are incomplete. Fix the settings (or the shader) until a run succeeds.";
+}
+
 std::string sanitized(std::string text) {
   for (char& c : text)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '-';
@@ -52,6 +58,7 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
 // 2. One view: the texture's current level, raw or through the view's own mapping.
 std::string exportViewFiles(const UiState& state, const ViewPanel& view, const std::string& target,
                             ExportKind kind) {
+  if (!state.session.runError.empty()) return refusal(state);
   std::string problem;
   const GlTexture* shown = shownTexture(state, view, &problem);
   if (!state.session.outputOf(view.output) || !shown)
@@ -96,7 +103,7 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
 std::string exportAllStages(UiState& state, const std::string& directory) {
   if (!state.session.frame) return "export: no frame yet";
   // The window runs only what it shows: every output first (the next shown run drops them).
-  if (std::string problem = state.session.runAll(); !problem.empty()) return "export failed: " + problem;
+  if (!state.session.runAll().empty()) return refusal(state);
   fs::path target = directory;
   if (target.empty())
     target = fs::path(kDefaultExportDirectory) /
