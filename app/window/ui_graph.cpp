@@ -49,7 +49,9 @@ Stage* groundTruthStage(const Pipeline& pipeline) {
   return truths.empty() ? nullptr : &pipeline.stage(truths.front());
 }
 
-bool hasLayerOutputs(const Stage& stage) { return hasOutput(stage, "near") && hasOutput(stage, "far"); }
+bool hasLayerOutputs(const Stage& stage) {
+  return hasOutput(stage, "near") && hasOutput(stage, "far");
+}
 
 LayerOutputs layerOutputs(const Pipeline& pipeline) {
   for (const auto& stage : pipeline.stages())

@@ -106,8 +106,8 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
                           std::string& problem) {
   if (!frame) return false;
   if (eye.fitView && (viewRegion.x <= 0 || viewRegion.y <= 0)) return false;  // no layout yet
-  glm::ivec2 size = eye.fitView ? glm::max(viewRegion, glm::ivec2(64))
-                                : glm::ivec2(eye.width, eye.height);
+  glm::ivec2 size =
+      eye.fitView ? glm::max(viewRegion, glm::ivec2(64)) : glm::ivec2(eye.width, eye.height);
   if (eye.fitView && size != requestedEye) {  // resizing: wait until the size holds
     requestedEye = size;
     return false;

@@ -68,7 +68,8 @@ std::string UiState::selectOutput(const std::string& stageDotOutput) {
     const GlTexture& texture = frame->texture(stageDotOutput);
     target->settings = defaultViewSettings(*declared, texture.channelCount());
     target->settingsFor = stageDotOutput;
-    target->autofitPending = texture.isInteger() && target->settings.colormap != Colormap::Categorical;
+    target->autofitPending =
+        texture.isInteger() && target->settings.colormap != Colormap::Categorical;
   }
   target->fitPending = true;
   views.selectedStage = stageDotOutput.substr(0, stageDotOutput.find('.'));
@@ -119,8 +120,8 @@ std::vector<std::string> UiState::requestedOutputs() const {
   }
   // The trace panel shows the rays of a picked eye pixel: only then does it need the trace.
   const Frame* frame = session.frame.get();
-  const bool eyePick = views.pick && frame &&
-                       views.pickSpace == glm::ivec2(frame->eyeWidth, frame->eyeHeight);
+  const bool eyePick =
+      views.pick && frame && views.pickSpace == glm::ivec2(frame->eyeWidth, frame->eyeHeight);
   if (views.traceShown && eyePick)
     for (const std::string& key : traceOutputs(session.pipeline)) add(key);
   return requested;

@@ -72,6 +72,7 @@ const char* formatName(GLenum format) {
     case GL_RGBA32UI: return "RGBA32UI";
     case GL_R8UI: return "R8UI";
     case GL_DEPTH_COMPONENT32F: return "DEPTH32F";
+    case kBufferFormat: return "buffer";
     default: return "?";
   }
 }

@@ -46,11 +46,15 @@ TEST(WindowDemand, OnlyTheShownOutputsRunAndANewParameterStartsANewSeries) {
   const std::string albedo = timingBlock(result.output, "albedo");
   ASSERT_FALSE(albedo.empty()) << result.output;
   EXPECT_NE(stageLine(albedo, "gbuffer").find(" ms (last "), std::string::npos) << albedo;
-  for (const char* stage : {"light", "light_layers", "nbuffer", "classify", "trace", "filter", "composite"})
-    EXPECT_NE(stageLine(albedo, stage).find("not run"), std::string::npos) << stage << "\n" << albedo;
+  for (const char* stage :
+       {"light", "light_layers", "nbuffer", "classify", "trace", "filter", "composite"})
+    EXPECT_NE(stageLine(albedo, stage).find("not run"), std::string::npos) << stage << "\n"
+                                                                           << albedo;
   const std::string composite = timingBlock(result.output, "composite");
-  for (const char* stage : {"gbuffer", "light", "light_layers", "nbuffer", "classify", "trace", "filter", "composite"})
-    EXPECT_NE(stageLine(composite, stage).find(" ms (last "), std::string::npos) << stage << "\n" << composite;
+  for (const char* stage :
+       {"gbuffer", "light", "light_layers", "nbuffer", "classify", "trace", "filter", "composite"})
+    EXPECT_NE(stageLine(composite, stage).find(" ms (last "), std::string::npos) << stage << "\n"
+                                                                                 << composite;
   EXPECT_NE(stageLine(composite, "reference").find("not run"), std::string::npos) << composite;
   // The filter's series restarted with the parameter: its median covers the one new run.
   const std::string off = timingBlock(result.output, "filter off");

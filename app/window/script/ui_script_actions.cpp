@@ -23,13 +23,15 @@ namespace {
 // 1. Argument shapes: each returns "" or what was expected.
 const ScriptCheck kString = [](const json& v) { return v.is_string() ? "" : "expected a string"; };
 const ScriptCheck kObject = [](const json& v) { return v.is_object() ? "" : "expected an object"; };
-const ScriptCheck kBool = [](const json& v) { return v.is_boolean() ? "" : "expected true or false"; };
+const ScriptCheck kBool = [](const json& v) {
+  return v.is_boolean() ? "" : "expected true or false";
+};
 const ScriptCheck kCount = [](const json& v) {
   return v.is_number_integer() && v.get<long long>() >= 0 ? "" : "expected an integer >= 0";
 };
 const ScriptCheck kPair = [](const json& v) {
   return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() ? ""
-                                                                                : "expected [a, b]";
+                                                                               : "expected [a, b]";
 };
 ScriptCheck pairOr(std::initializer_list<const char*> words) {
   std::vector<std::string> allowed(words.begin(), words.end());
@@ -44,7 +46,8 @@ ScriptCheck pairOr(std::initializer_list<const char*> words) {
 }
 const ScriptCheck kZoom = [](const json& v) -> std::string {
   return (v.is_number() && v.get<double>() > 0) || v == "fit" || v == "1:1"
-             ? "" : "expected a zoom factor > 0, \"fit\" or \"1:1\"";
+             ? ""
+             : "expected a zoom factor > 0, \"fit\" or \"1:1\"";
 };
 const ScriptCheck kFactor = [](const json& v) -> std::string {
   return v.is_number() && v.get<double>() > 0 ? "" : "expected a factor > 0";
@@ -57,7 +60,8 @@ const GlTexture* activeTexture(UiState& state) { return shownTexture(state, acti
 std::string setParameters(UiState& state, const json& a) {
   for (const auto& [key, value] : a.items()) {
     const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
-    if (std::string problem = state.session.setParameter(key, text); !problem.empty()) return problem;
+    if (std::string problem = state.session.setParameter(key, text); !problem.empty())
+      return problem;
   }
   return "";
 }
@@ -80,10 +84,13 @@ std::string exportFiles(UiState& state, const json& a, ScriptContext& context, b
 }
 
 std::string eyeSize(UiState& state, const json& a) {
-  if (a == "fit") state.session.eye.fitView = true;
-  else if (a[0].get<int>() < 16 || a[1].get<int>() < 16 || a[0].get<int>() > 8192 || a[1].get<int>() > 8192)
+  if (a == "fit")
+    state.session.eye.fitView = true;
+  else if (a[0].get<int>() < 16 || a[1].get<int>() < 16 || a[0].get<int>() > 8192 ||
+           a[1].get<int>() > 8192)
     return "sizes are in [16, 8192]";
-  else state.session.eye = {false, a[0].get<int>(), a[1].get<int>()};
+  else
+    state.session.eye = {false, a[0].get<int>(), a[1].get<int>()};
   return "";
 }
 
@@ -108,9 +115,14 @@ std::string channels(UiState& state, const json& a) {
 std::string range(UiState& state, const json& a) {
   ViewPanel& view = activeView(state);
   const GlTexture* texture = activeTexture(state);
-  if (a == "autofit") view.autofitPending = true;
-  else if (a == "reset") { if (texture) resetView(state, view, *texture); }
-  else { view.settings.black = a[0].get<float>(); view.settings.white = a[1].get<float>(); }
+  if (a == "autofit")
+    view.autofitPending = true;
+  else if (a == "reset") {
+    if (texture) resetView(state, view, *texture);
+  } else {
+    view.settings.black = a[0].get<float>();
+    view.settings.white = a[1].get<float>();
+  }
   return "";
 }
 
@@ -132,71 +144,153 @@ std::vector<ScriptActionSpec> makeTable() {
   using C = ScriptContext;
   const auto text = [](const json& a) { return a.get<std::string>(); };
   std::vector<ScriptActionSpec> table = {
-      {"select_stage", kString, [=](S& s, const json& a, C&) { return s.selectStage(text(a)); }, true},
-      {"select_output", kString, [=](S& s, const json& a, C&) { return s.selectOutput(text(a)); }, true},
+      {"select_stage", kString, [=](S& s, const json& a, C&) { return s.selectStage(text(a)); },
+       true},
+      {"select_output", kString, [=](S& s, const json& a, C&) { return s.selectOutput(text(a)); },
+       true},
       {"set", kObject, [](S& s, const json& a, C&) { return setParameters(s, a); }},
       {"pick", kPair, [](S& s, const json& a, C&) { return pick(s, a); }},
-      {"select_ray", kCount, [](S& s, const json& a, C&) { s.views.selectedRay = a.get<int>(); return std::string(); }},
-      {"wait", kCount, [](S&, const json& a, C& c) { c.waitFrames = a.get<int>(); return std::string(); }},
-      {"export_view", kString, [](S& s, const json& a, C& c) { return exportFiles(s, a, c, false); }},
+      {"select_ray", kCount,
+       [](S& s, const json& a, C&) {
+         s.views.selectedRay = a.get<int>();
+         return std::string();
+       }},
+      {"wait", kCount,
+       [](S&, const json& a, C& c) {
+         c.waitFrames = a.get<int>();
+         return std::string();
+       }},
+      {"export_view", kString,
+       [](S& s, const json& a, C& c) { return exportFiles(s, a, c, false); }},
       {"export_all", kString, [](S& s, const json& a, C& c) { return exportFiles(s, a, c, true); }},
-      {"screenshot", kString, [=](S&, const json& a, C& c) { c.pendingScreenshot = c.resolved(text(a)); return std::string(); }},
-      {"view", kCount, [](S& s, const json& a, C&) -> std::string {
+      {"screenshot", kString,
+       [=](S&, const json& a, C& c) {
+         c.pendingScreenshot = c.resolved(text(a));
+         return std::string();
+       }},
+      {"view", kCount,
+       [](S& s, const json& a, C&) -> std::string {
          if (a.get<int>() > 1) return "views are 0 (A) and 1 (B)";
          s.views.activeView = a.get<int>();
          s.views.twoViews = s.views.twoViews || s.views.activeView == 1;
          return "";
-       }, true},
-      {"two_views", kBool, [](S& s, const json& a, C&) {
+       },
+       true},
+      {"two_views", kBool,
+       [](S& s, const json& a, C&) {
          s.views.twoViews = a.get<bool>();
          if (!s.views.twoViews) s.views.activeView = 0;
          return std::string();
-       }, true},
-      {"lock", kBool, [](S& s, const json& a, C&) { activeView(s).locked = a.get<bool>(); return std::string(); }},
+       },
+       true},
+      {"lock", kBool,
+       [](S& s, const json& a, C&) {
+         activeView(s).locked = a.get<bool>();
+         return std::string();
+       }},
       {"eye_size", pairOr({"fit"}), [](S& s, const json& a, C&) { return eyeSize(s, a); }},
       {"scene", kString, [=](S& s, const json& a, C&) { return s.loadScene(text(a)); }},
       {"colormap", kString, [](S& s, const json& a, C&) { return colormap(s, a); }},
       {"channels", kString, [](S& s, const json& a, C&) { return channels(s, a); }},
-      {"level", kCount, [](S& s, const json& a, C&) { activeView(s).settings.layer = a.get<int>(); return std::string(); }},
-      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); }},
-      {"overlay", kBool, [](S& s, const json& a, C&) { activeView(s).settings.overlay = a.get<bool>(); return std::string(); }},
-      {"zoom", kZoom, [](S& s, const json& a, C&) { return zoomActiveView(s, a); }},
-      {"camera_orbit", kPair, [](S& s, const json& a, C&) {
-         orbitCamera(s.session.scene.camera, glm::radians(a[0].get<float>()), glm::radians(a[1].get<float>()));
+      {"level", kCount,
+       [](S& s, const json& a, C&) {
+         activeView(s).settings.layer = a.get<int>();
          return std::string();
        }},
-      {"camera_dolly", kFactor, [](S& s, const json& a, C&) { dollyCamera(s.session.scene.camera, a.get<float>()); return std::string(); }},
+      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); }},
+      {"overlay", kBool,
+       [](S& s, const json& a, C&) {
+         activeView(s).settings.overlay = a.get<bool>();
+         return std::string();
+       }},
+      {"zoom", kZoom, [](S& s, const json& a, C&) { return zoomActiveView(s, a); }},
+      {"camera_orbit", kPair,
+       [](S& s, const json& a, C&) {
+         orbitCamera(s.session.scene.camera, glm::radians(a[0].get<float>()),
+                     glm::radians(a[1].get<float>()));
+         return std::string();
+       }},
+      {"camera_dolly", kFactor,
+       [](S& s, const json& a, C&) {
+         dollyCamera(s.session.scene.camera, a.get<float>());
+         return std::string();
+       }},
       {"settings", kObject, [](S& s, const json& a, C&) { return applySettingsJson(s, a); }},
       {"load_settings", kString, [](S& s, const json& a, C&) { return loadSettings(s, a); }},
       {"save_settings", kString, [](S& s, const json& a, C&) { return saveSettings(s, a); }},
-      {"reload_shaders", kBool, [](S& s, const json&, C&) { s.reloadShaders(); return std::string(); }},
-      {"help", kBool, [](S& s, const json& a, C&) { s.showHelp = a.get<bool>(); return std::string(); }, true},
-      {"run_every_frame", kBool, [](S& s, const json& a, C&) { s.session.runEveryFrame = a.get<bool>(); return std::string(); }},
-      {"print_timing", kString, [=](S& s, const json& a, C&) { printTiming(s, text(a)); return std::string(); }},
-      {"print_pick", kString, [=](S& s, const json& a, C&) { printPick(s, text(a)); return std::string(); }},
-      {"camera_moving", kBool, [](S& s, const json& a, C&) { s.script.movesCamera = a.get<bool>(); return std::string(); }, true},
-      {"trace_window", kBool, [](S& s, const json& a, C&) { s.views.traceWindow = a.get<bool>(); return std::string(); }, true},
-      {"mouse", kPair, [](S& s, const json& a, C&) {
+      {"reload_shaders", kBool,
+       [](S& s, const json&, C&) {
+         s.reloadShaders();
+         return std::string();
+       }},
+      {"help", kBool,
+       [](S& s, const json& a, C&) {
+         s.showHelp = a.get<bool>();
+         return std::string();
+       },
+       true},
+      {"run_every_frame", kBool,
+       [](S& s, const json& a, C&) {
+         s.session.runEveryFrame = a.get<bool>();
+         return std::string();
+       }},
+      {"print_timing", kString,
+       [=](S& s, const json& a, C&) {
+         printTiming(s, text(a));
+         return std::string();
+       }},
+      {"print_pick", kString,
+       [=](S& s, const json& a, C&) {
+         printPick(s, text(a));
+         return std::string();
+       }},
+      {"camera_moving", kBool,
+       [](S& s, const json& a, C&) {
+         s.script.movesCamera = a.get<bool>();
+         return std::string();
+       },
+       true},
+      {"trace_window", kBool,
+       [](S& s, const json& a, C&) {
+         s.views.traceWindow = a.get<bool>();
+         return std::string();
+       },
+       true},
+      {"mouse", kPair,
+       [](S& s, const json& a, C&) {
          s.script.cursorRequest = glm::vec2(a[0].get<float>(), a[1].get<float>());
          return std::string();
        }},
       {"drag", kObject, [](S& s, const json& a, C&) { return queueDrag(s, a); }},
       {"wheel", kObject, [](S& s, const json& a, C&) { return queueWheel(s, a); }},
-      {"difference", kString, [=](S& s, const json& a, C&) { return setViewDifference(s, activeView(s), text(a)); }, true},
-      {"thickness", kBool, [](S& s, const json& a, C&) {
+      {"difference", kString,
+       [=](S& s, const json& a, C&) { return setViewDifference(s, activeView(s), text(a)); }, true},
+      {"thickness", kBool,
+       [](S& s, const json& a, C&) {
          return a.get<bool>() ? showThickness(s) : setViewDifference(s, activeView(s), "");
-       }, true},
-      {"clip_negative", kBool, [](S& s, const json& a, C&) { activeView(s).clipNegative = a.get<bool>(); return std::string(); }},
-      {"show_light", kBool, [](S& s, const json& a, C&) { s.views.showLight = a.get<bool>(); return std::string(); }},
+       },
+       true},
+      {"clip_negative", kBool,
+       [](S& s, const json& a, C&) {
+         activeView(s).clipNegative = a.get<bool>();
+         return std::string();
+       }},
+      {"show_light", kBool,
+       [](S& s, const json& a, C&) {
+         s.views.showLight = a.get<bool>();
+         return std::string();
+       }},
       {"show_ray", kBool, [](S& s, const json& a, C&) { return showRay(s, a); }},
       {"lesson", kString, [](S& s, const json& a, C& c) { return startLesson(s, a, c); }, true},
       {"say", kString, [](S& s, const json& a, C& c) { return say(s, a, c); }, true},
-      {"export_dir", kString, [=](S&, const json& a, C& c) {
+      {"export_dir", kString,
+       [=](S&, const json& a, C& c) {
          if (!c.exportOverridden) c.exportDirectory = text(a);
          return std::string();
        }},
   };
-  std::sort(table.begin(), table.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  std::sort(table.begin(), table.end(),
+            [](const auto& a, const auto& b) { return a.name < b.name; });
   return table;
 }
 
@@ -215,6 +309,7 @@ const ScriptActionSpec* findScriptAction(const std::string& name) {
 
 std::string scriptActionNames() {
   std::string names;
-  for (const ScriptActionSpec& spec : scriptActions()) names += (names.empty() ? "" : ", ") + spec.name;
+  for (const ScriptActionSpec& spec : scriptActions())
+    names += (names.empty() ? "" : ", ") + spec.name;
   return names;
 }

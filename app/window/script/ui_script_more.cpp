@@ -25,12 +25,17 @@ std::string readKeys(const json& object, SyntheticInput& input) {
   if (!object.contains("keys")) return "";
   if (!object["keys"].is_string()) return "\"keys\": expected a string such as \"alt+shift\"";
   std::string keys = object["keys"].get<std::string>() + "+";
-  for (size_t start = 0, plus; (plus = keys.find('+', start)) != std::string::npos; start = plus + 1) {
+  for (size_t start = 0, plus; (plus = keys.find('+', start)) != std::string::npos;
+       start = plus + 1) {
     const std::string key = keys.substr(start, plus - start);
-    if (key == "alt") input.alt = true;
-    else if (key == "shift") input.shift = true;
-    else if (key == "ctrl") input.ctrl = true;
-    else if (!key.empty()) return "\"keys\": unknown key '" + key + "'; valid: alt, shift, ctrl";
+    if (key == "alt")
+      input.alt = true;
+    else if (key == "shift")
+      input.shift = true;
+    else if (key == "ctrl")
+      input.ctrl = true;
+    else if (!key.empty())
+      return "\"keys\": unknown key '" + key + "'; valid: alt, shift, ctrl";
   }
   return "";
 }
@@ -92,12 +97,12 @@ std::string queueWheel(UiState& state, const json& a) {
 // 3. Zoom: "fit", "1:1", or a factor about what matters in the texture.
 std::string zoomActiveView(UiState& state, const json& a) {
   ViewPanel& view = state.views.panels[state.views.activeView];
-  if (a == "fit") view.fitPending = true;
+  if (a == "fit")
+    view.fitPending = true;
   else if (a == "1:1") {
     view.transform.oneToOne();
     view.fitted = false;
-  }
-  else {
+  } else {
     // Settle a pending fit first, then zoom about the pick if it lies in this texture.
     const GlTexture* texture = shownTexture(state, view);
     if (texture && view.fitPending && view.regionSize.x > 0) {
@@ -108,7 +113,8 @@ std::string zoomActiveView(UiState& state, const json& a) {
     view.transform.zoom = std::clamp(a.get<float>(), kMinZoom, kMaxZoom);
     view.fitted = false;
     // Centre on what matters in this texture: the ray's visited windows, else the pick.
-    const glm::ivec2 size = texture ? glm::ivec2(texture->width(), texture->height()) : glm::ivec2(0);
+    const glm::ivec2 size =
+        texture ? glm::ivec2(texture->width(), texture->height()) : glm::ivec2(0);
     if (texture && state.views.pick && state.views.pickSpace == size)
       view.transform.center = glm::vec2(*state.views.pick) + 0.5f;
     glm::vec2 lo{1e30f}, hi{-1e30f};
@@ -159,38 +165,44 @@ void printPick(const UiState& state, const std::string& label) {
     return;
   }
   const glm::ivec2 pick = *state.views.pick;
-  std::printf("pick %s: (%d, %d) in %dx%d\n", label.c_str(), pick.x, state.views.pickSpace.y - 1 - pick.y,
-              state.views.pickSpace.x, state.views.pickSpace.y);
+  std::printf("pick %s: (%d, %d) in %dx%d\n", label.c_str(), pick.x,
+              state.views.pickSpace.y - 1 - pick.y, state.views.pickSpace.x,
+              state.views.pickSpace.y);
   for (const std::string& key : state.session.outputKeys()) {
     if (!state.session.frame->has(key)) continue;
     const GlTexture& texture = state.session.frame->texture(key);
-    if (texture.width() != state.views.pickSpace.x || texture.height() != state.views.pickSpace.y) continue;
+    if (texture.width() != state.views.pickSpace.x || texture.height() != state.views.pickSpace.y)
+      continue;
     const auto texel = readTexel(texture, pick.x, pick.y, 0);
     std::printf("  %s", key.c_str());
     for (int c = 0; c < texture.channelCount(); ++c) std::printf(" %.9g", texel[size_t(c)]);
     std::printf("\n");
   }
   if (rayTraceSource()) {
-    const RayTraceInfo trace = rayTraceSource()(*state.session.frame, pick, state.views.selectedRay);
+    const RayTraceInfo trace =
+        rayTraceSource()(*state.session.frame, pick, state.views.selectedRay);
     int samples = 0, refinements = 0;
     for (const RayStepRecord& step : trace.steps) {
       samples += step.point && !step.refinement;
       refinements += step.refinement;
     }
-    std::printf("  trace steps: %zu (ray %d of %d) %s\n  trace points: %d samples, %d refinements\n",
-                trace.steps.size(), state.views.selectedRay, trace.raysPerPixel, trace.result.c_str(),
-                samples, refinements);
+    std::printf(
+        "  trace steps: %zu (ray %d of %d) %s\n  trace points: %d samples, %d refinements\n",
+        trace.steps.size(), state.views.selectedRay, trace.raysPerPixel, trace.result.c_str(),
+        samples, refinements);
   }
   std::fflush(stdout);
 }
 
 // Per stage: the last run and the median over the runs with identical settings.
 void printTiming(const UiState& state, const std::string& label) {
-  std::printf("timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %d runs, last "
-              "run %.2f ms, UI %.1f fps\n",
-              label.c_str(), state.session.frame->eyeWidth, state.session.frame->eyeHeight, state.session.medianPipelineMs(),
-              state.session.medianPipelineMs() > 0 ? 1000.0 / state.session.medianPipelineMs() : 0.0,
-              state.session.medianRuns(), state.session.lastPipelineMs(), state.session.framesPerSecond());
+  std::printf(
+      "timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %d runs, last "
+      "run %.2f ms, UI %.1f fps\n",
+      label.c_str(), state.session.frame->eyeWidth, state.session.frame->eyeHeight,
+      state.session.medianPipelineMs(),
+      state.session.medianPipelineMs() > 0 ? 1000.0 / state.session.medianPipelineMs() : 0.0,
+      state.session.medianRuns(), state.session.lastPipelineMs(), state.session.framesPerSecond());
   for (const StageTime& time : state.session.pipeline.lastTimes())
     if (time.ran)
       std::printf("  %-14s %8.2f ms (last %.2f ms, %d runs)\n", time.stage.c_str(), time.median,

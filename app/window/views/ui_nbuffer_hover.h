@@ -1,7 +1,8 @@
 // N-buffer views (issue 4, "Stage-specific views"): the level-0 window that the hovered texel
 // of level n summarises, drawn as a rectangle. The N-buffer is the output wired to the
-// trace's "levels" slot (window/ui_graph.h recordingInput), one array layer per level. The window rule is the layout spec of
-// shaders/shared/nbuffer.glsl (nbufferWindow1D), restated here for the UI only.
+// trace's "levels" slot (window/ui_graph.h recordingInput), one array layer per level. The
+// window rule is the layout spec of shaders/shared/nbuffer.glsl (nbufferWindow1D), restated
+// here for the UI only.
 #pragma once
 #include <glm/glm.hpp>
 #include <string>
