@@ -1,0 +1,56 @@
+// Layouts of stage `raster4d` (Wang et al. 2020, 4D rasterization; stages/raster4d/), read
+// by C++ (stages/raster4d/raster4d_gpu.h checks them with static_assert) and GLSL
+// (shaders/shared/raster4d.glsl). std140 uniform block / std430 storage, 16-byte members.
+//
+// Spaces. *Light space* (ls): origin at the light's centre, x along the light's right, y
+// along its up, z = d the distance in front of the light plane (along forward). The light
+// samples are the centres of the m x m cells: L_ij = (-a + j du, -b + i dv, 0), row i
+// along up, column j along right; bit j of row i is sample k = i m + j, as the reference's
+// uniform sampling numbers them. *P space*: the plane P (depth D, parallel to the light)
+// in light-space xy. Proj4(X) (§3.1) is the rectangle where rays from X through the four
+// outer samples hit P: centre X.xy D/d, half size (a, b) |D/d - 1|.
+#define RASTER4D_PARAMS_BINDING 5     // uniform Raster4dParams
+#define RASTER4D_RECEIVERS_BINDING 0  // vec4 per eye pixel: ls (x, y, d); w = 0 background,
+                                      // 1 receiver, 2 at or behind the light plane
+#define RASTER4D_TRIANGLES_BINDING 1  // vec4 x 3 per occluder triangle, world space
+#define RASTER4D_STATE_BINDING 2      // Raster4dState
+#define RASTER4D_COUNTS_BINDING 3     // scan input: uint per FB pixel
+#define RASTER4D_STARTS_BINDING 4     // scan output: uint per FB pixel + 1, exclusive prefix sum
+#define RASTER4D_CURSORS_BINDING 6    // uint per FB pixel: scatter cursors
+#define RASTER4D_SAMPLE_COUNTS_BINDING 7    // uint per FB pixel: samples assigned
+#define RASTER4D_SAMPLE_STARTS_BINDING 8    // their prefix sum (FB pixels + 1)
+#define RASTER4D_SAMPLE_LIST_BINDING 9      // uvec2 per sample entry: (eye pixel, FB pixel)
+#define RASTER4D_TRIANGLE_COUNTS_BINDING 10 // uint per FB pixel: triangles assigned
+#define RASTER4D_TRIANGLE_STARTS_BINDING 11 // their prefix sum (FB pixels + 1)
+#define RASTER4D_TRIANGLE_LIST_BINDING 12   // uint per triangle entry: triangle index
+#define RASTER4D_TRIANGLE_BOXES_BINDING 13  // vec4 per triangle: P-space AABB (min xy, max xy)
+#define RASTER4D_LS_TRIANGLES_BINDING 14    // vec4 x 3 per triangle: light-space vertices
+#define RASTER4D_MASKS_BINDING 15     // uint per (eye pixel, light row, word)
+#define RASTER4D_CELL_PAIRS_BINDING 16  // uvec4 per FB pixel: considered, kept, occluding, 0
+
+#define RASTER4D_SCAN_GROUP 1024
+#define RASTER4D_ASSIGN_L0 1     // modes.x: Algorithm 2 (one FB pixel per sample)
+#define RASTER4D_ASSIGN_PROJ4 0  // modes.x: Algorithm 1 lines 8-11 (every pixel of Proj4)
+
+struct Raster4dParams {
+  mat4 lsFromWorld;  // world -> light space (rows: right, up, forward; origin the centre)
+  vec4 light;        // x = a, y = b (offset of the outer samples), z = du, w = dv
+  vec4 plane;        // x = D (depth of P), y = tolerance in P space (conservative), z = origin
+                     // offset along the normal (world), w = smallest receiver/occluder depth
+  vec4 fb;           // xy = P-space minimum of FB, zw = FB pixels per P-space unit
+  ivec4 sizes;       // x, y = FB pixels; z, w = eye image
+  ivec4 band;        // x = first FB row, y = end row (exclusive); z = sample entry base,
+                     // w = triangle entry base (the band's first entries)
+  ivec4 modes;       // x = sample assignment (RASTER4D_ASSIGN_*), y = early rejection,
+                     // z = row masks (0: per-sample tests), w = occluder triangles
+  ivec4 pick;        // xy = picked eye pixel (GL order; -1 none), z = m, w = words per row
+  ivec4 dispatch;    // x = entries in this dispatch, y = elements to scan, zw unused
+};
+
+// Step 2's bounds (floats as order-preserving uints, for atomicMin/Max) and totals.
+struct Raster4dState {
+  uvec4 boundsMin;  // x = min (x - a)/d, y = min (y - b)/d over receivers
+  uvec4 boundsMax;  // x = max (x + a)/d, y = max (y + b)/d, z = max d over receivers
+  uvec4 counts;     // x = receivers (d > 0), y = behind the light plane, z = occluders binned,
+                    // w = occluders crossing the light plane (binned to the whole FB)
+};
