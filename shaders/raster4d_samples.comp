@@ -25,12 +25,12 @@ void main() {
   } else {
     range = fbPixelRange(proj4(receiver.xyz));
   }
-  for (int row = range.y; row <= range.w; ++row)
-    for (int column = range.x; column <= range.z; ++column) {
+  for (int row = max(range.y, r4d.band.x); row < min(range.w + 1, r4d.band.y); ++row)
+    for (int column = range.x; column <= range.z; ++column) {  // current row window only
       uint cell = uint(row * r4d.sizes.x + column);
       if (uScatter == 0) {
         atomicAdd(counts[cell], 1u);
-      } else if (row >= r4d.band.x && row < r4d.band.y) {
+      } else {
         uint slot = starts[cell] - uint(r4d.band.z) + atomicAdd(cursors[cell], 1u);
         entries[slot] = uvec2(index, cell);
       }

@@ -37,7 +37,8 @@ void main() {
   uint triangle = linearIndex();
   if (triangle >= uint(r4d.modes.w)) return;
   vec4 box;
-  if (uScatter == 0) {
+  bool firstWindow = uScatter == 0 && r4d.band.x == 0;
+  if (firstWindow) {
     vec3 v[3];
     for (int k = 0; k < 3; ++k) {
       v[k] = lightSpace(wsVertices[3u * triangle + uint(k)].xyz);
@@ -51,10 +52,10 @@ void main() {
   if (box.x > box.z) return;
   ivec4 range = fbPixelRange(box);
   if (range.x > range.z || range.y > range.w) return;
-  if (uScatter == 0) atomicAdd(state.counts.z, 1u);
-  int firstRow = uScatter == 0 ? range.y : max(range.y, r4d.band.x);
-  int endRow = uScatter == 0 ? range.w + 1 : min(range.w + 1, r4d.band.y);
-  for (int row = firstRow; row < endRow; ++row)
+  if (firstWindow) atomicAdd(state.counts.z, 1u);
+  // Only the rows of the current window (the stage keeps rows x columns under llvmpipe's
+  // loop limit).
+  for (int row = max(range.y, r4d.band.x); row < min(range.w + 1, r4d.band.y); ++row)
     for (int column = range.x; column <= range.z; ++column) {
       uint cell = uint(row * r4d.sizes.x + column);
       if (uScatter == 0) {

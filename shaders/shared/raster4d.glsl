@@ -59,19 +59,25 @@ uvec2 prefixBits(int k) {
 // The columns j in [0, m) where the plane is inside (Algorithm 3 lines 12-16): g is monotone
 // in j, so they are a prefix or a suffix; the split column k comes from the intersection of
 // the row with the plane (k = -A/S) and is then checked against the samples on either side,
-// so round-off in the division cannot move a bit.
+// so round-off in the division cannot move a bit (it is far below one column: two checked
+// steps each way are plenty). No loops here: llvmpipe stops a shader after 65535 loop
+// iterations in all (gallivm's loop limiter, NOTES.md), so the passes count their loops.
 uvec2 rowInside(float rowStart, float step, int m, bool strict) {
   if (step == 0.0) return planeInside(rowStart, step, 0, strict) ? prefixBits(m) : uvec2(0u);
   float crossing = clamp(-rowStart / step, -1.0, float(m) + 1.0);
   if (step > 0.0) {  // inside from column k on
     int k = clamp(int(ceil(crossing)), 0, m);
-    while (k > 0 && planeInside(rowStart, step, k - 1, strict)) --k;
-    while (k < m && !planeInside(rowStart, step, k, strict)) ++k;
+    if (k > 0 && planeInside(rowStart, step, k - 1, strict)) --k;
+    if (k > 0 && planeInside(rowStart, step, k - 1, strict)) --k;
+    if (k < m && !planeInside(rowStart, step, k, strict)) ++k;
+    if (k < m && !planeInside(rowStart, step, k, strict)) ++k;
     return prefixBits(m) & ~prefixBits(k);
   }
   int k = clamp(int(floor(crossing)) + 1, 0, m);  // inside up to column k - 1
-  while (k < m && planeInside(rowStart, step, k, strict)) ++k;
-  while (k > 0 && !planeInside(rowStart, step, k - 1, strict)) --k;
+  if (k < m && planeInside(rowStart, step, k, strict)) ++k;
+  if (k < m && planeInside(rowStart, step, k, strict)) ++k;
+  if (k > 0 && !planeInside(rowStart, step, k - 1, strict)) --k;
+  if (k > 0 && !planeInside(rowStart, step, k - 1, strict)) --k;
   return prefixBits(k);
 }
 

@@ -40,11 +40,13 @@ struct Raster4dParams {
   vec4 fb;           // xy = P-space minimum of FB, zw = FB pixels per P-space unit
   ivec4 sizes;       // x, y = FB pixels; z, w = eye image
   ivec4 band;        // x = first FB row, y = end row (exclusive); z = sample entry base,
-                     // w = triangle entry base (the band's first entries)
+                     // w = triangle entry base (the band's first entries). The count
+                     // passes run over the same row windows (x, y), with z = w = 0.
   ivec4 modes;       // x = sample assignment (RASTER4D_ASSIGN_*), y = early rejection,
                      // z = row masks (0: per-sample tests), w = occluder triangles
   ivec4 pick;        // xy = picked eye pixel (GL order; -1 none), z = m, w = words per row
-  ivec4 dispatch;    // x = entries in this dispatch, y = elements to scan, zw unused
+  ivec4 dispatch;    // x = entries in this dispatch, y = elements to scan, z = first and
+                     // w = number of list entries per FB pixel in this STEP 5 dispatch
 };
 
 // Step 2's bounds (floats as order-preserving uints, for atomicMin/Max) and totals.

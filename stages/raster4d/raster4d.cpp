@@ -28,6 +28,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// llvmpipe (gallivm) ends every loop of an invocation once the loops of its SIMD batch have
+// run 65535 iterations in all, silently (NOTES.md "raster4d"): every pass keeps its loop
+// iterations per invocation under this budget by splitting its work over dispatches.
+constexpr int kLoopBudget = 20000;
+
 // GL_TIME_ELAPSED is wrong on llvmpipe: glFinish + steady clock.
 double millisecondsSince(Clock::time_point& start) {
   glFinish();
@@ -125,10 +130,11 @@ public:
     zeroBuffer(cellPairs_, cells * sizeof(glm::uvec4));
     bindAll();
     const bool anyReceiver = state.counts.x > 0;
+    const int windowRows = std::max(1, kLoopBudget / (fb + 1));
     if (anyReceiver) {
       samplesProgram_.use();
       glUniform1i(0, 0);
-      dispatchGrid(w, h);
+      countInWindows(params, fb, windowRows, [&] { dispatchGrid(w, h); });
       scan(sampleCounts_, sampleStarts_, params, cells);
     }
     double step3 = millisecondsSince(start);
@@ -140,7 +146,8 @@ public:
     if (anyReceiver) {
       trianglesProgram_.use();
       glUniform1i(0, 0);
-      dispatchLinear(std::uint64_t(occluders_.triangles()));
+      countInWindows(params, fb, windowRows,
+                     [&] { dispatchLinear(std::uint64_t(occluders_.triangles())); });
       scan(triangleCounts_, triangleStarts_, params, cells);
       state = readBuffer<gpu::Raster4dState>(state_, 1)[0];  // with the occluder counts
     }
@@ -148,7 +155,12 @@ public:
 
     // Bands of FB rows whose lists fit (one band unless max_entries is exceeded).
     std::vector<Raster4dBand> bands;
-    if (anyReceiver) bands = plan(fb, cells, std::uint64_t(param("max_entries").asInt()));
+    if (anyReceiver)
+      bands = plan(fb, windowRows, cells, std::uint64_t(param("max_entries").asInt()));
+    // STEP 5 splits each pixel's triangle list into chunks whose loops fit the budget.
+    const int loopsPerPair = param("row_masks").asBool() ? m + 1 : m * (m + 1) + 1;
+    const int chunk = std::max(1, (kLoopBudget - 4 * m) / loopsPerPair);
+    const int chunks = anyReceiver ? (mostTrianglesPerPixel(cells) + chunk - 1) / chunk : 0;
     double step5 = 0;
     for (const Raster4dBand& band : bands) {
       params.band = glm::ivec4(band.firstRow, band.endRow, int(band.sampleBase), int(band.triangleBase));
@@ -166,10 +178,12 @@ public:
       dispatchLinear(std::uint64_t(occluders_.triangles()));
       step4 += millisecondsSince(start);
       // STEP 5: the band's pairs.
-      params.dispatch.x = int(band.sampleEntries);
-      upload(params);
       program(occlusionPrograms_, "raster4d_occlusion.comp", m).use();
-      dispatchLinear(band.sampleEntries);
+      for (int i = 0; i < chunks; ++i) {
+        params.dispatch = glm::ivec4(int(band.sampleEntries), 0, i * chunk, chunk);
+        upload(params);
+        dispatchLinear(band.sampleEntries);
+      }
       step5 += millisecondsSince(start);
     }
 
@@ -183,7 +197,7 @@ public:
     dispatchGrid(w, h);
     const double resolve = millisecondsSince(start);
     writeCellViews(frame, fb);
-    writeCounters(frame, state, bands, cells, {step2, step3, step4, step5, resolve});
+    writeCounters(frame, state, bands, chunks, cells, {step2, step3, step4, step5, resolve});
   }
 
 private:
@@ -232,15 +246,33 @@ private:
     p.fb = glm::vec4(lo, glm::vec2(float(fb)) / extent);
   }
 
-  std::vector<Raster4dBand> plan(int fb, size_t cells, std::uint64_t maxEntries) const {
+  // The count passes, over windows of FB rows small enough for the loop budget.
+  template <typename Dispatch>
+  void countInWindows(gpu::Raster4dParams& params, int fb, int windowRows, Dispatch dispatch) {
+    for (int first = 0; first < fb; first += windowRows) {
+      params.band = glm::ivec4(first, std::min(fb, first + windowRows), 0, 0);
+      upload(params);
+      dispatch();
+    }
+  }
+
+  int mostTrianglesPerPixel(size_t cells) const {
+    std::uint32_t most = 0;
+    for (std::uint32_t count : readBuffer<std::uint32_t>(triangleCounts_, cells)) most = std::max(most, count);
+    return int(most);
+  }
+
+  std::vector<Raster4dBand> plan(int fb, int windowRows, size_t cells,
+                                 std::uint64_t maxEntries) const {
     const auto sampleTotal = readBuffer<std::uint32_t>(sampleStarts_, 1, cells)[0];
     const auto triangleTotal = readBuffer<std::uint32_t>(triangleStarts_, 1, cells)[0];
     std::vector<Raster4dBand> bands;
-    if (sampleTotal <= maxEntries && triangleTotal <= maxEntries)
+    if (sampleTotal <= maxEntries && triangleTotal <= maxEntries && windowRows >= fb)
       bands = {{0, fb, 0, sampleTotal, 0, triangleTotal}};
     else
       bands = planBands(readBuffer<std::uint32_t>(sampleStarts_, cells + 1),
-                        readBuffer<std::uint32_t>(triangleStarts_, cells + 1), fb, fb, maxEntries);
+                        readBuffer<std::uint32_t>(triangleStarts_, cells + 1), fb, fb,
+                        maxEntries, windowRows);
     std::uint32_t mostSamples = 1, mostTriangles = 1;
     for (const Raster4dBand& band : bands) {
       mostSamples = std::max(mostSamples, band.sampleEntries);
@@ -276,7 +308,7 @@ private:
   // Tables 2, 3 and 7 of the paper: samples stored (redundancy), pairs considered, kept
   // after the early rejection, really occluding (relevant), milliseconds per step.
   void writeCounters(Frame& frame, const gpu::Raster4dState& state,
-                     const std::vector<Raster4dBand>& bands, size_t cells,
+                     const std::vector<Raster4dBand>& bands, int chunks, size_t cells,
                      const std::vector<double>& ms) const {
     double considered = 0, kept = 0, occluding = 0, samplesStored = 0, triangleEntries = 0;
     for (const glm::uvec4& pairs : readBuffer<glm::uvec4>(cellPairs_, cells))
@@ -295,6 +327,7 @@ private:
     c["raster4d.pairsKept"] = kept;
     c["raster4d.pairsOccluding"] = occluding;
     c["raster4d.bands"] = double(bands.size());
+    c["raster4d.step5Chunks"] = chunks;
     const char* steps[] = {"step2Ms", "step3Ms", "step4Ms", "step5Ms", "resolveMs"};
     for (size_t i = 0; i < ms.size(); ++i) c[std::string("raster4d.") + steps[i]] = ms[i];
   }

@@ -63,14 +63,15 @@ glm::mat4 lightSpaceFromWorld(const glm::vec3& centre, const glm::vec3& right,
 
 std::vector<Raster4dBand> planBands(const std::vector<std::uint32_t>& sampleStarts,
                                     const std::vector<std::uint32_t>& triangleStarts,
-                                    int fbWidth, int fbHeight, std::uint64_t maxEntries) {
+                                    int fbWidth, int fbHeight, std::uint64_t maxEntries,
+                                    int maxRows) {
   std::vector<Raster4dBand> bands;
   auto at = [&](const std::vector<std::uint32_t>& starts, int row) {
     return starts[size_t(row) * size_t(fbWidth)];
   };
   for (int first = 0; first < fbHeight;) {
     int end = first + 1;
-    while (end < fbHeight &&
+    while (end < fbHeight && end - first < maxRows &&
            at(sampleStarts, end + 1) - at(sampleStarts, first) <= maxEntries &&
            at(triangleStarts, end + 1) - at(triangleStarts, first) <= maxEntries)
       ++end;

@@ -68,9 +68,10 @@ struct Raster4dBand {
   int firstRow, endRow;
   std::uint32_t sampleBase, sampleEntries, triangleBase, triangleEntries;
 };
-// Splits the FB rows into bands whose sample and triangle entries each fit in `maxEntries`
-// (a single row that does not fit gets a band of its own): from the prefix sums of the
-// counts (size fbWidth * fbHeight + 1).
+// Splits the FB rows into bands of at most `maxRows` rows whose sample and triangle entries
+// each fit in `maxEntries` (a single row that does not fit gets a band of its own): from the
+// prefix sums of the counts (size fbWidth * fbHeight + 1).
 std::vector<Raster4dBand> planBands(const std::vector<std::uint32_t>& sampleStarts,
                                     const std::vector<std::uint32_t>& triangleStarts,
-                                    int fbWidth, int fbHeight, std::uint64_t maxEntries);
+                                    int fbWidth, int fbHeight, std::uint64_t maxEntries,
+                                    int maxRows);
