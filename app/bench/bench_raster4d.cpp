@@ -37,6 +37,7 @@ public:
     scenes_.push_back(std::make_unique<Scene>(scene));
     pipelines_.push_back(std::make_unique<Pipeline>());
     Pipeline& pipeline = *pipelines_.back();
+    pipeline.set("raster4d.enabled=true");  // off by default
     for (const std::string& assignment : sets)
       if (const std::string problem = pipeline.set(assignment); !problem.empty())
         throw std::invalid_argument(problem);
@@ -121,6 +122,7 @@ int runBenchRaster4d(const BenchRaster4dOptions& options) {
     Bench bench(scene, options.width, options.height, options.frames);
     std::fprintf(stderr, "bench-raster4d: %s\n", name.c_str());
     for (int m : {8, 16, 32, 64}) {  // Tables 1, 3, 4
+      std::fprintf(stderr, "  %dx%d samples\n", m, m);
       const Measured r = bench.raster4d({samples(m)});
       const auto [embreeMs, worst] = bench.embree(r, m);
       speed << "| " << name << " | " << m << "x" << m << " | " << fixed(r.ms) << " | "
@@ -137,6 +139,7 @@ int runBenchRaster4d(const BenchRaster4dOptions& options) {
                 << r.counters.at("pairsKept") << " |\n";
     }
     // Tables 2 and 7 at 32 x 32 (the slow variants timed once).
+    std::fprintf(stderr, "  optimizations off\n");
     const Measured base = bench.raster4d({samples(32)});
     const Measured proj4 = bench.raster4d({samples(32), "raster4d.sample_assignment=proj4"}, 1, 1);
     const Measured noRejection = bench.raster4d({samples(32), "raster4d.early_rejection=false"}, 1, 1);

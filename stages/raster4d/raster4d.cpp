@@ -62,6 +62,9 @@ public:
          GL_R32F, {"pairs"}, {0, 0, 4096, Colormap::Perceptual}},
     };
     params_ = {
+        Param::boolean("enabled", "Run 4D rasterization (hundreds of milliseconds per frame on "
+                                  "llvmpipe for large scenes, so off until asked for; the error "
+                                  "stage's truth=raster4d and the tests turn it on).", false),
         Param::integer("samples", "m: light samples per side, m x m cell centres (the paper: 8x8 "
                                   "too few, 32x32 consistently good).", 32, 8, 64),
         Param::integer("fb_resolution", "w = h: pixels per side of the frame buffer FB that pairs "
@@ -92,6 +95,10 @@ public:
   std::string thesisSection() const override { return ""; }
 
   void run(Frame& frame) override {
+    if (!param("enabled").asBool()) {
+      for (const Output& output : outputs_) frame.textures.erase("raster4d." + output.name);
+      return;
+    }
     const int w = frame.eyeWidth, h = frame.eyeHeight, m = param("samples").asInt();
     const int words = (m + 31) / 32, fb = param("fb_resolution").asInt();
     const size_t pixels = size_t(w) * h, cells = size_t(fb) * fb;

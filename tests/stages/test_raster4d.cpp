@@ -22,6 +22,7 @@ namespace {
 constexpr int kWidth = 128, kHeight = 96;
 
 std::vector<std::string> raster4dSets(int m, std::vector<std::string> more = {}) {
+  more.push_back("raster4d.enabled=true");
   more.push_back("raster4d.samples=" + std::to_string(m));
   return more;
 }
@@ -163,13 +164,14 @@ TEST(Raster4d, ErrorStageComparesWithEitherGroundTruth) {
                              ("penumbra-raster4d-cache-" + std::to_string(::getpid()))).string();
   setenv("PENUMBRA_CACHE", cache.c_str(), 1);
   PipelineRun black(makeBuiltinScene("spheres"),
-                    {"raster4d.samples=16", "reference.enabled=true", "reference.cache=false",
+                    {"raster4d.enabled=true", "raster4d.samples=16", "reference.enabled=true", "reference.cache=false",
                      "reference.sampling=uniform", "reference.samples=16",
                      "error.method=raster4d", "error.truth=reference"},
                     kWidth, kHeight);
   EXPECT_GT(black.frame->counters.at("error.pixels"), 1000);
   EXPECT_LE(black.frame->counters.at("error.max"), 1.0 / 256 + 1e-6);
-  PipelineRun trace(makeBuiltinScene("spheres"), {"error.method=trace", "error.truth=raster4d"},
+  PipelineRun trace(makeBuiltinScene("spheres"),
+                    {"raster4d.enabled=true", "error.method=trace", "error.truth=raster4d"},
                     kWidth, kHeight);
   EXPECT_GT(trace.frame->counters.at("error.rmse"), 0);
   EXPECT_LT(trace.frame->counters.at("error.rmse"), 0.2);
@@ -185,6 +187,16 @@ TEST(Raster4d, ParameterRangesAreChecked) {
   EXPECT_NE(pipeline.set("raster4d.fb_resolution=0"), "");
   EXPECT_NE(pipeline.set("raster4d.sample_assignment=L1"), "");
   EXPECT_EQ(pipeline.set("raster4d.samples=64"), "");
+}
+
+// Off (the default), it leaves no output behind, so nothing compares against a stale truth.
+TEST(Raster4d, DisabledWritesNothing) {
+  PipelineRun run(makeBuiltinScene("cube"), raster4dSets(16), 64, 48);
+  EXPECT_TRUE(run.frame->has("raster4d.visibility"));
+  run.pipeline->set("raster4d.enabled=false");
+  run.run();
+  EXPECT_FALSE(run.frame->has("raster4d.visibility"));
+  EXPECT_FALSE(run.frame->has("error.signed"));  // truth reference is off too
 }
 
 }  // namespace
