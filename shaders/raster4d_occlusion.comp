@@ -57,8 +57,23 @@ bool pairOccludes(vec3 q, uint triangle, inout uvec2 mask[SAMPLES]) {
   planes[1] = lightPlane(cross(e1, e2), q, sign(orientation), false);
   planes[2] = lightPlane(cross(e2, e0), q, sign(orientation), false);
   planes[3] = lightPlane(triangleNormal, v0, -sign(side), true);
+  // Row culling (our addition, raster4d.row_culling): when every vertex is nearer the light
+  // than the sample, the cone from the sample through the triangle meets the light plane in
+  // the triangle of the vertices' projections from the sample; rows outside its y extent
+  // (one row of margin against round-off) have no bit.
+  int firstRow = 0, lastRow = SAMPLES - 1;
+  if (r4d.options.x != 0 && max(v0.z, max(v1.z, v2.z)) < q.z) {
+    vec3 lsY = vec3(v0.y, v1.y, v2.y), lsZ = vec3(v0.z, v1.z, v2.z);
+    vec3 lightY = q.y + (lsY - q.y) * (q.z / (q.z - lsZ));
+    float lo = (min(lightY.x, min(lightY.y, lightY.z)) + r4d.light.y) / r4d.light.w;
+    float hi = (max(lightY.x, max(lightY.y, lightY.z)) + r4d.light.y) / r4d.light.w;
+    if (lo >= -1.0e6 && hi <= 1.0e6) {  // false for NaN or overflow: keep every row
+      firstRow = int(clamp(floor(lo) - 1.0, 0.0, float(SAMPLES - 1)));
+      lastRow = int(clamp(ceil(hi) + 1.0, 0.0, float(SAMPLES - 1)));
+    }
+  }
   bool occludes = false;
-  for (int row = 0; row < SAMPLES; ++row) {
+  for (int row = firstRow; row <= lastRow; ++row) {
     uvec2 bits = rowOccluded(planes, row);
     mask[row] |= bits;
     occludes = occludes || bits != uvec2(0u);

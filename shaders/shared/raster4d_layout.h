@@ -47,6 +47,8 @@ struct Raster4dParams {
   ivec4 pick;        // xy = picked eye pixel (GL order; -1 none), z = m, w = words per row
   ivec4 dispatch;    // x = entries in this dispatch, y = elements to scan, z = first and
                      // w = number of list entries per FB pixel in this STEP 5 dispatch
+  ivec4 options;     // x = row culling (not in the paper: only the light rows the triangle's
+                     // cone from the sample can reach), yzw unused
 };
 
 // Step 2's bounds (floats as order-preserving uints, for atomicMin/Max) and totals.

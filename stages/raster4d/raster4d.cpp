@@ -79,6 +79,9 @@ public:
                                           "triangle's Proj4 AABB (Algorithm 3 lines 5-6).", true),
         Param::boolean("row_masks", "A whole light row per plane from its split column k (§3.3); "
                                     "off: every light sample tested alone (same bits).", true),
+        Param::boolean("row_culling", "Not in the paper: test only the light rows that the "
+                                      "triangle's cone from the sample reaches (same bits; off "
+                                      "is the paper's Algorithm 3).", true),
         Param::integer("max_entries", "Most list entries (samples, and triangles) held at once; "
                                       "beyond it the FB is processed in bands of rows.",
                        1 << 24, 1024, 1 << 28),
@@ -227,6 +230,7 @@ private:
                          param("early_rejection").asBool(), param("row_masks").asBool(),
                          occluders_.triangles());
     const int pickX = param("pick_x").asInt(), pickY = param("pick_y").asInt();
+    p.options = glm::ivec4(param("row_culling").asBool(), 0, 0, 0);
     p.pick = glm::ivec4(pickX, pickY < 0 ? -1 : frame.eyeHeight - 1 - pickY, m, (m + 31) / 32);
     return p;
   }

@@ -25,7 +25,8 @@ static_assert(offsetof(gpu::Raster4dParams, band) == 128);
 static_assert(offsetof(gpu::Raster4dParams, modes) == 144);
 static_assert(offsetof(gpu::Raster4dParams, pick) == 160);
 static_assert(offsetof(gpu::Raster4dParams, dispatch) == 176);
-static_assert(sizeof(gpu::Raster4dParams) == 192);
+static_assert(offsetof(gpu::Raster4dParams, options) == 192);
+static_assert(sizeof(gpu::Raster4dParams) == 208);
 static_assert(sizeof(gpu::Raster4dState) == 48);
 
 // The occluders (every triangle of the objects that are not receiver-only, the set the

@@ -125,6 +125,7 @@ TEST(Raster4d, OptimizationsAndBandsDoNotChangeABit) {
               base.frame->counters.at("raster4d.receivers"));  // Algorithm 2: one pixel each
     for (const std::vector<std::string>& toggle : std::vector<std::vector<std::string>>{
              {"raster4d.row_masks=false"},
+             {"raster4d.row_culling=false"},
              {"raster4d.early_rejection=false"},
              {"raster4d.sample_assignment=proj4"},
              {"raster4d.max_entries=2000"},
