@@ -55,7 +55,7 @@ public:
     result.ms = times[times.size() / 2];
     for (const auto& [key, value] : result.frame->counters)
       if (key.rfind("raster4d.", 0) == 0) result.counters[key.substr(9)] = value;
-    result.visibility = result.frame->input("raster4d.visibility").readFloats();
+    result.visibility = result.frame->texture("raster4d.visibility").readFloats();
     return result;
   }
 
@@ -63,7 +63,9 @@ public:
   // every core) and the largest visibility difference.
   std::pair<double, double> embree(const Measured& measured, int m) {
     if (!tracer_) tracer_ = std::make_unique<ReferenceTracer>(scene_);
-    const ReferenceRequest request = makeReferenceRequest(*measured.frame, m, false);
+    const ReferenceRequest request = makeReferenceRequest(
+        *measured.frame, measured.frame->texture("gbuffer.wsPosition"),
+        measured.frame->texture("gbuffer.wsNormal"), m, false);
     std::vector<float> visibility;
     const auto start = std::chrono::steady_clock::now();
     tracer_->trace(request, visibility);

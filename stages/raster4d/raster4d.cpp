@@ -22,6 +22,7 @@
 #include "core/frame.h"
 #include "gl/shader_program.h"
 #include "raster4d_gpu.h"
+#include "shared_inputs/light_input.h"
 #include "reference/reference_trace.h"
 
 namespace {
@@ -45,21 +46,30 @@ double millisecondsSince(Clock::time_point& start) {
 class Raster4dStage final : public Stage {
 public:
   Raster4dStage() {
+    inputs_ = {
+        Input::texture("wsPosition", "Receivers: the output samples (STEP 1).", GL_RGBA32F),
+        Input::texture("wsNormal", "Receiver normals (origin offset, tangent-plane rule).",
+                       GL_RGBA32F),
+        lightInput(),  // its CPU copy (frame.light) orients the light rectangle
+    };
     outputs_ = {
         {"visibility", "1 - (occluded light samples) / m^2 per pixel: exact for the m x m grid "
                        "of cell centres (not for the continuous light).",
-         GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray}},
-        {"mask", "The picked pixel's occlusion mask over the light (column = along the light's "
+         GL_R32F, {"visibility"}, {0, 0, 1, Colormap::Gray},
+         kRoleShadowMethod | kRoleGroundTruth},
+        {"pickedMask", "The picked pixel's occlusion mask over the light (column = along the light's "
                  "right, row = along its up): 1 hidden by a triangle, 0.5 behind the "
                  "receiver's own tangent plane, 0 reaching the light.",
          GL_R32F, {"occluded"}, {0, 0, 1, Colormap::Gray}},
-        {"triangles", "Triangles per FB pixel (STEP 4: every pixel of a triangle's Proj4 AABB).",
+        {"fbTriangles", "Triangles per FB pixel (STEP 4: every pixel of a triangle's Proj4 AABB).",
          GL_R32F, {"triangles"}, {0, 0, 64, Colormap::Perceptual}},
-        {"samples", "Output samples per FB pixel (STEP 3).", GL_R32F, {"samples"},
+        {"fbSamples", "Output samples per FB pixel (STEP 3).", GL_R32F, {"samples"},
          {0, 0, 64, Colormap::Perceptual}},
-        {"pairs", "(sample, triangle) pairs per FB pixel tested with the four planes (after "
+        {"fbPairs", "(sample, triangle) pairs per FB pixel tested with the four planes (after "
                   "the early rejection when it is on).",
          GL_R32F, {"pairs"}, {0, 0, 4096, Colormap::Perceptual}},
+        Output::buffer("masks", "The occlusion masks: per pixel (GL order) m rows of ceil(m/32) "
+                                "uint words, bit j of row i = light sample (i, j)."),
     };
     params_ = {
         Param::boolean("enabled", "Run 4D rasterization (hundreds of milliseconds per frame on "
@@ -85,7 +95,8 @@ public:
         Param::integer("max_entries", "Most list entries (samples, and triangles) held at once; "
                                       "beyond it the FB is processed in bands of rows.",
                        1 << 24, 1024, 1 << 28),
-        Param::integer("pick_x", "Picked pixel (image column) whose mask the `mask` view shows; "
+        Param::integer("pick_x", "Picked pixel (image column) whose mask the `pickedMask` view "
+                                 "shows; "
                                  "-1: none.", -1, -1, 16383),
         Param::integer("pick_y", "Picked pixel (image row, 0 on top); -1: none.", -1, -1, 16383),
     };
@@ -99,7 +110,10 @@ public:
 
   void run(Frame& frame) override {
     if (!param("enabled").asBool()) {
-      for (const Output& output : outputs_) frame.textures.erase("raster4d." + output.name);
+      for (const Output& output : outputs_) {
+        frame.textures.erase("raster4d." + output.name);
+        frame.buffers.erase("raster4d." + output.name);
+      }
       return;
     }
     const int w = frame.eyeWidth, h = frame.eyeHeight, m = param("samples").asInt();
@@ -116,8 +130,8 @@ public:
     bindBase(RASTER4D_STATE_BINDING, state_);
     bindBase(RASTER4D_RECEIVERS_BINDING, receivers_);
     upload(params);
-    glBindTextureUnit(0, frame.input("gbuffer.wsPosition").id());
-    glBindTextureUnit(1, frame.input("gbuffer.wsNormal").id());
+    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
     receiversProgram_.use();
     dispatchGrid(w, h);
     state = readBuffer<gpu::Raster4dState>(state_, 1)[0];
@@ -126,7 +140,7 @@ public:
     const double step2 = millisecondsSince(start);
 
     // STEP 3: samples to FB pixels (counts, prefix sum; scattered per band below).
-    GlBuffer& masks = frame.buffer("raster4d.masks");
+    GlBuffer& masks = frame.outputBuffer(*this, "masks");
     ensureBufferBytes(masks, pixels * m * words * sizeof(std::uint32_t));
     zeroBuffer(masks, pixels * m * words * sizeof(std::uint32_t));
     bindBase(RASTER4D_MASKS_BINDING, masks);
@@ -199,7 +213,7 @@ public:
 
     // Visibility from the masks; the picked pixel's mask; the FB views.
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
-    GlTexture& mask = frame.output(*this, "mask", m, m);
+    GlTexture& mask = frame.output(*this, "pickedMask", m, m);
     glClearTexImage(mask.id(), 0, GL_RED, GL_FLOAT, nullptr);
     program(resolvePrograms_, "raster4d_resolve.comp", m).use();
     glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
@@ -309,7 +323,7 @@ private:
 
   void writeCellViews(Frame& frame, int fb) {
     cellsProgram_.use();
-    const char* names[] = {"triangles", "samples", "pairs"};
+    const char* names[] = {"fbTriangles", "fbSamples", "fbPairs"};
     for (int i = 0; i < 3; ++i)
       glBindImageTexture(GLuint(i), frame.output(*this, names[i], fb, fb).id(), 0, GL_FALSE, 0,
                          GL_WRITE_ONLY, GL_R32F);

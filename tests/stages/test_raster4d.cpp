@@ -54,7 +54,9 @@ Agreement compareWithEmbree(const std::string& scene, int m, int width = kWidth,
                             int height = kHeight) {
   PipelineRun run(makeBuiltinScene(scene), raster4dSets(m), width, height);
   const std::vector<std::uint32_t> masks = readMasks(run);
-  const ReferenceRequest request = makeReferenceRequest(*run.frame, m, /*stratified=*/false);
+  const ReferenceRequest request = makeReferenceRequest(*run.frame, run.frame->texture("gbuffer.wsPosition"),
+                                                        run.frame->texture("gbuffer.wsNormal"), m,
+                                                        /*stratified=*/false);
   const ReferenceTracer tracer(run.scene);
   const glm::vec3 centre = run.scene.light.center, forward = run.frame->light.forward;
   Agreement agreement;
@@ -167,12 +169,12 @@ TEST(Raster4d, ErrorStageComparesWithEitherGroundTruth) {
   PipelineRun black(makeBuiltinScene("spheres"),
                     {"raster4d.enabled=true", "raster4d.samples=16", "reference.enabled=true", "reference.cache=false",
                      "reference.sampling=uniform", "reference.samples=16",
-                     "error.method=raster4d", "error.truth=reference"},
+                     "error.method=raster4d", "error.against=reference"},
                     kWidth, kHeight);
   EXPECT_GT(black.frame->counters.at("error.pixels"), 1000);
   EXPECT_LE(black.frame->counters.at("error.max"), 1.0 / 256 + 1e-6);
   PipelineRun trace(makeBuiltinScene("spheres"),
-                    {"raster4d.enabled=true", "error.method=trace", "error.truth=raster4d"},
+                    {"raster4d.enabled=true", "error.method=trace", "error.against=raster4d"},
                     kWidth, kHeight);
   EXPECT_GT(trace.frame->counters.at("error.rmse"), 0);
   EXPECT_LT(trace.frame->counters.at("error.rmse"), 0.2);
