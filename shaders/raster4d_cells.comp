@@ -5,9 +5,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, r32f) uniform writeonly image2D trianglesImage;
 layout(binding = 1, r32f) uniform writeonly image2D samplesImage;
 layout(binding = 2, r32f) uniform writeonly image2D pairsImage;
-layout(std430, binding = RASTER4D_TRIANGLE_COUNTS_BINDING) readonly buffer TriangleCounts { uint triangleCounts[]; };
-layout(std430, binding = RASTER4D_SAMPLE_COUNTS_BINDING) readonly buffer SampleCounts { uint sampleCounts[]; };
-layout(std430, binding = RASTER4D_CELL_PAIRS_BINDING) readonly buffer CellPairs { uvec4 cellPairs[]; };
+layout(std430, binding = R4D_CELLS_TRIANGLE_COUNTS) readonly buffer TriangleCounts { uint triangleCounts[]; };
+layout(std430, binding = R4D_CELLS_SAMPLE_COUNTS) readonly buffer SampleCounts { uint sampleCounts[]; };
+layout(std430, binding = R4D_CELLS_PAIRS) readonly buffer CellPairs { uvec4 cellPairs[]; };
 
 void main() {
   ivec2 cell = ivec2(gl_GlobalInvocationID.xy);

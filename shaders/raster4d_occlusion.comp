@@ -11,14 +11,14 @@
 //     (shared/raster4d.glsl rowInside); or, with row masks off, every sample tested alone.
 #include "shared/raster4d.glsl"
 layout(local_size_x = 64) in;
-layout(std430, binding = RASTER4D_RECEIVERS_BINDING) readonly buffer Receivers { vec4 receivers[]; };
-layout(std430, binding = RASTER4D_LS_TRIANGLES_BINDING) readonly buffer LsTriangles { vec4 lsVertices[]; };
-layout(std430, binding = RASTER4D_TRIANGLE_BOXES_BINDING) readonly buffer Boxes { vec4 boxes[]; };
-layout(std430, binding = RASTER4D_SAMPLE_LIST_BINDING) readonly buffer SampleList { uvec2 sampleEntries[]; };
-layout(std430, binding = RASTER4D_TRIANGLE_STARTS_BINDING) readonly buffer TriangleStarts { uint triangleStarts[]; };
-layout(std430, binding = RASTER4D_TRIANGLE_LIST_BINDING) readonly buffer TriangleList { uint triangleEntries[]; };
-layout(std430, binding = RASTER4D_MASKS_BINDING) buffer Masks { uint masks[]; };
-layout(std430, binding = RASTER4D_CELL_PAIRS_BINDING) buffer CellPairs { uint cellPairs[]; };  // 4 per FB pixel
+layout(std430, binding = R4D_OCCLUSION_RECEIVERS) readonly buffer Receivers { vec4 receivers[]; };
+layout(std430, binding = R4D_OCCLUSION_LS_TRIANGLES) readonly buffer LsTriangles { vec4 lsVertices[]; };
+layout(std430, binding = R4D_OCCLUSION_BOXES) readonly buffer Boxes { vec4 boxes[]; };
+layout(std430, binding = R4D_OCCLUSION_SAMPLE_LIST) readonly buffer SampleList { uvec2 sampleEntries[]; };
+layout(std430, binding = R4D_OCCLUSION_TRIANGLE_STARTS) readonly buffer TriangleStarts { uint triangleStarts[]; };
+layout(std430, binding = R4D_OCCLUSION_TRIANGLE_LIST) readonly buffer TriangleList { uint triangleEntries[]; };
+layout(std430, binding = R4D_OCCLUSION_MASKS) buffer Masks { uint masks[]; };
+layout(std430, binding = R4D_OCCLUSION_CELL_PAIRS) buffer CellPairs { uint cellPairs[]; };  // 4 per FB pixel
 
 const int kWords = (SAMPLES + 31) / 32;
 

@@ -7,8 +7,8 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D wsPositionTexture;
 layout(binding = 1) uniform sampler2D wsNormalTexture;
-layout(std430, binding = RASTER4D_RECEIVERS_BINDING) writeonly buffer Receivers { vec4 receivers[]; };
-layout(std430, binding = RASTER4D_STATE_BINDING) buffer State { Raster4dState state; };
+layout(std430, binding = R4D_RECEIVERS_RECEIVERS) writeonly buffer Receivers { vec4 receivers[]; };
+layout(std430, binding = R4D_RECEIVERS_STATE) buffer State { Raster4dState state; };
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

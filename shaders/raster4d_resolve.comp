@@ -9,8 +9,8 @@ layout(binding = 0) uniform sampler2D wsPositionTexture;
 layout(binding = 1) uniform sampler2D wsNormalTexture;
 layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
 layout(binding = 1, r32f) uniform writeonly image2D pickedMaskImage;
-layout(std430, binding = RASTER4D_RECEIVERS_BINDING) readonly buffer Receivers { vec4 receivers[]; };
-layout(std430, binding = RASTER4D_MASKS_BINDING) buffer Masks { uint masks[]; };
+layout(std430, binding = R4D_RESOLVE_RECEIVERS) readonly buffer Receivers { vec4 receivers[]; };
+layout(std430, binding = R4D_RESOLVE_MASKS) buffer Masks { uint masks[]; };
 
 const int kWords = (SAMPLES + 31) / 32;
 

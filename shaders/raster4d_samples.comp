@@ -6,11 +6,11 @@
 #include "shared/raster4d.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(location = 0) uniform int uScatter;
-layout(std430, binding = RASTER4D_RECEIVERS_BINDING) readonly buffer Receivers { vec4 receivers[]; };
-layout(std430, binding = RASTER4D_SAMPLE_COUNTS_BINDING) buffer Counts { uint counts[]; };
-layout(std430, binding = RASTER4D_SAMPLE_STARTS_BINDING) readonly buffer Starts { uint starts[]; };
-layout(std430, binding = RASTER4D_CURSORS_BINDING) buffer Cursors { uint cursors[]; };
-layout(std430, binding = RASTER4D_SAMPLE_LIST_BINDING) writeonly buffer List { uvec2 entries[]; };
+layout(std430, binding = R4D_SAMPLES_RECEIVERS) readonly buffer Receivers { vec4 receivers[]; };
+layout(std430, binding = R4D_SAMPLES_COUNTS) buffer Counts { uint counts[]; };
+layout(std430, binding = R4D_SAMPLES_STARTS) readonly buffer Starts { uint starts[]; };
+layout(std430, binding = R4D_SAMPLES_CURSORS) buffer Cursors { uint cursors[]; };
+layout(std430, binding = R4D_SAMPLES_LIST) writeonly buffer List { uvec2 entries[]; };
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

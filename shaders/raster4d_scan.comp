@@ -3,8 +3,8 @@
 // contiguous run, the run totals are scanned in shared memory, then each run is written.
 #include "shared/raster4d.glsl"
 layout(local_size_x = RASTER4D_SCAN_GROUP) in;
-layout(std430, binding = RASTER4D_COUNTS_BINDING) readonly buffer Counts { uint counts[]; };
-layout(std430, binding = RASTER4D_STARTS_BINDING) writeonly buffer Starts { uint starts[]; };
+layout(std430, binding = R4D_SCAN_COUNTS) readonly buffer Counts { uint counts[]; };
+layout(std430, binding = R4D_SCAN_STARTS) writeonly buffer Starts { uint starts[]; };
 shared uint runTotals[RASTER4D_SCAN_GROUP];
 
 void main() {

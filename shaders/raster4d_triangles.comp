@@ -8,14 +8,14 @@
 #include "shared/raster4d.glsl"
 layout(local_size_x = 64) in;
 layout(location = 0) uniform int uScatter;
-layout(std430, binding = RASTER4D_TRIANGLES_BINDING) readonly buffer Triangles { vec4 wsVertices[]; };
-layout(std430, binding = RASTER4D_LS_TRIANGLES_BINDING) buffer LsTriangles { vec4 lsVertices[]; };
-layout(std430, binding = RASTER4D_TRIANGLE_BOXES_BINDING) buffer Boxes { vec4 boxes[]; };
-layout(std430, binding = RASTER4D_STATE_BINDING) buffer State { Raster4dState state; };
-layout(std430, binding = RASTER4D_TRIANGLE_COUNTS_BINDING) buffer Counts { uint counts[]; };
-layout(std430, binding = RASTER4D_TRIANGLE_STARTS_BINDING) readonly buffer Starts { uint starts[]; };
-layout(std430, binding = RASTER4D_CURSORS_BINDING) buffer Cursors { uint cursors[]; };
-layout(std430, binding = RASTER4D_TRIANGLE_LIST_BINDING) writeonly buffer List { uint entries[]; };
+layout(std430, binding = R4D_TRIANGLES_TRIANGLES) readonly buffer Triangles { vec4 wsVertices[]; };
+layout(std430, binding = R4D_TRIANGLES_LS_TRIANGLES) buffer LsTriangles { vec4 lsVertices[]; };
+layout(std430, binding = R4D_TRIANGLES_BOXES) buffer Boxes { vec4 boxes[]; };
+layout(std430, binding = R4D_TRIANGLES_STATE) buffer State { Raster4dState state; };
+layout(std430, binding = R4D_TRIANGLES_COUNTS) buffer Counts { uint counts[]; };
+layout(std430, binding = R4D_TRIANGLES_STARTS) readonly buffer Starts { uint starts[]; };
+layout(std430, binding = R4D_TRIANGLES_CURSORS) buffer Cursors { uint cursors[]; };
+layout(std430, binding = R4D_TRIANGLES_LIST) writeonly buffer List { uint entries[]; };
 
 const float kHuge = 3.0e38;
 const vec4 kEmpty = vec4(1.0, 1.0, -1.0, -1.0);

@@ -9,24 +9,54 @@
 // uniform sampling numbers them. *P space*: the plane P (depth D, parallel to the light)
 // in light-space xy. Proj4(X) (§3.1) is the rectangle where rays from X through the four
 // outer samples hit P: centre X.xy D/d, half size (a, b) |D/d - 1|.
-#define RASTER4D_PARAMS_BINDING 5     // uniform Raster4dParams
-#define RASTER4D_RECEIVERS_BINDING 0  // vec4 per eye pixel: ls (x, y, d); w = 0 background,
-                                      // 1 receiver, 2 at or behind the light plane
-#define RASTER4D_TRIANGLES_BINDING 1  // vec4 x 3 per occluder triangle, world space
-#define RASTER4D_STATE_BINDING 2      // Raster4dState
-#define RASTER4D_COUNTS_BINDING 3     // scan input: uint per FB pixel
-#define RASTER4D_STARTS_BINDING 4     // scan output: uint per FB pixel + 1, exclusive prefix sum
-#define RASTER4D_CURSORS_BINDING 6    // uint per FB pixel: scatter cursors
-#define RASTER4D_SAMPLE_COUNTS_BINDING 7    // uint per FB pixel: samples assigned
-#define RASTER4D_SAMPLE_STARTS_BINDING 8    // their prefix sum (FB pixels + 1)
-#define RASTER4D_SAMPLE_LIST_BINDING 9      // uvec2 per sample entry: (eye pixel, FB pixel)
-#define RASTER4D_TRIANGLE_COUNTS_BINDING 10 // uint per FB pixel: triangles assigned
-#define RASTER4D_TRIANGLE_STARTS_BINDING 11 // their prefix sum (FB pixels + 1)
-#define RASTER4D_TRIANGLE_LIST_BINDING 12   // uint per triangle entry: triangle index
-#define RASTER4D_TRIANGLE_BOXES_BINDING 13  // vec4 per triangle: P-space AABB (min xy, max xy)
-#define RASTER4D_LS_TRIANGLES_BINDING 14    // vec4 x 3 per triangle: light-space vertices
-#define RASTER4D_MASKS_BINDING 15     // uint per (eye pixel, light row, word)
-#define RASTER4D_CELL_PAIRS_BINDING 16  // uvec4 per FB pixel: considered, kept, occluding, 0
+#define RASTER4D_PARAMS_BINDING 5  // uniform Raster4dParams
+// Storage buffers, per pass (within GL 4.5's minimum of 8 per compute shader). The data:
+//  receivers    vec4 per eye pixel: ls (x, y, d); w = 0 background, 1 receiver, 2 at or
+//               behind the light plane
+//  triangles    vec4 x 3 per occluder triangle, world space; lsTriangles: light space
+//  boxes        vec4 per triangle: P-space AABB of its Proj4 (min xy, max xy)
+//  counts       uint per FB pixel (samples or triangles assigned); starts: their exclusive
+//               prefix sum (FB pixels + 1); cursors: scatter cursors
+//  sampleList   uvec2 per sample entry (eye pixel, FB pixel); triangleList: uint per entry
+//  masks        uint per (eye pixel, light row, word); cellPairs: uvec4 per FB pixel
+//               (pairs considered, kept, occluding, 0)
+// STEP 2 (raster4d_receivers.comp)
+#define R4D_RECEIVERS_RECEIVERS 0
+#define R4D_RECEIVERS_STATE 1
+// STEP 3 (raster4d_samples.comp)
+#define R4D_SAMPLES_RECEIVERS 0
+#define R4D_SAMPLES_COUNTS 1
+#define R4D_SAMPLES_STARTS 2
+#define R4D_SAMPLES_CURSORS 3
+#define R4D_SAMPLES_LIST 4
+// STEP 4 (raster4d_triangles.comp)
+#define R4D_TRIANGLES_TRIANGLES 0
+#define R4D_TRIANGLES_LS_TRIANGLES 1
+#define R4D_TRIANGLES_BOXES 2
+#define R4D_TRIANGLES_STATE 3
+#define R4D_TRIANGLES_COUNTS 4
+#define R4D_TRIANGLES_STARTS 5
+#define R4D_TRIANGLES_CURSORS 6
+#define R4D_TRIANGLES_LIST 7
+// prefix sums (raster4d_scan.comp)
+#define R4D_SCAN_COUNTS 0
+#define R4D_SCAN_STARTS 1
+// STEP 5 (raster4d_occlusion.comp)
+#define R4D_OCCLUSION_RECEIVERS 0
+#define R4D_OCCLUSION_LS_TRIANGLES 1
+#define R4D_OCCLUSION_BOXES 2
+#define R4D_OCCLUSION_SAMPLE_LIST 3
+#define R4D_OCCLUSION_TRIANGLE_STARTS 4
+#define R4D_OCCLUSION_TRIANGLE_LIST 5
+#define R4D_OCCLUSION_MASKS 6
+#define R4D_OCCLUSION_CELL_PAIRS 7
+// visibility (raster4d_resolve.comp)
+#define R4D_RESOLVE_RECEIVERS 0
+#define R4D_RESOLVE_MASKS 1
+// views (raster4d_cells.comp)
+#define R4D_CELLS_TRIANGLE_COUNTS 0
+#define R4D_CELLS_SAMPLE_COUNTS 1
+#define R4D_CELLS_PAIRS 2
 
 #define RASTER4D_SCAN_GROUP 1024
 #define RASTER4D_ASSIGN_L0 1     // modes.x: Algorithm 2 (one FB pixel per sample)

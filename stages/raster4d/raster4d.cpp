@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 #include <map>
 #include <memory>
 
@@ -127,8 +129,7 @@ public:
     state.boundsMin = glm::uvec4(~0u);
     state_.upload(&state, sizeof state);
     ensureBufferBytes(receivers_, pixels * sizeof(glm::vec4));
-    bindBase(RASTER4D_STATE_BINDING, state_);
-    bindBase(RASTER4D_RECEIVERS_BINDING, receivers_);
+    bind({{R4D_RECEIVERS_RECEIVERS, &receivers_}, {R4D_RECEIVERS_STATE, &state_}});
     upload(params);
     glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
@@ -143,7 +144,6 @@ public:
     GlBuffer& masks = frame.outputBuffer(*this, "masks");
     ensureBufferBytes(masks, pixels * m * words * sizeof(std::uint32_t));
     zeroBuffer(masks, pixels * m * words * sizeof(std::uint32_t));
-    bindBase(RASTER4D_MASKS_BINDING, masks);
     for (GlBuffer* buffer : {&sampleCounts_, &triangleCounts_, &cursors_})
       ensureBufferBytes(*buffer, cells * sizeof(std::uint32_t));
     ensureBufferBytes(cellPairs_, cells * sizeof(glm::uvec4));
@@ -152,11 +152,11 @@ public:
     zeroBuffer(sampleCounts_, cells * sizeof(std::uint32_t));
     zeroBuffer(triangleCounts_, cells * sizeof(std::uint32_t));
     zeroBuffer(cellPairs_, cells * sizeof(glm::uvec4));
-    bindAll();
     const bool anyReceiver = state.counts.x > 0;
     const int windowRows = std::max(1, kLoopBudget / (fb + 1));
     if (anyReceiver) {
       samplesProgram_.use();
+      bindSamplesPass();
       glUniform1i(0, 0);
       countInWindows(params, fb, windowRows, [&] { dispatchGrid(w, h); });
       scan(sampleCounts_, sampleStarts_, params, cells);
@@ -166,9 +166,9 @@ public:
     // STEP 4: triangles to FB pixels (counts, prefix sum).
     ensureBufferBytes(lsTriangles_, size_t(std::max(1, occluders_.triangles())) * 3 * sizeof(glm::vec4));
     ensureBufferBytes(boxes_, size_t(std::max(1, occluders_.triangles())) * sizeof(glm::vec4));
-    bindAll();
     if (anyReceiver) {
       trianglesProgram_.use();
+      bindTrianglesPass();
       glUniform1i(0, 0);
       countInWindows(params, fb, windowRows,
                      [&] { dispatchLinear(std::uint64_t(occluders_.triangles())); });
@@ -192,17 +192,24 @@ public:
       // STEP 3, scatter.
       zeroBuffer(cursors_, cells * sizeof(std::uint32_t));
       samplesProgram_.use();
+      bindSamplesPass();
       glUniform1i(0, 1);
       dispatchGrid(w, h);
       step3 += millisecondsSince(start);
       // STEP 4, scatter.
       zeroBuffer(cursors_, cells * sizeof(std::uint32_t));
       trianglesProgram_.use();
+      bindTrianglesPass();
       glUniform1i(0, 1);
       dispatchLinear(std::uint64_t(occluders_.triangles()));
       step4 += millisecondsSince(start);
       // STEP 5: the band's pairs.
       program(occlusionPrograms_, "raster4d_occlusion.comp", m).use();
+      bind({{R4D_OCCLUSION_RECEIVERS, &receivers_}, {R4D_OCCLUSION_LS_TRIANGLES, &lsTriangles_},
+            {R4D_OCCLUSION_BOXES, &boxes_}, {R4D_OCCLUSION_SAMPLE_LIST, &sampleList_},
+            {R4D_OCCLUSION_TRIANGLE_STARTS, &triangleStarts_},
+            {R4D_OCCLUSION_TRIANGLE_LIST, &triangleList_}, {R4D_OCCLUSION_MASKS, &masks},
+            {R4D_OCCLUSION_CELL_PAIRS, &cellPairs_}});
       for (int i = 0; i < chunks; ++i) {
         params.dispatch = glm::ivec4(int(band.sampleEntries), 0, i * chunk, chunk);
         upload(params);
@@ -216,6 +223,7 @@ public:
     GlTexture& mask = frame.output(*this, "pickedMask", m, m);
     glClearTexImage(mask.id(), 0, GL_RED, GL_FLOAT, nullptr);
     program(resolvePrograms_, "raster4d_resolve.comp", m).use();
+    bind({{R4D_RESOLVE_RECEIVERS, &receivers_}, {R4D_RESOLVE_MASKS, &masks}});
     glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(1, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchGrid(w, h);
@@ -305,8 +313,6 @@ private:
     }
     ensureBufferBytes(sampleList_, size_t(mostSamples) * sizeof(glm::uvec2));
     ensureBufferBytes(triangleList_, size_t(mostTriangles) * sizeof(std::uint32_t));
-    bindBase(RASTER4D_SAMPLE_LIST_BINDING, sampleList_);
-    bindBase(RASTER4D_TRIANGLE_LIST_BINDING, triangleList_);
     return bands;
   }
 
@@ -314,8 +320,7 @@ private:
             size_t cells) {
     params.dispatch.y = int(cells);
     upload(params);
-    bindBase(RASTER4D_COUNTS_BINDING, counts);
-    bindBase(RASTER4D_STARTS_BINDING, starts);
+    bind({{R4D_SCAN_COUNTS, &counts}, {R4D_SCAN_STARTS, &starts}});
     scanProgram_.use();
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -323,6 +328,8 @@ private:
 
   void writeCellViews(Frame& frame, int fb) {
     cellsProgram_.use();
+    bind({{R4D_CELLS_TRIANGLE_COUNTS, &triangleCounts_}, {R4D_CELLS_SAMPLE_COUNTS, &sampleCounts_},
+          {R4D_CELLS_PAIRS, &cellPairs_}});
     const char* names[] = {"fbTriangles", "fbSamples", "fbPairs"};
     for (int i = 0; i < 3; ++i)
       glBindImageTexture(GLuint(i), frame.output(*this, names[i], fb, fb).id(), 0, GL_FALSE, 0,
@@ -357,19 +364,21 @@ private:
     for (size_t i = 0; i < ms.size(); ++i) c[std::string("raster4d.") + steps[i]] = ms[i];
   }
 
-  void bindAll() const {
-    bindBase(RASTER4D_TRIANGLES_BINDING, occluders_.buffer());
-    bindBase(RASTER4D_CURSORS_BINDING, cursors_);
-    bindBase(RASTER4D_SAMPLE_COUNTS_BINDING, sampleCounts_);
-    bindBase(RASTER4D_SAMPLE_STARTS_BINDING, sampleStarts_);
-    bindBase(RASTER4D_TRIANGLE_COUNTS_BINDING, triangleCounts_);
-    bindBase(RASTER4D_TRIANGLE_STARTS_BINDING, triangleStarts_);
-    bindBase(RASTER4D_TRIANGLE_BOXES_BINDING, boxes_);
-    bindBase(RASTER4D_LS_TRIANGLES_BINDING, lsTriangles_);
-    bindBase(RASTER4D_CELL_PAIRS_BINDING, cellPairs_);
+  // Each pass's storage buffers at its own bindings (shared/raster4d_layout.h).
+  static void bind(std::initializer_list<std::pair<GLuint, const GlBuffer*>> buffers) {
+    for (const auto& [binding, buffer] : buffers)
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer->id());
   }
-  static void bindBase(GLuint binding, const GlBuffer& buffer) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer.id());
+  void bindSamplesPass() const {
+    bind({{R4D_SAMPLES_RECEIVERS, &receivers_}, {R4D_SAMPLES_COUNTS, &sampleCounts_},
+          {R4D_SAMPLES_STARTS, &sampleStarts_}, {R4D_SAMPLES_CURSORS, &cursors_},
+          {R4D_SAMPLES_LIST, &sampleList_}});
+  }
+  void bindTrianglesPass() const {
+    bind({{R4D_TRIANGLES_TRIANGLES, &occluders_.buffer()}, {R4D_TRIANGLES_LS_TRIANGLES, &lsTriangles_},
+          {R4D_TRIANGLES_BOXES, &boxes_}, {R4D_TRIANGLES_STATE, &state_},
+          {R4D_TRIANGLES_COUNTS, &triangleCounts_}, {R4D_TRIANGLES_STARTS, &triangleStarts_},
+          {R4D_TRIANGLES_CURSORS, &cursors_}, {R4D_TRIANGLES_LIST, &triangleList_}});
   }
   void upload(const gpu::Raster4dParams& params) {
     paramsBuffer_.upload(&params, sizeof params);

@@ -28,6 +28,25 @@ static_assert(offsetof(gpu::Raster4dParams, dispatch) == 176);
 static_assert(offsetof(gpu::Raster4dParams, options) == 192);
 static_assert(sizeof(gpu::Raster4dParams) == 208);
 static_assert(sizeof(gpu::Raster4dState) == 48);
+// Every pass within GL 4.5's minimum of 8 storage blocks per compute shader.
+static_assert(gpu::distinctBelow({R4D_RECEIVERS_RECEIVERS, R4D_RECEIVERS_STATE}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_SAMPLES_RECEIVERS, R4D_SAMPLES_COUNTS, R4D_SAMPLES_STARTS,
+                                  R4D_SAMPLES_CURSORS, R4D_SAMPLES_LIST}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_TRIANGLES_TRIANGLES, R4D_TRIANGLES_LS_TRIANGLES,
+                                  R4D_TRIANGLES_BOXES, R4D_TRIANGLES_STATE, R4D_TRIANGLES_COUNTS,
+                                  R4D_TRIANGLES_STARTS, R4D_TRIANGLES_CURSORS, R4D_TRIANGLES_LIST},
+                                 gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_SCAN_COUNTS, R4D_SCAN_STARTS}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_OCCLUSION_RECEIVERS, R4D_OCCLUSION_LS_TRIANGLES,
+                                  R4D_OCCLUSION_BOXES, R4D_OCCLUSION_SAMPLE_LIST,
+                                  R4D_OCCLUSION_TRIANGLE_STARTS, R4D_OCCLUSION_TRIANGLE_LIST,
+                                  R4D_OCCLUSION_MASKS, R4D_OCCLUSION_CELL_PAIRS},
+                                 gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_RESOLVE_RECEIVERS, R4D_RESOLVE_MASKS}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_CELLS_TRIANGLE_COUNTS, R4D_CELLS_SAMPLE_COUNTS,
+                                  R4D_CELLS_PAIRS}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, RASTER4D_PARAMS_BINDING},
+                                 gpu::kUniformBindings));
 
 // The occluders (every triangle of the objects that are not receiver-only, the set the
 // reference traces), three world-space vec4 per triangle, uploaded when they change.
