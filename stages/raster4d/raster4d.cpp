@@ -74,9 +74,9 @@ public:
                                 "uint words, bit j of row i = light sample (i, j)."),
     };
     params_ = {
-        Param::boolean("enabled", "Run 4D rasterization (hundreds of milliseconds per frame on "
-                                  "llvmpipe for large scenes, so off until asked for; the error "
-                                  "stage's truth=raster4d and the tests turn it on).", false),
+        Param::boolean("enabled", "Run 4D rasterization (seconds per frame on llvmpipe for the "
+                                  "engine, so off until asked for; turn it on to show it or to "
+                                  "use it as error.method or error.against).", false),
         Param::integer("samples", "m: light samples per side, m x m cell centres (the paper: 8x8 "
                                   "too few, 32x32 consistently good).", 32, 8, 64),
         Param::integer("fb_resolution", "w = h: pixels per side of the frame buffer FB that pairs "
