@@ -17,7 +17,9 @@ std::unique_ptr<Stage> makeTraceStage();
 std::unique_ptr<Stage> makeFilterStage();
 // 3. Baselines.
 std::unique_ptr<Stage> makeHardShadowStage();
-// 4. Ground truth and its comparison; 5. the image.
+// 4. 4D rasterization (Wang et al. 2020): a method, and a ground truth at its samples.
+std::unique_ptr<Stage> makeRaster4dStage();
+// 5. Ground truth and its comparison; 6. the image.
 std::unique_ptr<Stage> makeReferenceStage();
 std::unique_ptr<Stage> makeErrorStage();
 std::unique_ptr<Stage> makeCompositeStage();
@@ -36,6 +38,7 @@ std::vector<StageEntry> makeRegistry() {
   add(makeTraceStage());                             // §3.1-3.7, Alg. 2
   add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2
   add(makeHardShadowStage());                        // §2.3
+  add(makeRaster4dStage());                          // Wang et al. 2020, Alg. 1-3
   add(makeReferenceStage());                         // ground truth (Embree)
   add(makeErrorStage());                             // Atty 2006 §4.2.1
   add(makeCompositeStage());                         // Alg. 1, last step

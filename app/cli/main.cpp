@@ -11,6 +11,7 @@
 #include <new>
 
 #include "bench/bench_report.h"
+#include "bench/bench_raster4d.h"
 #include "bench/bench_stages.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
@@ -131,6 +132,18 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(128, 2048));
   benchStagesCommand->add_option("--set", benching.sets, "stage.key=value for every configuration");
 
+  BenchRaster4dOptions raster4dBench;
+  CLI::App* benchRaster4dCommand = app.add_subcommand(
+      "bench-raster4d", "raster4d (4D rasterization) timed against the Embree reference at the "
+                        "same light samples, in the shapes of Wang et al.'s tables");
+  benchRaster4dCommand->add_option("--out", raster4dBench.out, "Markdown file")->capture_default_str();
+  benchRaster4dCommand->add_option("--scenes", raster4dBench.scenes, "comma-separated scenes")
+      ->capture_default_str();
+  benchRaster4dCommand->add_option("--frames", raster4dBench.frames, "timed runs per configuration")
+      ->check(CLI::Range(1, 100))->capture_default_str();
+  benchRaster4dCommand->add_option("--width", raster4dBench.width)->check(CLI::Range(16, 4096));
+  benchRaster4dCommand->add_option("--height", raster4dBench.height)->check(CLI::Range(16, 4096));
+
   BenchOptions report;
   CLI::App* benchCommand = app.add_subcommand(
       "bench", "speed against error: every configuration timed and compared with the exact "
@@ -178,6 +191,7 @@ int main(int argc, char** argv) {
     if (*exportCommand) return runExport(exporting);
     if (*traceCommand) return runTraceCommand(tracing);
     if (*benchStagesCommand) return runBenchStages(benching);
+    if (*benchRaster4dCommand) return runBenchRaster4d(raster4dBench);
     if (*benchCommand) {
       for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
       return runBench(report);

@@ -75,9 +75,10 @@ struct ReferenceTracer::Impl {
   }
 
   // The rays of one point, in packets of K: count of light samples that reach the light.
+  // `blocked` (m * m entries, or null): 1 where light sample k does not reach the point.
   template <int K, typename Packet, typename Occluded>
   int visibleSamples(const ReferenceRequest& r, const glm::vec3& p, const glm::vec3& n, int x,
-                     int y, Occluded occluded) const {
+                     int y, Occluded occluded, std::uint8_t* blocked) const {
     const int m = r.samplesPerSide, total = m * m;
     const glm::vec3 origin = p + r.epsilon * n;
     RTCIntersectContext context;
@@ -93,6 +94,7 @@ struct ReferenceTracer::Impl {
         valid[lane] = 0;
         packet.tfar[lane] = -std::numeric_limits<float>::infinity();
         if (k >= total) continue;
+        if (blocked) blocked[k] = 1;
         const glm::vec2 unit = referenceSampleUnit(x, y, k, m, r.stratified);
         const glm::vec3 sample = r.wsLightCenter +
                                  (2 * unit.x - 1) * r.halfWidth * r.wsLightRight +
@@ -113,21 +115,24 @@ struct ReferenceTracer::Impl {
       if (active == 0) continue;
       occluded(valid, &context, &packet);
       for (int lane = 0; lane < K; ++lane)
-        if (valid[lane] && packet.tfar[lane] >= 0) ++visible;  // tfar = -inf when occluded
+        if (valid[lane] && packet.tfar[lane] >= 0) {  // tfar = -inf when occluded
+          ++visible;
+          if (blocked) blocked[first + lane] = 0;
+        }
     }
     return visible;
   }
 
   int visibleSamplesNative(int width, const ReferenceRequest& r, const glm::vec3& p,
-                           const glm::vec3& n, int x, int y) const {
+                           const glm::vec3& n, int x, int y, std::uint8_t* blocked = nullptr) const {
     RTCScene s = scene;
     switch (width) {
       case 16:
-        return visibleSamples<16, RTCRay16>(r, p, n, x, y, [s](int* v, RTCIntersectContext* c, RTCRay16* q) { rtcOccluded16(v, s, c, q); });
+        return visibleSamples<16, RTCRay16>(r, p, n, x, y, [s](int* v, RTCIntersectContext* c, RTCRay16* q) { rtcOccluded16(v, s, c, q); }, blocked);
       case 8:
-        return visibleSamples<8, RTCRay8>(r, p, n, x, y, [s](int* v, RTCIntersectContext* c, RTCRay8* q) { rtcOccluded8(v, s, c, q); });
+        return visibleSamples<8, RTCRay8>(r, p, n, x, y, [s](int* v, RTCIntersectContext* c, RTCRay8* q) { rtcOccluded8(v, s, c, q); }, blocked);
       case 4:
-        return visibleSamples<4, RTCRay4>(r, p, n, x, y, [s](int* v, RTCIntersectContext* c, RTCRay4* q) { rtcOccluded4(v, s, c, q); });
+        return visibleSamples<4, RTCRay4>(r, p, n, x, y, [s](int* v, RTCIntersectContext* c, RTCRay4* q) { rtcOccluded4(v, s, c, q); }, blocked);
       default: {
         // Single rays through the same code: a one-lane "packet" in RTCRay layout.
         struct One {
@@ -140,7 +145,7 @@ struct ReferenceTracer::Impl {
                      q->dir_z[0], q->time[0], q->tfar[0], q->mask[0], q->id[0], q->flags[0]};
           rtcOccluded1(s, c, &ray);
           q->tfar[0] = ray.tfar;
-        });
+        }, blocked);
       }
     }
   }
@@ -195,6 +200,15 @@ float ReferenceTracer::pointVisibility(const ReferenceRequest& request, const gl
                                        const glm::vec3& n, int x, int y) const {
   const int m = request.samplesPerSide;
   return float(impl_->visibleSamplesNative(packetWidth_, request, p, n, x, y)) / float(m * m);
+}
+
+std::vector<std::uint8_t> ReferenceTracer::blockedSamples(const ReferenceRequest& request,
+                                                         const glm::vec3& p, const glm::vec3& n,
+                                                         int x, int y) const {
+  const int m = request.samplesPerSide;
+  std::vector<std::uint8_t> blocked(size_t(m) * m, 0);
+  impl_->visibleSamplesNative(packetWidth_, request, p, n, x, y, blocked.data());
+  return blocked;
 }
 
 bool ReferenceTracer::trace(const ReferenceRequest& request, std::vector<float>& visibility,

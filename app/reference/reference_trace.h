@@ -17,7 +17,10 @@
 // - Sampling: `stratified` jitters one sample inside each of the m x m cells of the light,
 //   from a fixed integer hash of (pixel, sample) (decorrelated between pixels, so the
 //   sampling error is unbiased noise, not bands; the same input gives the same bits);
-//   `uniform` takes the cell centres (a fixed quadrature, for exact methods).
+//   `uniform` takes the cell centres (a fixed quadrature, for exact methods): exactly the
+//   light samples of stage `raster4d` with raster4d.samples = m (sample k = row * m +
+//   column, row along up, column along right, both from the light's -width/2, -height/2
+//   corner), so the two can be compared bit for bit (tests/stages/test_raster4d_exact.cpp).
 // - Light samples use the same parametrisation as the trace (centre + (2u-1) w/2 right +
 //   (2v-1) h/2 up, with the light frame's orthonormal right/up).
 #pragma once
@@ -85,6 +88,12 @@ public:
   // Visibility of one point (tests, the inspector): the same code as trace().
   float pointVisibility(const ReferenceRequest& request, const glm::vec3& wsPosition,
                         const glm::vec3& wsNormal, int pixelX, int pixelY) const;
+
+  // Per light sample k = row * m + column of pointVisibility's rays: 1 where the sample does
+  // not reach the point (hidden, or behind its tangent plane). For exact methods' tests.
+  std::vector<std::uint8_t> blockedSamples(const ReferenceRequest& request,
+                                           const glm::vec3& wsPosition, const glm::vec3& wsNormal,
+                                           int pixelX, int pixelY) const;
 
 private:
   struct Impl;

@@ -2,7 +2,7 @@
 // (signed, with a diverging colormap; absolute) and as numbers in frame.counters (RMSE, max,
 // mean |error| in shadow after Atty et al. 2006 §4.2.1, 99th percentile). Only receivers
 // inside the light's map count: the background has no shadow and, outside the map, no
-// method knows anything (classify marks both). Runs only while the reference does.
+// method knows anything (classify marks both). Runs only while both inputs are written.
 //
 // On the CPU: the reference is a CPU image anyway, and the percentile and OIIO's compare
 // need the values there; at 512x512 the read-back costs a few milliseconds.
@@ -49,8 +49,8 @@ public:
   std::string thesisSection() const override { return ""; }
 
   void run(Frame& frame) override {
-    if (!frame.connected(*this, "truth")) {
-      frame.textures.erase("error.signed");  // nothing to compare with (or still pending)
+    if (!frame.connected(*this, "truth") || !frame.connected(*this, "method")) {
+      frame.textures.erase("error.signed");  // nothing to compare (off, or still pending)
       frame.textures.erase("error.absolute");
       return;
     }

@@ -53,8 +53,9 @@ public:
                                   "cached on disk, so an unchanged view is instant).", false),
         Param::integer("samples", "m: light samples per side, m x m rays per pixel.", 16, 1, 64),
         Param::choice("sampling", "stratified: one jittered sample per cell of the m x m grid "
-                                  "(unbiased); uniform: the cell centres (a fixed quadrature, "
-                                  "to compare with exact methods).",
+                                  "(unbiased); uniform: the cell centres (a fixed quadrature), "
+                                  "exactly the light samples of raster4d at raster4d.samples = m, "
+                                  "so the two agree bit for bit up to ties at edges.",
                       {"stratified", "uniform"}, 0),
         Param::boolean("cache", "Reuse and store results under ~/.cache/penumbra/reference "
                                 "($PENUMBRA_CACHE).", true),

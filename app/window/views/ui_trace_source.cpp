@@ -89,13 +89,26 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
 
 void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
 
-// 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top); the
+// 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top), and
+//    the picked pixel of every stage that shows one (pick_x / pick_y: raster4d's mask); the
 //    parameters' new revision re-runs the pipeline.
 void recordPickedPixel(UiState& state) {
-  Stage* recorder = recordingStage(state.session.pipeline);
-  if (!state.views.pick || !state.session.frame || !recorder) return;
+  if (!state.views.pick || !state.session.frame) return;
   if (state.views.pickSpace != glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight)) return;
   const glm::ivec2 image{state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y};
-  recorder->param("record_x").value = image.x;
-  recorder->param("record_y").value = image.y;
+  if (Stage* recorder = recordingStage(state.session.pipeline)) {
+    recorder->param("record_x").value = image.x;
+    recorder->param("record_y").value = image.y;
+  }
+  for (const auto& stage : state.session.pipeline.stages()) {
+    auto declares = [&](const char* key) {
+      for (const Param& param : stage->params())
+        if (param.key == key) return true;
+      return false;
+    };
+    if (declares("pick_x") && declares("pick_y")) {
+      stage->param("pick_x").value = image.x;
+      stage->param("pick_y").value = image.y;
+    }
+  }
 }

@@ -1,0 +1,17 @@
+// `penumbra bench-raster4d`: stage raster4d (Wang et al. 2020) timed side by side with the
+// Embree reference at the same light samples (uniform sampling, every core), in the shapes
+// of the paper's tables: speed-up over ray tracing and time per step (Tables 1, 3), cost
+// against light samples (Table 4) and light size (Table 5), the optimizations' effect
+// (Table 2) and the pairing efficiency (Table 7). Medians of `frames` runs after one
+// warm-up run, glFinish + steady clock. A benchmark program: it writes numbers, asserts
+// nothing.
+#pragma once
+#include <string>
+
+struct BenchRaster4dOptions {
+  std::string out = "bench/raster4d.md";
+  std::string scenes = "cube,spheres,engine";
+  int width = 256, height = 256, frames = 3;
+};
+
+int runBenchRaster4d(const BenchRaster4dOptions& options);

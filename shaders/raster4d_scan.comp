@@ -1,0 +1,30 @@
+// raster4d: exclusive prefix sum of the per-FB-pixel counts (count -> prefix sum -> scatter
+// builds lists of any length; nothing is dropped). One group: each invocation sums a
+// contiguous run, the run totals are scanned in shared memory, then each run is written.
+#include "shared/raster4d.glsl"
+layout(local_size_x = RASTER4D_SCAN_GROUP) in;
+layout(std430, binding = R4D_SCAN_COUNTS) readonly buffer Counts { uint counts[]; };
+layout(std430, binding = R4D_SCAN_STARTS) writeonly buffer Starts { uint starts[]; };
+shared uint runTotals[RASTER4D_SCAN_GROUP];
+
+void main() {
+  uint n = uint(r4d.dispatch.y), lane = gl_LocalInvocationID.x;
+  uint run = (n + RASTER4D_SCAN_GROUP - 1u) / RASTER4D_SCAN_GROUP;
+  uint first = min(lane * run, n), end = min(first + run, n);
+  uint total = 0u;
+  for (uint i = first; i < end; ++i) total += counts[i];
+  runTotals[lane] = total;
+  barrier();
+  for (uint offset = 1u; offset < RASTER4D_SCAN_GROUP; offset <<= 1u) {  // Hillis-Steele
+    uint add = lane >= offset ? runTotals[lane - offset] : 0u;
+    barrier();
+    runTotals[lane] += add;
+    barrier();
+  }
+  uint running = runTotals[lane] - total;  // exclusive
+  for (uint i = first; i < end; ++i) {
+    starts[i] = running;
+    running += counts[i];
+  }
+  if (lane == RASTER4D_SCAN_GROUP - 1u) starts[n] = runTotals[lane];
+}

@@ -1,0 +1,84 @@
+#include "raster4d_gpu.h"
+
+#include <algorithm>
+
+#include "reference/reference_cache.h"
+
+void Raster4dOccluders::update(const Scene& scene) {
+  ContentHash hash;
+  for (const SceneObject& object : scene.objects) {
+    if (object.receiverOnly) continue;
+    hash.bytes(object.mesh.positions.data(), object.mesh.positions.size() * sizeof(glm::vec3));
+    hash.bytes(object.mesh.indices.data(), object.mesh.indices.size() * sizeof(std::uint32_t));
+  }
+  const std::string key = hash.hex();
+  if (key == key_) return;
+  std::vector<glm::vec4> vertices;
+  for (const SceneObject& object : scene.objects) {
+    if (object.receiverOnly) continue;  // casts no shadow in any method (thesis §3.3)
+    for (std::uint32_t index : object.mesh.indices)
+      vertices.emplace_back(object.mesh.positions[index], 1.0f);
+  }
+  triangles_ = int(vertices.size() / 3);
+  if (vertices.empty()) vertices.emplace_back(0.0f);  // a buffer must not be empty
+  buffer_.upload(vertices.data(), vertices.size() * sizeof(glm::vec4));
+  key_ = key;
+}
+
+void ensureBufferBytes(const GlBuffer& buffer, size_t bytes) {
+  bytes = std::max<size_t>(bytes, 16);
+  GLint64 current = 0;
+  glGetNamedBufferParameteri64v(buffer.id(), GL_BUFFER_SIZE, &current);
+  if (size_t(current) != bytes) glNamedBufferData(buffer.id(), GLsizeiptr(bytes), nullptr, GL_DYNAMIC_DRAW);
+}
+
+void zeroBuffer(const GlBuffer& buffer, size_t bytes) {
+  const std::uint32_t zero = 0;
+  if (bytes) glClearNamedBufferSubData(buffer.id(), GL_R32UI, 0, GLsizeiptr(bytes), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void dispatchLinear(std::uint64_t count) {
+  const std::uint64_t groups = (count + 63) / 64;
+  if (groups == 0) return;
+  const std::uint64_t x = std::min<std::uint64_t>(groups, 65535);
+  glDispatchCompute(GLuint(x), GLuint((groups + x - 1) / x), 1);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+void dispatchGrid(int width, int height) {
+  glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+glm::mat4 lightSpaceFromWorld(const glm::vec3& centre, const glm::vec3& right,
+                              const glm::vec3& up, const glm::vec3& forward) {
+  glm::mat4 m(1.0f);
+  const glm::vec3 axes[3] = {right, up, forward};
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 3; ++column) m[column][row] = axes[row][column];
+    m[3][row] = -glm::dot(axes[row], centre);
+  }
+  return m;
+}
+
+std::vector<Raster4dBand> planBands(const std::vector<std::uint32_t>& sampleStarts,
+                                    const std::vector<std::uint32_t>& triangleStarts,
+                                    int fbWidth, int fbHeight, std::uint64_t maxEntries,
+                                    int maxRows) {
+  std::vector<Raster4dBand> bands;
+  auto at = [&](const std::vector<std::uint32_t>& starts, int row) {
+    return starts[size_t(row) * size_t(fbWidth)];
+  };
+  for (int first = 0; first < fbHeight;) {
+    int end = first + 1;
+    while (end < fbHeight && end - first < maxRows &&
+           at(sampleStarts, end + 1) - at(sampleStarts, first) <= maxEntries &&
+           at(triangleStarts, end + 1) - at(triangleStarts, first) <= maxEntries)
+      ++end;
+    bands.push_back({first, end, at(sampleStarts, first),
+                     at(sampleStarts, end) - at(sampleStarts, first), at(triangleStarts, first),
+                     at(triangleStarts, end) - at(triangleStarts, first)});
+    first = end;
+  }
+  return bands;
+}
