@@ -86,6 +86,7 @@ int runBenchStages(const BenchStagesOptions& options) {
     std::map<std::string, double> stageMs;
     double total = 0;
     std::map<std::string, double> counters;
+    bool traced = false, classified = false;  // the trace runs; it skips classified pixels
   };
   std::vector<Row> rows;
   std::vector<std::string> columns;
@@ -114,7 +115,11 @@ int runBenchStages(const BenchStagesOptions& options) {
       summarize(times, timed);
       for (const std::string& stage : pipeline.dependencies({pipeline.methodOutput(config.method)}))
         if (std::find(columns.begin(), columns.end(), stage) == columns.end()) columns.push_back(stage);
-      rows.push_back({sceneName, config.label, timed.stageMs, timed.msMedian, frame.counters});
+      const bool traced = std::find(timed.stages.begin(), timed.stages.end(), "trace") != timed.stages.end();
+      const bool classified = traced && pipeline.param("trace.deferred").asBool() &&
+                              pipeline.param("trace.use_classification").asBool();
+      rows.push_back({sceneName, config.label, timed.stageMs, timed.msMedian, frame.counters,
+                      traced, classified});
       std::printf("%s %s: %.1f ms per frame\n", sceneName.c_str(), config.label.c_str(), timed.msMedian);
       std::fflush(stdout);
     }
@@ -154,13 +159,14 @@ int runBenchStages(const BenchStagesOptions& options) {
       return it == row.counters.end() ? 0.0 : it->second;
     };
     const double rays = counter("trace.rays"), searched = counter("trace.raysSearched");
+    // Spared: receiver pixels classified lit or umbra, which a deferred trace that uses the
+    // classification skips (§3.6); a forward trace runs on every fragment.
     const double receivers = counter("classify.lit") + counter("classify.penumbra") + counter("classify.umbra");
-    const bool deferred = row.label.find("forward") == std::string::npos;
     table << (rays > 0 ? cell(counter("trace.fetches") / rays, "%.2f") : "-") << " | "
           << (searched > 0 ? cell(counter("trace.fetches") / searched, "%.2f") : "-") << " | "
-          << (row.counters.count("trace.pixelsClassified") && receivers > 0
-                  ? cell(deferred ? 100.0 * counter("trace.pixelsClassified") / receivers : 0.0, "%.1f%%")
-                  : "-")
+          << (row.classified && receivers > 0
+                  ? cell(100.0 * (counter("classify.lit") + counter("classify.umbra")) / receivers, "%.1f%%")
+                  : row.traced ? "0.0%" : "-")
           << " |\n";
   }
   table << "\nfetches/ray counts every ray set up (early outs included); fetches/searched ray "
