@@ -9,6 +9,7 @@ packages=(
   libembree-dev
   libcairo2-dev  # the bench report's charts as PNG, SVG and PDF (app/bench/plot.cpp)
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
+  dieharder  # the real DIEHARD battery: penumbra hash-stats --dieharder (docs/hash_stats.md)
 )
 missing=()
 for p in "${packages[@]}"; do

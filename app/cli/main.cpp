@@ -9,6 +9,7 @@
 #include "bench/bench_stages.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
+#include "gl/hash_kind.h"
 #include "cli/trace_command.h"
 #include "core/pipeline.h"
 #include "window/window_app.h"
@@ -72,7 +73,7 @@ int main(int argc, char** argv) {
   HashOptions hashing;
   CLI::App* hashCommand = app.add_subcommand("hash", "raw little-endian uint32 stream of a hash "
                                                      "on the inputs 1, 2, ... (dieharder -g 200)");
-  hashCommand->add_option("--hash", hashing.hash, "md5_16, md5_64 or pcg3d")->capture_default_str();
+  hashCommand->add_option("--hash", hashing.hash, hashKindList())->capture_default_str();
   hashCommand->add_option("--count", hashing.count, "number of hashes (16 bytes each)")
       ->check(CLI::Range(std::uint64_t(1), std::uint64_t(4294967295u)))->capture_default_str();
   hashCommand->add_option("--key", hashing.key, "key XORed into every seed")->capture_default_str();
