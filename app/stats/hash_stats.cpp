@@ -72,6 +72,18 @@ double Comoments::correlation() const {
   return std::clamp(coAB / std::sqrt(m2A * m2B), -1.0, 1.0);
 }
 
+int patternFromName(const std::string& name) {
+  for (size_t i = 0; i < kPatternNames.size(); ++i)
+    if (name == kPatternNames[i]) return int(i);
+  return -1;
+}
+
+std::string patternList() {
+  std::string list;
+  for (const char* name : kPatternNames) list += (list.empty() ? "" : ", ") + std::string(name);
+  return list;
+}
+
 Verdict dieharderVerdict(double p) {
   if (std::isnan(p)) return Verdict::NotApplicable;
   if (p < 1e-6 || p > 1 - 1e-6) return Verdict::Failed;
@@ -182,23 +194,32 @@ Result analyze(const Raw& raw) {
   result.tests.push_back(correlationTest("serial_next", raw.next));
   result.tests.push_back(correlationTest("serial_right", raw.right));
   result.tests.push_back(correlationTest("serial_frame", raw.frame));
-  // 5. Avalanche: each flip count is Binomial(A, 1/2) for an ideal hash; the squared
-  // z-scores of the 1024 counts sum to chi-square(1024). The bias score is the RMS of
-  // c_ij - 1/2, beside the 1/(2 sqrt(A)) an ideal hash shows from sampling alone.
+  // 5. Avalanche: each flip count is Binomial(A_i, 1/2) for an ideal hash (A_i inputs with
+  // input bit i clear); the squared z-scores of the 1024 counts sum to chi-square(1024). The
+  // bias score is the RMS of c_ij - 1/2, beside the RMS an ideal hash shows from sampling
+  // alone, sqrt(mean 1/(4 A_i)).
   if (raw.avalancheInputs > 0) {
-    const double a = raw.avalancheInputs;
-    double chi = 0, squares = 0;
-    result.avalanche.resize(32 * 32);
-    for (int k = 0; k < 32 * 32; ++k) {
-      result.avalanche[k] = raw.flips[k] / a;
-      chi += std::pow(raw.flips[k] - a / 2, 2) / (a / 4);
-      squares += std::pow(result.avalanche[k] - 0.5, 2);
+    double chi = 0, squares = 0, noise = 0;
+    int rows = 0;
+    result.avalanche.assign(32 * 32, 0.0);
+    for (int i = 0; i < 32; ++i) {
+      const double a = raw.flips[HASH_STATS_FLIPS_INPUTS + i];
+      if (a == 0) continue;  // no input has this bit clear
+      ++rows;
+      noise += 1 / (4 * a);
+      for (int j = 0; j < 32; ++j) {
+        const int k = i * 32 + j;
+        result.avalanche[k] = raw.flips[k] / a;
+        chi += std::pow(raw.flips[k] - a / 2, 2) / (a / 4);
+        squares += std::pow(result.avalanche[k] - 0.5, 2);
+      }
     }
-    result.avalancheBias = std::sqrt(squares / 1024);
-    result.avalancheNoise = 0.5 / std::sqrt(a);
-    result.tests.push_back({"avalanche", chi, chiSquareUpperP(chi, 1024),
-                            format("bias %.4f vs noise floor %.4f; chi2 = %.0f, 1024 dof",
-                                   result.avalancheBias, result.avalancheNoise, chi)});
+    result.avalancheBias = rows ? std::sqrt(squares / (32.0 * rows)) : 0;
+    result.avalancheNoise = rows ? std::sqrt(noise / rows) : 0;
+    result.tests.push_back({"avalanche", chi, chiSquareUpperP(chi, 32.0 * rows),
+                            format("bias %.4f vs noise floor %.4f; ", result.avalancheBias,
+                                   result.avalancheNoise) +
+                                format("chi2 = %.0f, %.0f dof", chi, 32.0 * rows)});
   } else {
     result.tests.push_back({"avalanche", 0, kNaN, "needs the hash function, not a stream"});
   }

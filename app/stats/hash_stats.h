@@ -11,6 +11,12 @@
 
 namespace hashstats {
 
+// Input patterns, indexed by HASH_PATTERN_* (also the option index of hash_stats.pattern).
+inline const std::array<const char*, HASH_PATTERN_COUNT> kPatternNames = {"linear", "pixels",
+                                                                          "morton", "frames"};
+int patternFromName(const std::string& name);  // -1 when unknown
+std::string patternList();                     // "linear, pixels, morton, frames"
+
 // Means and centred (co)moments of n pairs (a, b), joined in double (Chan, Golub & LeVeque
 // 1979: exact for any split, no cancellation of large sums).
 struct Comoments {
@@ -27,7 +33,8 @@ struct Raw {
   Comoments next, right, frame;  // (c, next c), (c, right-hand c), (c, next-frame c)
   std::vector<std::uint32_t> fipsBlocks;  // HASH_STATS_FIPS_STRIDE words per block
   std::uint32_t avalancheInputs = 0;      // 0: no avalanche (samples uploaded, no function)
-  std::vector<std::uint32_t> flips = std::vector<std::uint32_t>(32 * 32, 0);
+  // Flip counts (32 x 32, input bit major), then the inputs counted per input bit.
+  std::vector<std::uint32_t> flips = std::vector<std::uint32_t>(HASH_STATS_FLIPS_TOTAL, 0);
 };
 
 // dieharder's verdicts (its defaults: weak outside [0.005, 0.995], failed outside
@@ -57,7 +64,7 @@ struct Result {
   std::array<double, 32> bitZ{};  // monobit z-score of each bit of word x
   std::vector<double> avalanche;  // c_ij = P(bit j of x flips | input bit i flips), i-major
   double avalancheBias = 0;       // RMS of c_ij - 1/2
-  double avalancheNoise = 0;      // the RMS an ideal hash shows with these inputs: 1/(2 sqrt(A))
+  double avalancheNoise = 0;      // the RMS an ideal hash shows with these inputs (~1/(2 sqrt(A)))
   std::vector<double> pairs;      // 64 x 64 cell counts / expected count, row = y bucket
 };
 

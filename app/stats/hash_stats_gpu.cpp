@@ -28,7 +28,7 @@ void GpuHashStats::clearCounts() {
                       nullptr, GL_DYNAMIC_READ);
     glNamedBufferData(blocks_.id(), GLsizeiptr(kBlocksPerChunk) * HASH_STATS_FIPS_STRIDE * 4,
                       nullptr, GL_DYNAMIC_READ);
-    glNamedBufferData(flips_.id(), 32 * 32 * 4, nullptr, GL_DYNAMIC_READ);
+    glNamedBufferData(flips_.id(), HASH_STATS_FLIPS_TOTAL * 4, nullptr, GL_DYNAMIC_READ);
     allocated_ = true;
   }
   const GLuint zero = 0;
@@ -107,7 +107,7 @@ hashstats::Raw GpuHashStats::run(int kind, int pattern, std::uint64_t count, std
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HASH_STATS_AVALANCHE_BINDING, flips_.id());
   glDispatchCompute(groups((raw.avalancheInputs + 63) / 64 * 32), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(flips_.id(), 0, 32 * 32 * 4, raw.flips.data());
+  glGetNamedBufferSubData(flips_.id(), 0, HASH_STATS_FLIPS_TOTAL * 4, raw.flips.data());
   glGetNamedBufferSubData(counts_.id(), 0, HASH_STATS_COUNT_TOTAL * 4, raw.counts.data());
   return raw;
 }
@@ -145,4 +145,11 @@ double GpuHashStats::hashesPerSecond(int kind, std::uint32_t count, int repeats)
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return count / best;
+}
+
+hashstats::KeyedResult GpuHashStats::runKeys(int kind, int pattern, std::uint64_t count, int keys,
+                                             std::uint32_t key) {
+  std::vector<hashstats::Result> perKey;
+  for (int k = 0; k < keys; ++k) perKey.push_back(hashstats::analyze(run(kind, pattern, count, key + k)));
+  return hashstats::combineKeys(std::move(perKey));
 }

@@ -26,6 +26,10 @@ public:
   // `repeats`.
   double hashesPerSecond(int kind, std::uint32_t count, int repeats = 3);
 
+  // K keys (key, key + 1, ...), each analysed, and the KS test of each test's K p-values.
+  hashstats::KeyedResult runKeys(int kind, int pattern, std::uint64_t count, int keys,
+                                 std::uint32_t key);
+
 private:
   void reduceChunk(std::uint32_t count, std::uint64_t fipsBlocksBefore, hashstats::Raw& raw);
   void clearCounts();

@@ -57,9 +57,14 @@
 #define HASH_STATS_FIPS_LONGEST 29   // longest run
 #define HASH_STATS_FIPS_TOTAL_RUNS 30
 
-// Avalanche: for the first HASH_STATS_AVALANCHE_INPUTS inputs, flip bit i of seed.x and
-// count how often bit j of word x flips: uint flips[i * 32 + j].
+// Avalanche: for the first HASH_STATS_AVALANCHE_INPUTS inputs whose seed.x has bit i clear,
+// set bit i and count how often bit j of word x flips: uint flips[i * 32 + j]; the number of
+// such inputs in flips[HASH_STATS_FLIPS_INPUTS + i]. (Taking only inputs with the bit clear
+// keeps every pair of inputs once: with the linear pattern, flipping bit 0 of 1 and of 2
+// would otherwise compare the same two inputs twice and double the variance.)
 #define HASH_STATS_AVALANCHE_INPUTS 65536u
+#define HASH_STATS_FLIPS_INPUTS 1024
+#define HASH_STATS_FLIPS_TOTAL (HASH_STATS_FLIPS_INPUTS + 32)
 
 // Input patterns (shared/hash_patterns.glsl).
 #define HASH_PATTERN_LINEAR 0  // seed (i + 1, 0, 0, 0): the thesis's 1, 2, ..., n (§3.1)
@@ -76,4 +81,4 @@
 #define HASH_STATS_COUNTS_BINDING 1     // uint counts[HASH_STATS_COUNT_TOTAL]
 #define HASH_STATS_SUMS_BINDING 2       // float sums[]
 #define HASH_STATS_FIPS_BINDING 3       // uint blocks[]
-#define HASH_STATS_AVALANCHE_BINDING 4  // uint flips[32 * 32]
+#define HASH_STATS_AVALANCHE_BINDING 4  // uint flips[HASH_STATS_FLIPS_TOTAL]

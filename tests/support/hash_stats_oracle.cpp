@@ -138,15 +138,16 @@ Oracle compute(const std::vector<glm::uvec4>& s, std::uint32_t chunk) {
 
 std::vector<std::uint64_t> avalanche(int kind, int pattern, std::uint32_t inputs,
                                      std::uint32_t key) {
-  std::vector<std::uint64_t> flips(32 * 32, 0);
+  std::vector<std::uint64_t> flips(32 * 32 + 32, 0);
   for (std::uint32_t i = 0; i < inputs; ++i) {
     glm::uvec4 seed;
     std::uint32_t k;
     patternInput(pattern, i, key, seed, k);
     const std::uint32_t base = statsHash(seed, k, kind).x;
     for (int in = 0; in < 32; ++in) {
-      glm::uvec4 flipped = seed;
-      flipped.x ^= 1u << in;
+      if (seed.x & (1u << in)) continue;  // each unordered pair of inputs once
+      flips[32 * 32 + in]++;
+      const glm::uvec4 flipped(seed.x + (1u << in), seed.y, seed.z, seed.w);
       const std::uint32_t change = base ^ statsHash(flipped, k, kind).x;
       for (int out = 0; out < 32; ++out) flips[in * 32 + out] += (change >> out) & 1u;
     }

@@ -27,7 +27,9 @@ struct Oracle {
 };
 // `chunk`: the next-sample pairs do not cross multiples of it (the GPU's chunking).
 Oracle compute(const std::vector<glm::uvec4>& samples, std::uint32_t chunk);
-// Avalanche counts of the first `inputs` inputs of a pattern.
+// Avalanche counts of the first `inputs` inputs of a pattern: for each input bit i, over the
+// inputs whose seed.x has bit i clear, how often each bit of word x flips when it is set
+// (32 x 32, input bit major), then those inputs' number per i.
 std::vector<std::uint64_t> avalanche(int kind, int pattern, std::uint32_t inputs, std::uint32_t key);
 
 }  // namespace statsref
