@@ -63,7 +63,7 @@ public:
                        "p-values.",
                        1, 1, 16),
         Param::integer("key", "First key (the Appendix A key XORed into the seed).", 0, 0,
-                       1 << 30),
+                       1000000),
     };
   }
   std::string name() const override { return "hash_stats"; }
