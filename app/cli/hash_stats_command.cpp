@@ -45,6 +45,13 @@ std::string pText(double p) {
   return text;
 }
 
+// " text |" (appended piecewise: GCC 12 warns falsely on " " + std::string temporaries).
+void appendCell(std::string& md, const std::string& text) {
+  md += ' ';
+  md += text;
+  md += " |";
+}
+
 int passedCount(const Result& result) {
   int passed = 0;
   for (const TestResult& t : result.tests) passed += t.verdict() == Verdict::Passed;
@@ -64,7 +71,7 @@ std::string comparisonTable(const std::vector<Row>& rows, const HashStatsOptions
     int applicable = 0, thesis = 0;
     md += "| " + row.hash + " | " + row.pattern + " |";
     for (const TestResult& t : first.tests) {
-      md += " " + pText(t.p) + " |";
+      appendCell(md, pText(t.p));
       applicable += !std::isnan(t.p);
       thesis += thesisPass(t.p);
     }
@@ -82,7 +89,7 @@ std::string comparisonTable(const std::vector<Row>& rows, const HashStatsOptions
     md += "\n";
     for (const Row& row : rows) {
       md += "| " + row.hash + " | " + row.pattern + " |";
-      for (double p : row.keyed.ksP) md += " " + pText(p) + " |";
+      for (double p : row.keyed.ksP) appendCell(md, pText(p));
       md += "\n";
     }
   }
@@ -178,7 +185,8 @@ DieharderCount runDieharder(const std::string& hash) {
                    shown, run.testsTotal());
     }
   if (!run.error().empty()) throw std::runtime_error(run.error());
-  DieharderCount count{hash};
+  DieharderCount count;
+  count.hash = hash;
   count.lines = run.lines();
   for (const DieharderLine& line : count.lines) {
     count.passed += line.assessment == "PASSED";

@@ -37,7 +37,8 @@ StatsImage bitBiasImage(const hashstats::Result& result) {
 
 StatsImage verdictImage(const hashstats::KeyedResult& keyed) {
   const int tests = int(hashstats::kTestNames.size()), keys = int(keyed.perKey.size());
-  StatsImage image{keys, tests, std::vector<float>(size_t(keys) * tests, -1.0f),
+  const int cell = kVerdictCell;
+  StatsImage image{keys * cell, tests * cell, std::vector<float>(size_t(keys) * tests * cell * cell),
                    {0, -1, 1, Colormap::Diverging}};
   for (int k = 0; k < keys; ++k)
     for (int t = 0; t < tests; ++t) {
@@ -46,7 +47,9 @@ StatsImage verdictImage(const hashstats::KeyedResult& keyed) {
                           : verdict == hashstats::Verdict::Weak ? 0.5f
                           : verdict == hashstats::Verdict::Failed ? 1.0f
                                                                   : -1.0f;
-      image.values[size_t(tests - 1 - t) * keys + k] = value;
+      for (int y = 0; y < cell; ++y)
+        for (int x = 0; x < cell; ++x)
+          image.values[size_t((tests - 1 - t) * cell + y) * image.width + k * cell + x] = value;
     }
   return image;
 }

@@ -21,8 +21,9 @@ StatsImage avalancheImage(const hashstats::Result& result);
 // 32 bars (bit 0 left), 8 texels wide, up or down from the middle by the bit's monobit
 // z-score (full height at |z| = 8); |z| > 3 is unlikely for a fair bit.
 StatsImage bitBiasImage(const hashstats::Result& result);
-// Tests (rows, kTestNames order from the top) x keys (columns): 0 passed, 0.5 weak, 1
-// failed (dieharder's verdicts); not applicable shows as -1.
+// Tests (rows, kTestNames order from the top) x keys (columns), kVerdictCell texels square
+// each: 0 passed, 0.5 weak, 1 failed (dieharder's verdicts); not applicable shows as -1.
+inline constexpr int kVerdictCell = 16;
 StatsImage verdictImage(const hashstats::KeyedResult& keyed);
 // Nearest-neighbour enlargement, as RGB8 top row first (for the PNG files).
 std::vector<std::uint8_t> enlargedRgb(const StatsImage& image, int scale);

@@ -39,7 +39,8 @@ public:
         {"verdicts",
          "The table as colours: rows = the tests (top: uniformity, pairs_2d, bit_bias, "
          "serial_next, serial_right, serial_frame, avalanche, fips_monobit, fips_poker, "
-         "fips_runs), columns = keys. White PASSED, pink WEAK, red FAILED (dieharder's rule), "
+         "fips_runs), columns = keys, 16 x 16 texels each. White PASSED, pink WEAK, red "
+         "FAILED (dieharder's rule), "
          "blue not applicable. The p-values are in the counters (inspector).",
          GL_R32F, {"verdict"}, {0, -1, 1, Colormap::Diverging}},
     };

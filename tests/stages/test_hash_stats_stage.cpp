@@ -51,11 +51,12 @@ TEST(HashStatsStage, CutDownMd5TurnsTheTableRed) {
   PipelineRun run(makeBuiltinScene("cube"), kSmall, 64, 64);
   run.run();
   EXPECT_GE(run.frame->counters.at("hash_stats.passed"), 8) << "md5_16";
+  for (float v : run.read("hash_stats.verdicts")) ASSERT_TRUE(v == 0.0f || v == 0.5f || v == 1.0f);
   ASSERT_EQ(run.pipeline->set("hash_stats.hash=md5_4"), "");
   run.run();
   EXPECT_EQ(run.frame->counters.at("hash_stats.passed"), 0) << "md5_4";
   const auto verdicts = run.read("hash_stats.verdicts");
-  ASSERT_EQ(verdicts.size(), 10u);  // 10 tests x 1 key
+  ASSERT_EQ(verdicts.size(), 10u * 16 * 16);  // 10 tests x 1 key, 16 x 16 texels each
   for (float v : verdicts) EXPECT_EQ(v, 1.0f);  // FAILED
 }
 
