@@ -15,3 +15,5 @@ CommandResult runPenumbra(const std::string& arguments) {
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
 }
+
+std::string penumbraBinary() { return PENUMBRA_BINARY_PATH; }

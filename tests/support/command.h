@@ -7,3 +7,5 @@ struct CommandResult {
   std::string output;
 };
 CommandResult runPenumbra(const std::string& arguments);
+// The path of the penumbra executable under test.
+std::string penumbraBinary();
