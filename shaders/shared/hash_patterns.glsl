@@ -22,7 +22,7 @@ void patternInput(int pattern, uint i, uint key, out uvec4 seed, out uint inputK
     seed = uvec4(compactEvenBits(i), compactEvenBits(i >> 1u), 0u, 0u);
   } else if (pattern == HASH_PATTERN_FRAMES) {
     seed = uvec4(0u);
-    inputKey = key + i;
+    inputKey = (key << 24u) + i;  // key k: frame keys k 2^24 ...; keys never overlap
   } else {
     seed = uvec4(i + 1u, 0u, 0u, 0u);
   }

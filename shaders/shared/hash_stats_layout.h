@@ -70,7 +70,7 @@
 #define HASH_PATTERN_LINEAR 0  // seed (i + 1, 0, 0, 0): the thesis's 1, 2, ..., n (§3.1)
 #define HASH_PATTERN_PIXELS 1  // the renderer's seeds (x, y, ray, 0) of a 1024 x 1024 image
 #define HASH_PATTERN_MORTON 2  // pixels (x, y, 0, 0) in Morton (Z) order
-#define HASH_PATTERN_FRAMES 3  // one pixel, consecutive frame keys key + i
+#define HASH_PATTERN_FRAMES 3  // pixel 0, consecutive frame keys key * 2^24 + i
 #define HASH_PATTERN_COUNT 4
 
 // Reference "hashes" for the known-answer tests, only in the hash_stats shaders.

@@ -53,7 +53,7 @@ public:
         Param::choice("pattern",
                       "Inputs: linear = seeds 1, 2, ..., N (what the thesis tested, §3.1); pixels "
                       "= the renderer's seeds (x, y, ray, 0) of a 1024-wide image; morton = "
-                      "pixels in Z order; frames = one pixel, consecutive frame keys.",
+                      "pixels in Z order; frames = pixel (0, 0), consecutive frame keys key * 2^24 + i.",
                       {hashstats::kPatternNames.begin(), hashstats::kPatternNames.end()},
                       HASH_PATTERN_LINEAR),
         Param::integer("count_log2", "N = 2^count_log2 samples per key (2^24 takes seconds).",

@@ -27,7 +27,7 @@ void patternInput(int pattern, std::uint32_t i, std::uint32_t key, glm::uvec4& s
     }
     case HASH_PATTERN_FRAMES:
       seed = {0, 0, 0, 0};
-      inputKey = key + i;
+      inputKey = key * 16777216u + i;
       return;
     default: seed = {i + 1, 0, 0, 0};
   }
