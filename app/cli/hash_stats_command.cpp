@@ -119,8 +119,10 @@ std::string dieharderTable(const std::vector<DieharderCount>& counts) {
   md += "\nUnder a perfect generator each p-value falls outside [0.01, 0.99] with probability "
         "0.02, so all 18 p-values of the DIEHARD set land inside only 0.98^18 = 70% of the "
         "time, and dieharder calls one of them WEAK in 1 - 0.99^18 = 17% of runs: a count "
-        "that moves by one or two between runs, keys or machines says nothing about the hash. "
-        "A hash is bad when a test fails again and again (p ~ 0 on every key).\n";
+        "that moves by one or two between keys says nothing about the hash. (With the same key "
+        "the stream, and so every p-value, is the same: dieharder -g 200 reads the stream, it "
+        "does not seed it; the thesis's counts came from its own stream.) A hash is bad when a "
+        "test fails again and again (p ~ 0 on every key).\n";
   return md;
 }
 
@@ -175,8 +177,8 @@ void writeImages(const std::filesystem::path& dir, const Row& row) {
   }
 }
 
-DieharderCount runDieharder(const std::string& hash) {
-  DieharderRun run("/proc/self/exe", hash, diehardTests());
+DieharderCount runDieharder(const std::string& hash, std::uint32_t key) {
+  DieharderRun run("/proc/self/exe", hash, diehardTests(), key);
   run.start();
   for (int shown = -1; !run.finished(); std::this_thread::sleep_for(std::chrono::milliseconds(200)))
     if (run.testsDone() != shown) {
@@ -249,7 +251,7 @@ int runHashStatsCommand(const HashStatsOptions& options) {
     // 2. The real battery, where asked.
     std::vector<DieharderCount> dieharder;
     if (options.dieharder)
-      for (const std::string& hash : hashes) dieharder.push_back(runDieharder(hash));
+      for (const std::string& hash : hashes) dieharder.push_back(runDieharder(hash, options.key));
 
     // 3. Tables.
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -260,7 +262,9 @@ int runHashStatsCommand(const HashStatsOptions& options) {
                      " (weak / **FAIL** by dieharder's rule: outside [0.005, 0.995] / "
                      "[1e-6, 1 - 1e-6]).\n\n" + comparisonTable(rows, options);
     if (rows.size() == 1) md += "\n" + detailTable(rows[0]);
-    if (!dieharder.empty()) md += "\n## dieharder -g 200, DIEHARD tests\n\n" + dieharderTable(dieharder);
+    if (!dieharder.empty())
+      md += "\n## penumbra hash --key " + std::to_string(options.key) +
+            " | dieharder -g 200, DIEHARD tests\n\n" + dieharderTable(dieharder);
     std::fputs(md.c_str(), stdout);
     if (!options.out.empty()) {
       writeTextFile(std::filesystem::path(options.out) / "hash_stats.md", md);

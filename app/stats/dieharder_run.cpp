@@ -46,8 +46,9 @@ int thesisDiehardPasses(const std::string& hash) {
   return -1;
 }
 
-DieharderRun::DieharderRun(std::string penumbra, std::string hash, std::vector<int> tests)
-    : penumbra_(std::move(penumbra)), hash_(std::move(hash)), tests_(std::move(tests)) {}
+DieharderRun::DieharderRun(std::string penumbra, std::string hash, std::vector<int> tests,
+                           std::uint32_t key)
+    : penumbra_(std::move(penumbra)), hash_(std::move(hash)), tests_(std::move(tests)), key_(key) {}
 
 DieharderRun::~DieharderRun() {
   cancel();
@@ -77,7 +78,8 @@ void DieharderRun::work() {
     // 1. The pipeline in a shell of its own process group: the stream ends when dieharder
     // has read enough (penumbra hash treats the closed pipe as the end).
     const std::string command = "exec 2>/dev/null; '" + penumbra_ + "' hash --hash " + hash_ +
-                                " --count 4294967295 | dieharder -g 200 -d " + std::to_string(test);
+                                " --key " + std::to_string(key_) + " --count 4294967295 | dieharder -g 200 -d " +
+                                std::to_string(test);
     int pipeFds[2];
     if (pipe(pipeFds) != 0) break;
     const pid_t child = fork();

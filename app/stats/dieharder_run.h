@@ -4,6 +4,7 @@
 // `penumbra hash-stats --dieharder` and the window's hash_stats panel.
 #pragma once
 #include <atomic>
+#include <cstdint>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -33,8 +34,10 @@ int thesisDiehardPasses(const std::string& hash);
 
 class DieharderRun {
 public:
-  // `penumbra`: the executable that streams the hash (normally /proc/self/exe).
-  DieharderRun(std::string penumbra, std::string hash, std::vector<int> tests);
+  // `penumbra`: the executable that streams the hash (normally /proc/self/exe); `key`: the
+  // Appendix A key of the stream (the same key gives the same stream, hence the same p-values).
+  DieharderRun(std::string penumbra, std::string hash, std::vector<int> tests,
+               std::uint32_t key = 0);
   ~DieharderRun();  // cancels and joins
   DieharderRun(const DieharderRun&) = delete;
   DieharderRun& operator=(const DieharderRun&) = delete;
@@ -53,6 +56,7 @@ private:
   void work();
   std::string penumbra_, hash_;
   std::vector<int> tests_;
+  std::uint32_t key_;
   std::thread thread_;
   std::atomic<bool> cancel_{false}, finished_{false};
   std::atomic<int> testsDone_{0}, childGroup_{0};

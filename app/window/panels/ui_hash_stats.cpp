@@ -104,9 +104,11 @@ void drawDieharder(UiState& state, std::unique_ptr<DieharderRun>& run) {
   }
   const std::string hash = state.session.pipeline.param("hash_stats.hash").asEnum();
   if ((!run || run->finished()) && ImGui::Button(("run dieharder on " + hash).c_str())) {
-    run = std::make_unique<DieharderRun>("/proc/self/exe", hash, diehardTests());
+    const auto key = std::uint32_t(state.session.pipeline.param("hash_stats.key").asInt());
+    run = std::make_unique<DieharderRun>("/proc/self/exe", hash, diehardTests(), key);
     run->start();
-    state.status = "dieharder: penumbra hash --hash " + hash + " | dieharder -g 200, DIEHARD tests";
+    state.status = "dieharder: penumbra hash --hash " + hash + " --key " + std::to_string(key) +
+                   " | dieharder -g 200, DIEHARD tests";
   }
   if (!run) return;
   if (!run->finished()) {
@@ -134,8 +136,8 @@ void drawDieharder(UiState& state, std::unique_ptr<DieharderRun>& run) {
   if (!run->error().empty()) ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", run->error().c_str());
   ImGui::TextWrapped("Under a perfect generator each p-value falls outside [0.01, 0.99] with "
                      "probability 0.02: all 18 land inside only 70%% of the time. A count that "
-                     "moves by one or two between runs says nothing; a test that fails on every "
-                     "key does.");
+                     "moves by one or two between keys says nothing; a test that fails on every "
+                     "key does. (The same key streams the same numbers, so the same p-values.)");
 }
 
 }  // namespace
