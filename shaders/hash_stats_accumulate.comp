@@ -6,7 +6,7 @@ layout(local_size_x = HASH_STATS_GROUP_SIZE) in;
 layout(std430, binding = HASH_STATS_SAMPLES_BINDING) readonly buffer Samples { uvec4 samples[]; };
 layout(std430, binding = HASH_STATS_COUNTS_BINDING) buffer Counts { uint counts[]; };
 layout(std430, binding = HASH_STATS_SUMS_BINDING) writeonly buffer Sums { float sums[]; };
-layout(location = 0) uniform uint uCount;  // samples in this chunk
+layout(location = HASH_STATS_LOC_COUNT) uniform uint uCount;  // samples in this chunk
 
 float centered(uint word) { return float(word >> 8u) * (1.0 / 16777216.0) - 0.5; }
 

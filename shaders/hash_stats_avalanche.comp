@@ -4,10 +4,10 @@
 #include "shared/hash_patterns.glsl"
 layout(local_size_x = HASH_STATS_GROUP_SIZE) in;
 layout(std430, binding = HASH_STATS_AVALANCHE_BINDING) buffer Flips { uint flips[]; };
-layout(location = 0) uniform uint uCount;  // inputs
-layout(location = 2) uniform uint uKey;
-layout(location = 3) uniform int uHashKind;
-layout(location = 4) uniform int uPattern;
+layout(location = HASH_STATS_LOC_COUNT) uniform uint uCount;  // inputs
+layout(location = HASH_STATS_LOC_KEY) uniform uint uKey;
+layout(location = HASH_STATS_LOC_KIND) uniform int uHashKind;
+layout(location = HASH_STATS_LOC_PATTERN) uniform int uPattern;
 
 void main() {
   uint inputBit = gl_GlobalInvocationID.x & 31u;

@@ -5,8 +5,7 @@
 layout(local_size_x = HASH_STATS_GROUP_SIZE) in;
 layout(std430, binding = HASH_STATS_SAMPLES_BINDING) readonly buffer Samples { uvec4 samples[]; };
 layout(std430, binding = HASH_STATS_FIPS_BINDING) writeonly buffer Blocks { uint blocks[]; };
-layout(location = 0) uniform uint uBlocks;      // whole blocks in this chunk
-layout(location = 1) uniform uint uFirstBlock;  // index of this chunk's first block in blocks[]
+layout(location = HASH_STATS_LOC_COUNT) uniform uint uBlocks;  // whole blocks in this chunk
 
 void main() {
   uint block = gl_GlobalInvocationID.x;
@@ -35,7 +34,7 @@ void main() {
   }
   runs[runBit * 6u + min(runLength, 6u) - 1u] += 1u;
   longest = max(longest, runLength);
-  uint base = (uFirstBlock + block) * HASH_STATS_FIPS_STRIDE;
+  uint base = block * HASH_STATS_FIPS_STRIDE;
   blocks[base + HASH_STATS_FIPS_ONES] = ones;
   for (int k = 0; k < 16; ++k) blocks[base + HASH_STATS_FIPS_POKER + k] = poker[k];
   for (int k = 0; k < 12; ++k) blocks[base + HASH_STATS_FIPS_RUNS + k] = runs[k];

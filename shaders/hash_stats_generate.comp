@@ -5,11 +5,11 @@
 #include "shared/hash_patterns.glsl"
 layout(local_size_x = HASH_STATS_GROUP_SIZE) in;
 layout(std430, binding = HASH_STATS_SAMPLES_BINDING) writeonly buffer Samples { uvec4 samples[]; };
-layout(location = 0) uniform uint uCount;     // samples in this chunk
-layout(location = 1) uniform uint uFirst;     // input number of the chunk's first sample
-layout(location = 2) uniform uint uKey;
-layout(location = 3) uniform int uHashKind;
-layout(location = 4) uniform int uPattern;
+layout(location = HASH_STATS_LOC_COUNT) uniform uint uCount;  // samples in this chunk
+layout(location = HASH_STATS_LOC_FIRST) uniform uint uFirst;  // input number of sample 0
+layout(location = HASH_STATS_LOC_KEY) uniform uint uKey;
+layout(location = HASH_STATS_LOC_KIND) uniform int uHashKind;
+layout(location = HASH_STATS_LOC_PATTERN) uniform int uPattern;
 
 void main() {
   uint local = gl_GlobalInvocationID.x;

@@ -3,12 +3,21 @@
 #include <algorithm>
 #include <chrono>
 
+#include "gl/gpu_layout.h"
+
 // std430 arrays: uvec4 samples (16-byte stride), uint counts and blocks, float sums.
 static_assert(sizeof(glm::uvec4) == 16);
 static_assert(HASH_STATS_CHUNK % HASH_STATS_FIPS_WORDS == 0, "chunks hold whole FIPS blocks");
 static_assert(HASH_STATS_SUM_COUNT <= HASH_STATS_SUM_STRIDE);
 static_assert(HASH_STATS_FIPS_TOTAL_RUNS < HASH_STATS_FIPS_STRIDE);
 static_assert(HASH_STATS_AVALANCHE_INPUTS % 64 == 0);
+static_assert(gpu::distinctBelow({HASH_STATS_SAMPLES_BINDING, HASH_STATS_COUNTS_BINDING,
+                                  HASH_STATS_SUMS_BINDING, HASH_STATS_FIPS_BINDING,
+                                  HASH_STATS_AVALANCHE_BINDING},
+                                 gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({HASH_STATS_LOC_COUNT, HASH_STATS_LOC_FIRST, HASH_STATS_LOC_KEY,
+                                  HASH_STATS_LOC_KIND, HASH_STATS_LOC_PATTERN},
+                                 gpu::kUniformLocations));
 
 namespace {
 constexpr std::uint32_t kInvocationsPerChunk =
@@ -48,13 +57,12 @@ void GpuHashStats::reduceChunk(std::uint32_t count, std::uint64_t blocksBefore,
   const std::uint32_t invocations =
       (count + HASH_STATS_PER_INVOCATION - 1) / HASH_STATS_PER_INVOCATION;
   accumulate_.use();
-  glUniform1ui(0, count);
+  glUniform1ui(HASH_STATS_LOC_COUNT, count);
   glDispatchCompute(groups(invocations), 1, 1);
   const std::uint32_t blocks = count / HASH_STATS_FIPS_WORDS;
   if (blocks > 0) {
     fips_.use();
-    glUniform1ui(0, blocks);
-    glUniform1ui(1, 0);
+    glUniform1ui(HASH_STATS_LOC_COUNT, blocks);
     glDispatchCompute(groups(blocks), 1, 1);
   }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -88,11 +96,11 @@ hashstats::Raw GpuHashStats::run(int kind, int pattern, std::uint64_t count, std
   for (std::uint64_t first = 0; first < count; first += HASH_STATS_CHUNK) {
     const auto chunk = std::uint32_t(std::min<std::uint64_t>(HASH_STATS_CHUNK, count - first));
     generate_.use();
-    glUniform1ui(0, chunk);
-    glUniform1ui(1, std::uint32_t(first));
-    glUniform1ui(2, key);
-    glUniform1i(3, kind);
-    glUniform1i(4, pattern);
+    glUniform1ui(HASH_STATS_LOC_COUNT, chunk);
+    glUniform1ui(HASH_STATS_LOC_FIRST, std::uint32_t(first));
+    glUniform1ui(HASH_STATS_LOC_KEY, key);
+    glUniform1i(HASH_STATS_LOC_KIND, kind);
+    glUniform1i(HASH_STATS_LOC_PATTERN, pattern);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HASH_STATS_SAMPLES_BINDING, samples_.id());
     glDispatchCompute(groups(chunk), 1, 1);
     reduceChunk(chunk, raw.fipsBlocks.size() / HASH_STATS_FIPS_STRIDE, raw);
@@ -100,10 +108,10 @@ hashstats::Raw GpuHashStats::run(int kind, int pattern, std::uint64_t count, std
   // 2. Avalanche over the first inputs of the pattern: 32 invocations per 64 inputs.
   raw.avalancheInputs = std::uint32_t(std::min<std::uint64_t>(count, HASH_STATS_AVALANCHE_INPUTS));
   avalanche_.use();
-  glUniform1ui(0, raw.avalancheInputs);
-  glUniform1ui(2, key);
-  glUniform1i(3, kind);
-  glUniform1i(4, pattern);
+  glUniform1ui(HASH_STATS_LOC_COUNT, raw.avalancheInputs);
+  glUniform1ui(HASH_STATS_LOC_KEY, key);
+  glUniform1i(HASH_STATS_LOC_KIND, kind);
+  glUniform1i(HASH_STATS_LOC_PATTERN, pattern);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HASH_STATS_AVALANCHE_BINDING, flips_.id());
   glDispatchCompute(groups((raw.avalancheInputs + 63) / 64 * 32), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -133,11 +141,11 @@ double GpuHashStats::hashesPerSecond(int kind, std::uint32_t count, int repeats)
     for (std::uint32_t first = 0; first < count; first += HASH_STATS_CHUNK) {
       const std::uint32_t chunk = std::min<std::uint32_t>(HASH_STATS_CHUNK, count - first);
       throughput_.use();
-      glUniform1ui(0, chunk);
-      glUniform1ui(1, first);
-      glUniform1ui(2, 0);
-      glUniform1i(3, kind);
-      glUniform1i(4, HASH_PATTERN_LINEAR);
+      glUniform1ui(HASH_STATS_LOC_COUNT, chunk);
+      glUniform1ui(HASH_STATS_LOC_FIRST, first);
+      glUniform1ui(HASH_STATS_LOC_KEY, 0);
+      glUniform1i(HASH_STATS_LOC_KIND, kind);
+      glUniform1i(HASH_STATS_LOC_PATTERN, HASH_PATTERN_LINEAR);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, HASH_STATS_SAMPLES_BINDING, samples_.id());
       glDispatchCompute(groups(chunk), 1, 1);
     }

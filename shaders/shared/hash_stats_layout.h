@@ -77,6 +77,14 @@
 #define HASH_STATS_IDENTITY 100  // returns the seed itself
 #define HASH_STATS_CONSTANT 101  // returns a constant
 
+// Uniform locations (each pass uses those it needs).
+#define HASH_STATS_LOC_COUNT 0    // samples (or FIPS blocks, or avalanche inputs) this dispatch
+#define HASH_STATS_LOC_FIRST 1    // input number of the chunk's first sample
+#define HASH_STATS_LOC_KEY 2
+#define HASH_STATS_LOC_KIND 3     // HASH_* or HASH_STATS_IDENTITY / HASH_STATS_CONSTANT
+#define HASH_STATS_LOC_PATTERN 4  // HASH_PATTERN_*
+
+// Storage buffer bindings.
 #define HASH_STATS_SAMPLES_BINDING 0    // uvec4 samples[] (x, y, right x, next-frame x)
 #define HASH_STATS_COUNTS_BINDING 1     // uint counts[HASH_STATS_COUNT_TOTAL]
 #define HASH_STATS_SUMS_BINDING 2       // float sums[]
