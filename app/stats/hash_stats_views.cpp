@@ -26,10 +26,10 @@ StatsImage bitBiasImage(const hashstats::Result& result) {
   for (int b = 0; b < 32; ++b) {
     const double z = std::clamp(result.bitZ[b], -8.0, 8.0);
     const int extent = int(std::lround(std::abs(z) / 8 * middle));
-    for (int k = 0; k < std::max(extent, 1); ++k) {
+    for (int k = 0; k < extent; ++k) {
       const int row = z >= 0 ? middle + k : middle - 1 - k;
       for (int x = b * barWidth + 1; x < (b + 1) * barWidth - 1; ++x)
-        image.values[row * image.width + x] = float(extent == 0 ? 0 : z);
+        image.values[row * image.width + x] = float(z);
     }
   }
   return image;
