@@ -11,7 +11,7 @@ layout(std430, binding = HASH_BATCH_SEED_BINDING) readonly buffer Seeds { uvec4 
 layout(std430, binding = HASH_BATCH_OUTPUT_BINDING) writeonly buffer Hashes { uvec4 hashes[]; };
 layout(location = 0) uniform uint uCount;
 layout(location = 1) uniform uint uKey;
-layout(location = 2) uniform int uHashKind;  // HASH_MD5_16, HASH_MD5_64, HASH_PCG3D
+layout(location = 2) uniform int uHashKind;  // HASH_* of shared/hash_kinds.h
 layout(location = 3) uniform uint uFirstSeed;
 
 void main() {

@@ -9,6 +9,7 @@
 std::unique_ptr<Stage> makeLightStage();
 std::unique_ptr<Stage> makeGBufferStage();
 std::unique_ptr<Stage> makeHashStage();
+std::unique_ptr<Stage> makeHashStatsStage();
 std::unique_ptr<Stage> makeLightLayersStage();
 std::unique_ptr<Stage> makeNBufferStage();
 // 2. Monte Carlo soft shadows (Curtis & Olano).
@@ -32,6 +33,7 @@ std::vector<StageEntry> makeRegistry() {
   add(makeLightStage());                             // §3, Eq 3.1-3.2
   add(makeGBufferStage());                           // Alg. 1, step 1
   add(makeHashStage());                              // §3.1, App. A
+  add(makeHashStatsStage());                         // §3.1, §4.3, App. A (issue 11)
   add(makeLightLayersStage());                       // §3.3
   add(makeNBufferStage());                           // §3.5
   add(makeClassifyStage());                          // §3.6

@@ -15,6 +15,8 @@
 #include "bench/bench_stages.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
+#include "cli/hash_stats_command.h"
+#include "gl/hash_kind.h"
 #include "cli/trace_command.h"
 #include "core/input_error.h"
 #include "core/pipeline.h"
@@ -112,10 +114,26 @@ int main(int argc, char** argv) {
   HashOptions hashing;
   CLI::App* hashCommand = app.add_subcommand("hash", "raw little-endian uint32 stream of a hash "
                                                      "on the inputs 1, 2, ... (dieharder -g 200)");
-  hashCommand->add_option("--hash", hashing.hash, "md5_16, md5_64 or pcg3d")->capture_default_str();
+  hashCommand->add_option("--hash", hashing.hash, hashKindList())->capture_default_str();
   hashCommand->add_option("--count", hashing.count, "number of hashes (16 bytes each)")
       ->check(CLI::Range(std::uint64_t(1), std::uint64_t(4294967295u)))->capture_default_str();
   hashCommand->add_option("--key", hashing.key, "key XORed into every seed")->capture_default_str();
+
+  HashStatsOptions hashStats;
+  CLI::App* hashStatsCommand = app.add_subcommand(
+      "hash-stats", "DIEHARD-like statistics of the hashes on the GPU (table, JSON, images); "
+                    "--dieharder runs the real battery");
+  hashStatsCommand->add_option("--hash", hashStats.hash, "all, " + hashKindList())->capture_default_str();
+  hashStatsCommand->add_option("--pattern", hashStats.pattern, "all, linear, pixels, morton, frames")
+      ->capture_default_str();
+  hashStatsCommand->add_option("--count", hashStats.count, "samples per key, 1024 .. 2^24")
+      ->capture_default_str();
+  hashStatsCommand->add_option("--keys", hashStats.keys, "keys K (KS test of the K p-values)")
+      ->capture_default_str();
+  hashStatsCommand->add_option("--key", hashStats.key, "first key")->capture_default_str();
+  hashStatsCommand->add_option("--out", hashStats.out, "directory for hash_stats.md/.json and images");
+  hashStatsCommand->add_flag("--dieharder", hashStats.dieharder,
+                             "also run penumbra hash | dieharder -g 200 on the DIEHARD tests");
 
   BenchStagesOptions benching;
   CLI::App* benchStagesCommand = app.add_subcommand(
@@ -197,6 +215,7 @@ int main(int argc, char** argv) {
       return runBench(report);
     }
     if (*hashCommand) return runHashCommand(hashing);
+    if (*hashStatsCommand) return runHashStatsCommand(hashStats);
     if (*lessonCommand) {
       lesson.interactiveLesson = lesson.exportDirectory.empty();
       return runWindow(lesson);

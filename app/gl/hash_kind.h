@@ -7,15 +7,22 @@
 
 #include "shared/hash_kinds.h"
 
-enum class HashKind : int { Md5_16 = 0, Md5_64 = 1, Pcg3d = 2 };
+enum class HashKind : int {
+  Md5_16 = 0, Md5_64 = 1, Pcg3d = 2, Md5_4 = 3, Md5_8 = 4, Lcg15 = 5, Lcg32 = 6, Xxhash32 = 7
+};
 static_assert(int(HashKind::Md5_16) == HASH_MD5_16);
 static_assert(int(HashKind::Md5_64) == HASH_MD5_64);
 static_assert(int(HashKind::Pcg3d) == HASH_PCG3D);
+static_assert(int(HashKind::Md5_4) == HASH_MD5_4);
+static_assert(int(HashKind::Md5_8) == HASH_MD5_8);
+static_assert(int(HashKind::Lcg15) == HASH_LCG15);
+static_assert(int(HashKind::Lcg32) == HASH_LCG32);
+static_assert(int(HashKind::Xxhash32) == HASH_XXHASH32);
 
 // Indexed by HashKind; also the options of the parameter `light.hash`, whose option
 // index is therefore the HashKind (and the GLSL hashKind) itself.
-inline constexpr std::array<const char*, HASH_KIND_COUNT> kHashKindNames = {"md5_16", "md5_64",
-                                                                            "pcg3d"};
+inline constexpr std::array<const char*, HASH_KIND_COUNT> kHashKindNames = {
+    "md5_16", "md5_64", "pcg3d", "md5_4", "md5_8", "lcg15", "lcg32", "xxhash32"};
 
 inline std::optional<HashKind> hashKindFromName(const std::string& name) {
   for (size_t i = 0; i < kHashKindNames.size(); ++i)
@@ -23,7 +30,7 @@ inline std::optional<HashKind> hashKindFromName(const std::string& name) {
   return std::nullopt;
 }
 
-inline std::string hashKindList() {  // "md5_16, md5_64, pcg3d"
+inline std::string hashKindList() {  // "md5_16, md5_64, pcg3d, ..."
   std::string list;
   for (const char* name : kHashKindNames) list += (list.empty() ? "" : ", ") + std::string(name);
   return list;

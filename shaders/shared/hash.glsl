@@ -2,7 +2,8 @@
 // own coordinates, so every ray's light sample is computed independently and in parallel.
 // The thesis uses a reduced 16-round MD5 (Appendix A); §4.3 reports it costs < 10% of the
 // frame. For comparison we also provide the full 64-round MD5 and pcg3d (Jarzynski & Olano
-// 2020, "Hash Functions for GPU Rendering"), selected by hashRand(seed, key, hashKind).
+// 2020, "Hash Functions for GPU Rendering"), the listing cut to 4 and 8 steps, two LCGs and
+// xxhash32, selected by hashRand(seed, key, hashKind).
 //
 // Convention for the pipeline: seed = (pixel.x, pixel.y, 0, 0) ("screen coordinates are
 // used for the seed", Appendix A), key = frame.keys.x; the first light sample is
@@ -224,10 +225,106 @@ uvec4 pcg3dRand(uvec4 seed, uint key) {
   return uvec4(h, pcg3d(h).x);
 }
 
-// The hash selected by `hash.function` (HASH_MD5_16, HASH_MD5_64, HASH_PCG3D).
+// ---- Hashes that teach by failing (issue 11) ----------------------------------------------
+
+// The Appendix A listing cut to its first `steps` steps (4 or 8; 16 would be md5rand16): the
+// same message words, constants as printed, shifts, digest start and `digest += tD` after
+// every step. Written as a loop over the listing's tables so that the 16-step form can be
+// checked against the literal md5rand16 above (tests/stages/test_hash.cpp).
+const uint kThesisConstant[16] = uint[16](
+    0xD76AA478u, 0xE8C7B757u, 0x242070DBu, 0xC1BDCEEFu, 0xF61E2562u, 0xC040B341u, 0x265E5A52u,
+    0xE9B6C7ABu, 0xFFFA3942u, 0x8771F681u, 0x6D9D6122u, 0xFDE5380Cu, 0xF4292244u, 0x432AFF98u,
+    0xAB9423A7u, 0xFC93A039u);
+const uint kThesisShift[16] = uint[16](7u, 12u, 17u, 22u, 5u, 9u, 14u, 20u, 4u, 11u, 16u, 23u,
+                                       6u, 10u, 15u, 21u);
+// Message word of each step; 4 marks the words the listing comments out (zero).
+const int kThesisWord[16] = int[16](0, 1, 2, 3, 1, 4, 4, 0, 4, 4, 4, 4, 0, 4, 4, 4);
+
+uvec4 md5randSteps(uvec4 seed, uint key, int steps) {
+  uint m[5] = uint[5](seed.x ^ key, seed.y ^ key, seed.z ^ key, seed.w ^ key, 0u);
+  uvec4 digest = uvec4(0x01234567u, 0x89ABCDEFu, 0xFEDCBA98u, 0x76543210u);
+  uvec4 tD = digest;
+  for (int i = 0; i < steps; ++i) {
+    uint Ft;
+    if (i < 4) Ft = (tD.x & tD.y) | ((~tD.x) & tD.z);
+    else if (i < 8) Ft = (tD.z & tD.x) | ((~tD.z) & tD.y);
+    else if (i < 12) Ft = tD.x ^ tD.y ^ tD.z;
+    else Ft = tD.y ^ (tD.x | (~tD.z));
+    uint rot_temp = tD.x + Ft + m[kThesisWord[i]] + kThesisConstant[i];
+    tD.x = tD.y + (rot_temp << kThesisShift[i]) + (rot_temp >> (32u - kThesisShift[i]));
+    tD = tD.yzwx;
+    digest += tD;
+  }
+  return digest;
+}
+
+// The pixel index a naive renderer seeds a per-pixel generator with: x + 4096 y (a 4096-wide
+// image), the ray index above it, XOR the key (as Appendix A applies its key).
+uint lcgPixelIndex(uvec4 seed, uint key) {
+  return (seed.x + (seed.y << 12u) + (seed.z << 24u) + (seed.w << 28u)) ^ key;
+}
+
+// C rand()-style: the ISO C example generator (next = next * 1103515245 + 12345; return
+// next / 65536 % 32768), srand(pixel index), four calls. Each 15-bit result is placed in the
+// top bits of its word, so toUnitSquare gives rand() / 32768 as a C program would; the low
+// 17 bits of every word are zero.
+uvec4 lcg15Rand(uvec4 seed, uint key) {
+  uint state = lcgPixelIndex(seed, key);
+  uvec4 words;
+  for (int i = 0; i < 4; ++i) {
+    state = state * 1103515245u + 12345u;
+    words[i] = ((state >> 16u) & 0x7FFFu) << 17u;
+  }
+  return words;
+}
+
+// 32-bit LCG of Numerical Recipes (a = 1664525, c = 1013904223), started at the pixel index,
+// four steps; each word is the whole state.
+uvec4 lcg32Rand(uvec4 seed, uint key) {
+  uint state = lcgPixelIndex(seed, key);
+  uvec4 words;
+  for (int i = 0; i < 4; ++i) {
+    state = state * 1664525u + 1013904223u;
+    words[i] = state;
+  }
+  return words;
+}
+
+// xxhash32 of four words, as Jarzynski & Olano 2020 give it (from Collet's xxHash).
+uint xxhash32(uvec4 p) {
+  const uint PRIME32_2 = 2246822519u, PRIME32_3 = 3266489917u;
+  const uint PRIME32_4 = 668265263u, PRIME32_5 = 374761393u;
+  uint h32 = p.w + PRIME32_5 + p.x * PRIME32_3;
+  h32 = PRIME32_4 * ((h32 << 17u) | (h32 >> 15u));
+  h32 += p.y * PRIME32_3;
+  h32 = PRIME32_4 * ((h32 << 17u) | (h32 >> 15u));
+  h32 += p.z * PRIME32_3;
+  h32 = PRIME32_4 * ((h32 << 17u) | (h32 >> 15u));
+  h32 = PRIME32_2 * (h32 ^ (h32 >> 15u));
+  h32 = PRIME32_3 * (h32 ^ (h32 >> 13u));
+  return h32 ^ (h32 >> 16u);
+}
+
+// Four words from the 4-to-1 xxhash32: word i hashes (seed ^ key) with i added to w * 4
+// (injective while seed.w < 2^30; the pipeline's seed.w is 0).
+uvec4 xxhash32Rand(uvec4 seed, uint key) {
+  uvec4 p = seed ^ uvec4(key);
+  p.w *= 4u;
+  return uvec4(xxhash32(p), xxhash32(p + uvec4(0u, 0u, 0u, 1u)),
+               xxhash32(p + uvec4(0u, 0u, 0u, 2u)), xxhash32(p + uvec4(0u, 0u, 0u, 3u)));
+}
+
+// The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h).
 uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
-  if (hashKind == HASH_MD5_64) return md5rand64(seed, key);
-  if (hashKind == HASH_PCG3D) return pcg3dRand(seed, key);
+  switch (hashKind) {
+    case HASH_MD5_64: return md5rand64(seed, key);
+    case HASH_PCG3D: return pcg3dRand(seed, key);
+    case HASH_MD5_4: return md5randSteps(seed, key, 4);
+    case HASH_MD5_8: return md5randSteps(seed, key, 8);
+    case HASH_LCG15: return lcg15Rand(seed, key);
+    case HASH_LCG32: return lcg32Rand(seed, key);
+    case HASH_XXHASH32: return xxhash32Rand(seed, key);
+  }
   return md5rand16(seed, key);
 }
 

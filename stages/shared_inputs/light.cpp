@@ -42,7 +42,12 @@ public:
             "Hash that turns (pixel, ray, frame key) into light samples. md5_16: the thesis's "
             "reduced 16-round MD5, as printed in Appendix A (passes 11 of 15 DIEHARD tests, "
             "§3.1; costs < 10% of the frame, §4.3). md5_64: the full MD5 of Tzeng & Wei 2008, "
-            "about 4x the work. pcg3d: Jarzynski & Olano 2020, a few multiplies.",
+            "about 4x the work. pcg3d: Jarzynski & Olano 2020, a few multiplies. Hashes that "
+            "teach by failing: md5_4 / md5_8, the listing cut to its first 4 / 8 steps "
+            "(\"fewer rounds ... resulted in visible patterns\", §3.1); lcg15, C rand() seeded "
+            "with the pixel index (15 bits); lcg32, a 32-bit LCG from the pixel index. "
+            "xxhash32: a cheap integer hash in common use (Jarzynski & Olano 2020). The "
+            "hash_stats stage measures each one.",
             {kHashKindNames.begin(), kHashKindNames.end()}, int(HashKind::Md5_16)),
     };
   }

@@ -93,7 +93,7 @@ TEST(CliReliability, ExportDirectoryIsATransaction) {
     const pid_t child = fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-      const std::string binary = runPenumbraBinary();
+      const std::string binary = penumbraBinary();
       const std::string outArg = out.string();
       execl(binary.c_str(), binary.c_str(), "export", "--frame-key", "9", "--out", outArg.c_str(),
             "--width", "256", "--height", "256", static_cast<char*>(nullptr));

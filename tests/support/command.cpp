@@ -16,4 +16,4 @@ CommandResult runPenumbra(const std::string& arguments) {
   return result;
 }
 
-std::string runPenumbraBinary() { return PENUMBRA_BINARY_PATH; }
+std::string penumbraBinary() { return PENUMBRA_BINARY_PATH; }

@@ -7,5 +7,5 @@ struct CommandResult {
   std::string output;
 };
 CommandResult runPenumbra(const std::string& arguments);
-// The penumbra binary's path (for tests that start it themselves).
-std::string runPenumbraBinary();
+// The path of the penumbra executable under test.
+std::string penumbraBinary();

@@ -1,5 +1,6 @@
 #include "md5_reference.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -116,7 +117,9 @@ glm::uvec4 md5Rand64(glm::uvec4 seed, std::uint32_t key) {
   return words;
 }
 
-glm::uvec4 md5Rand16(glm::uvec4 seed, std::uint32_t key) {
+glm::uvec4 md5Rand16(glm::uvec4 seed, std::uint32_t key) { return md5RandSteps(seed, key, 16); }
+
+glm::uvec4 md5RandSteps(glm::uvec4 seed, std::uint32_t key, int stepCount) {
   // The 16 steps of the thesis listing, as data: round function (0: (x&y)|(~x&z),
   // 1: (z&x)|(~z&y), 2: x^y^z, 3: y^(x|~z), of t = tD), message word (-1: a word the
   // listing comments out, i.e. zero), constant as printed, rotation.
@@ -131,7 +134,8 @@ glm::uvec4 md5Rand16(glm::uvec4 seed, std::uint32_t key) {
   const std::uint32_t message[4] = {seed.x ^ key, seed.y ^ key, seed.z ^ key, seed.w ^ key};
   std::uint32_t digest[4] = {0x01234567u, 0x89ABCDEFu, 0xFEDCBA98u, 0x76543210u};
   std::uint32_t t[4] = {digest[0], digest[1], digest[2], digest[3]};
-  for (const Step& step : steps) {
+  for (int s = 0; s < stepCount; ++s) {
+    const Step& step = steps[s];
     const std::uint32_t x = t[0], y = t[1], z = t[2];
     const std::uint32_t f = step.function == 0   ? (x & y) | (~x & z)
                             : step.function == 1 ? (z & x) | (~z & y)
@@ -167,11 +171,65 @@ glm::uvec4 pcg3dRand(glm::uvec4 seed, std::uint32_t key) {
   return {h, pcg3d(h).x};
 }
 
+// ISO C (C99 §7.20.2.2) gives this portable rand() as its example; srand(seed) sets `next`.
+struct IsoCRand {
+  std::uint32_t next;
+  int operator()() {
+    next = next * 1103515245u + 12345u;
+    return int((next / 65536u) % 32768u);
+  }
+};
+
+static std::uint32_t pixelIndex(glm::uvec4 seed, std::uint32_t key) {
+  // x + 4096 y + 2^24 ray + 2^28 w, modulo 2^32, XOR key.
+  return (seed.x + 4096u * seed.y + 16777216u * seed.z + 268435456u * seed.w) ^ key;
+}
+
+glm::uvec4 lcg15Rand(glm::uvec4 seed, std::uint32_t key) {
+  IsoCRand rand{pixelIndex(seed, key)};
+  glm::uvec4 words;
+  for (int i = 0; i < 4; ++i) words[i] = std::uint32_t(rand()) * 131072u;  // rand() * 2^17
+  return words;
+}
+
+glm::uvec4 lcg32Rand(glm::uvec4 seed, std::uint32_t key) {
+  // Numerical Recipes' "quick and dirty" generator: I(j+1) = 1664525 I(j) + 1013904223.
+  std::uint64_t state = pixelIndex(seed, key);
+  glm::uvec4 words;
+  for (int i = 0; i < 4; ++i) words[i] = std::uint32_t(state = (1664525u * state + 1013904223u) % 4294967296u);
+  return words;
+}
+
+std::uint32_t xxhash32(glm::uvec4 p) {
+  // Collet's XXH32 primes; the 4-word form of Jarzynski & Olano 2020.
+  constexpr std::uint32_t prime2 = 0x85EBCA77u, prime3 = 0xC2B2AE3Du, prime4 = 0x27D4EB2Fu,
+                          prime5 = 0x165667B1u;
+  std::uint32_t h = p.w + prime5 + p.x * prime3;
+  h = std::rotl(h, 17) * prime4;
+  h = std::rotl(h + p.y * prime3, 17) * prime4;
+  h = std::rotl(h + p.z * prime3, 17) * prime4;
+  h = (h ^ (h >> 15)) * prime2;
+  h = (h ^ (h >> 13)) * prime3;
+  return h ^ (h >> 16);
+}
+
+glm::uvec4 xxhash32Rand(glm::uvec4 seed, std::uint32_t key) {
+  glm::uvec4 words;
+  for (std::uint32_t i = 0; i < 4; ++i)
+    words[i] = xxhash32({seed.x ^ key, seed.y ^ key, seed.z ^ key, (seed.w ^ key) * 4u + i});
+  return words;
+}
+
 glm::uvec4 hashRand(glm::uvec4 seed, std::uint32_t key, int kind) {
   switch (kind) {
     case HASH_MD5_16: return md5Rand16(seed, key);
     case HASH_MD5_64: return md5Rand64(seed, key);
     case HASH_PCG3D: return pcg3dRand(seed, key);
+    case HASH_MD5_4: return md5RandSteps(seed, key, 4);
+    case HASH_MD5_8: return md5RandSteps(seed, key, 8);
+    case HASH_LCG15: return lcg15Rand(seed, key);
+    case HASH_LCG32: return lcg32Rand(seed, key);
+    case HASH_XXHASH32: return xxhash32Rand(seed, key);
   }
   return {};
 }

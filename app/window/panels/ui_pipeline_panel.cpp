@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "window/panels/ui_hash_stats.h"
 #include "window/panels/ui_reference_progress.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
@@ -113,6 +114,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
     }
   ImGui::PopItemWidth();
   if (&stage == groundTruthStage(state.session.pipeline)) drawReferenceProgress(state);  // issue 5
+  if (stage.name() == "hash_stats") drawHashStatsPanel(state);  // issue 11
   ImGui::PopID();
   ImGui::Spacing();
 }

@@ -1,0 +1,73 @@
+// The §3.1 hash lesson (lessons/hash_quality_3_1.json) played through under Xvfb: its figures
+// exist, the one-ray shadow is noise with md5_16 and hard with md5_4 (every sample at one
+// spot of the light), md5_4's pair histogram is one cell, and the verdicts turn red for lcg32.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "support/command.h"
+#include "support/window_test.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<float> pixels(const fs::path& png, int& width, int& height) {
+  OIIO::ImageBuf image(png.string());
+  EXPECT_TRUE(image.read()) << png << ": " << image.geterror();
+  width = image.spec().width, height = image.spec().height;
+  std::vector<float> rgb(size_t(width) * height * 3);
+  image.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb.data());
+  return rgb;
+}
+
+// Mean |I(x+1, y) - I(x, y)| of the red channel.
+double roughness(const fs::path& png) {
+  int width = 0, height = 0;
+  const auto rgb = pixels(png, width, height);
+  double sum = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x + 1 < width; ++x)
+      sum += std::abs(rgb[(size_t(y) * width + x + 1) * 3] - rgb[(size_t(y) * width + x) * 3]);
+  return sum / (double(width - 1) * height);
+}
+
+}  // namespace
+
+TEST(WindowHashLesson, BadHashesShowInTheShadowTheHistogramAndTheTable) {
+  REQUIRE_DISPLAY();
+  const fs::path dir = scratchDirectory("lesson_hash");
+  const auto result = runPenumbra("lesson " + std::string(PENUMBRA_SOURCE_DIR) +
+                                  "/lessons/hash_quality_3_1.json --export " + dir.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("lesson step 4/4"), std::string::npos) << result.output;
+  for (const char* name : {"a_md5_16_shadow.png", "a_md5_16_pairs.png", "b_md5_4_shadow.png",
+                           "b_md5_4_pairs.png", "c_lcg32_shadow.png", "c_lcg32_pairs.png",
+                           "d_lcg32_verdicts.png", "e_md5_16_verdicts.png"})
+    ASSERT_TRUE(fs::exists(dir / name)) << name;
+  // One ray per pixel: md5_16 scatters the samples (noise), md5_4 puts them all at one spot.
+  const double noisy = roughness(dir / "a_md5_16_shadow.png");
+  const double hard = roughness(dir / "b_md5_4_shadow.png");
+  EXPECT_GT(noisy, 3 * hard) << noisy << " vs " << hard;
+  // md5_4's pair histogram: every pixel of the 64 x 64 image but one cell is the empty colour.
+  int width = 0, height = 0;
+  const auto histogram = pixels(dir / "b_md5_4_pairs.png", width, height);
+  ASSERT_EQ(width * height, 4096);
+  int empty = 0;
+  for (size_t i = 0; i < histogram.size(); i += 3)
+    empty += histogram[i] == histogram[0] && histogram[i + 1] == histogram[1];
+  EXPECT_GE(empty, 4095 - 1);
+  // Verdicts (white passed, red failed): lcg32 mostly red, md5_16 mostly white.
+  const auto redCells = [&](const char* name) {
+    const auto rgb = pixels(dir / name, width, height);
+    int red = 0;
+    for (size_t i = 0; i < rgb.size(); i += 3) red += rgb[i] > 0.5f && rgb[i + 1] < 0.3f;
+    return double(red) / (width * height);
+  };
+  EXPECT_GT(redCells("d_lcg32_verdicts.png"), 0.7);
+  EXPECT_LT(redCells("e_md5_16_verdicts.png"), 0.2);
+  fs::remove_all(dir);
+}
