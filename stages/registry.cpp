@@ -15,8 +15,10 @@ std::unique_ptr<Stage> makeNBufferStage();
 std::unique_ptr<Stage> makeClassifyStage();
 std::unique_ptr<Stage> makeTraceStage();
 std::unique_ptr<Stage> makeFilterStage();
-// 3. Baselines.
+// 3. Baselines and the other methods.
 std::unique_ptr<Stage> makeHardShadowStage();
+std::unique_ptr<Stage> makePcssStage();
+std::unique_ptr<Stage> makeSoftShadowMapStage();
 // 4. Ground truth and its comparison; 5. the image.
 std::unique_ptr<Stage> makeReferenceStage();
 std::unique_ptr<Stage> makeErrorStage();
@@ -36,6 +38,8 @@ std::vector<StageEntry> makeRegistry() {
   add(makeTraceStage());                             // §3.1-3.7, Alg. 2
   add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2
   add(makeHardShadowStage());                        // §2.3
+  add(makePcssStage());                              // Fernando 2005
+  add(makeSoftShadowMapStage());                     // Atty et al. 2006 §3
   add(makeReferenceStage());                         // ground truth (Embree)
   add(makeErrorStage());                             // Atty 2006 §4.2.1
   add(makeCompositeStage());                         // Alg. 1, last step
