@@ -3,9 +3,9 @@
 // its blocker search with the nearest occluder.
 #include "shared/ssm_layout.h"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D depthMap;
+layout(binding = DEPTH_BOUNDS_MAP_UNIT) uniform sampler2D depthMap;
 layout(std430, binding = DEPTH_BOUNDS_BINDING) buffer Bounds { DepthBounds bounds; };
-layout(location = 1) uniform float uEmpty;  // the cleared value: no surface
+layout(location = DEPTH_BOUNDS_EMPTY_LOCATION) uniform float uEmpty;
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

@@ -14,13 +14,13 @@
 #include "shared/pcss_layout.h"
 layout(std140, binding = PCSS_PARAMS_BINDING) uniform PcssBlock { PcssParams pcss; };
 layout(std430, binding = PCSS_TAPS_BINDING) readonly buffer Taps { vec2 taps[]; };
-layout(binding = 0) uniform sampler2D wsPositionTexture;
-layout(binding = 1) uniform sampler2D wsNormalTexture;
-layout(binding = 2) uniform sampler2D nearLayer;
-layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
-layout(binding = 1, r32f) uniform writeonly image2D searchRadiusImage;  // texels
-layout(binding = 2, r32f) uniform writeonly image2D blockerDepthImage;  // lsDepth, 0: none
-layout(binding = 3, r32f) uniform writeonly image2D filterRadiusImage;  // texels
+layout(binding = PCSS_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = PCSS_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = PCSS_NEAR_UNIT) uniform sampler2D nearLayer;
+layout(binding = PCSS_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
+layout(binding = PCSS_SEARCH_RADIUS_IMAGE, r32f) uniform writeonly image2D searchRadiusImage;  // texels
+layout(binding = PCSS_BLOCKER_DEPTH_IMAGE, r32f) uniform writeonly image2D blockerDepthImage;  // lsDepth, 0: none
+layout(binding = PCSS_FILTER_RADIUS_IMAGE, r32f) uniform writeonly image2D filterRadiusImage;  // texels
 
 // The light's cone from a receiver at (uvReceiver, zReceiver), cut by the plane at depth
 // zCut: a square in map uv, returned as (centre, half-width). The light fills the map at its

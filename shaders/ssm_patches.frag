@@ -2,7 +2,7 @@
 // this soft-shadow-map texel, the fraction of the light the micro-patch hides; additive
 // blending sums the micro-patches (the colour mask picks this pass's channel).
 #include "shared/ssm_common.glsl"
-layout(binding = 1) uniform sampler2D receiverMap;
+layout(binding = SSM_PATCHES_RECEIVER_UNIT) uniform sampler2D receiverMap;
 layout(location = 0) flat in vec4 vPatchRect;
 layout(location = 1) flat in float vPatchZ;
 layout(location = 0) out vec2 outOcclusion;

@@ -3,7 +3,7 @@
 // shadow map covers its penumbra extent (§3.3) for every receiver up to the farthest one.
 // Texels without an occluder, and occluders at or behind the light plane, draw nothing.
 #include "shared/ssm_common.glsl"
-layout(binding = 0) uniform sampler2D occluderMap;  // this pass's: nearest or farthest surfaces
+layout(binding = SSM_PATCHES_OCCLUDER_UNIT) uniform sampler2D occluderMap;  // this pass's: nearest or farthest surfaces
 layout(std430, binding = DEPTH_BOUNDS_BINDING) readonly buffer Bounds { DepthBounds receivers; };
 layout(location = 0) flat out vec4 vPatchRect;  // micro-patch: lsMin.xy, lsMax.xy
 layout(location = 1) flat out float vPatchZ;

@@ -3,9 +3,9 @@
 // ([0,1]^2 fills the view). Counted with additive blending: 0 is light seen through a gap
 // (a light leak), 1 hidden once, 2 or more an overlap (over-darkening, bounded by Eq 3).
 #include "shared/ssm_common.glsl"
-layout(binding = 0) uniform sampler2D occluderMap;
-layout(binding = 1) uniform sampler2D receiverMap;
-layout(binding = 2) uniform sampler2D wsPositionTexture;
+layout(binding = SSM_PICKED_OCCLUDER_UNIT) uniform sampler2D occluderMap;
+layout(binding = SSM_PICKED_RECEIVER_UNIT) uniform sampler2D receiverMap;
+layout(binding = SSM_PICKED_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 
 void main() {
   int n = ssm.map.x;

@@ -6,10 +6,10 @@
 // of the receiver map (an occluder's surface) is lit.
 #include "shared/screen_pass.glsl"
 #include "shared/ssm_common.glsl"
-layout(binding = 0) uniform sampler2D wsPositionTexture;
-layout(binding = 2) uniform sampler2D receiverMap;
-layout(binding = 3) uniform sampler2D softShadowMap;  // r = front pass, g = back pass
-layout(binding = 0, r32f) uniform writeonly image2D visibilityImage;
+layout(binding = SSM_PROJECT_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = SSM_PROJECT_RECEIVER_UNIT) uniform sampler2D receiverMap;
+layout(binding = SSM_PROJECT_SOFT_SHADOW_MAP_UNIT) uniform sampler2D softShadowMap;  // r: front, g: back
+layout(binding = SSM_PROJECT_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(std430, binding = SSM_COUNTERS_BINDING) buffer Counters { SsmCounters counters; };
 
 void main() {

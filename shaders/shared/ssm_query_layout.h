@@ -1,7 +1,9 @@
 // Test-only micro-patch queries (shaders/tests/ssm_patch_query.comp): one micro-patch and one
 // receiver point in light view space (shaders/shared/ssm_patch.glsl), so tests can hold the
 // shader's back-projection against the CPU oracle (tests/support/rect_visibility.h).
-// std430, storage bindings 2 (queries, read) and 3 (results, written).
+// std430, storage bindings SSM_QUERY_BINDING (queries, read) and SSM_RESULT_BINDING (results).
+#define SSM_QUERY_BINDING 2
+#define SSM_RESULT_BINDING 3
 struct SsmPatchQuery {
   vec4 patchRect;   // xy = lsMin, zw = lsMax
   vec4 depths;      // x = patch z, y = light plane z (zLight), zw = light half-size

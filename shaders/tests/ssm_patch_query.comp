@@ -2,8 +2,8 @@
 #include "../shared/ssm_patch.glsl"
 #include "../shared/ssm_query_layout.h"
 layout(local_size_x = 64) in;
-layout(std430, binding = 2) readonly buffer Queries { SsmPatchQuery queries[]; };
-layout(std430, binding = 3) writeonly buffer Results { SsmPatchResult results[]; };
+layout(std430, binding = SSM_QUERY_BINDING) readonly buffer Queries { SsmPatchQuery queries[]; };
+layout(std430, binding = SSM_RESULT_BINDING) writeonly buffer Results { SsmPatchResult results[]; };
 layout(location = 0) uniform int uCount;
 
 void main() {

@@ -68,8 +68,8 @@ public:
     boundsBuffer_.upload(&bounds, sizeof bounds);
     boundsProgram_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, boundsBuffer_.id());
-    glBindTextureUnit(0, nearLayer.id());
-    glUniform1f(1, 1.0f);
+    glBindTextureUnit(DEPTH_BOUNDS_MAP_UNIT, nearLayer.id());
+    glUniform1f(DEPTH_BOUNDS_EMPTY_LOCATION, 1.0f);
     glDispatchCompute(GLuint((nearLayer.width() + 7) / 8), GLuint((nearLayer.height() + 7) / 8), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(boundsBuffer_.id(), 0, sizeof bounds, &bounds);
@@ -93,12 +93,14 @@ public:
     program_.use();
     glBindBufferBase(GL_UNIFORM_BUFFER, PCSS_PARAMS_BINDING, paramBuffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PCSS_TAPS_BINDING, tapBuffer_.id());
-    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(2, nearLayer.id());
-    const char* images[] = {"visibility", "searchRadius", "blockerDepth", "filterRadius"};
-    for (GLuint unit = 0; unit < 4; ++unit)
-      glBindImageTexture(unit, frame.output(*this, images[unit], frame.eyeWidth, frame.eyeHeight).id(),
+    glBindTextureUnit(PCSS_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(PCSS_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(PCSS_NEAR_UNIT, nearLayer.id());
+    const std::pair<GLuint, const char*> images[] = {
+        {PCSS_VISIBILITY_IMAGE, "visibility"}, {PCSS_SEARCH_RADIUS_IMAGE, "searchRadius"},
+        {PCSS_BLOCKER_DEPTH_IMAGE, "blockerDepth"}, {PCSS_FILTER_RADIUS_IMAGE, "filterRadius"}};
+    for (const auto& [unit, output] : images)
+      glBindImageTexture(unit, frame.output(*this, output, frame.eyeWidth, frame.eyeHeight).id(),
                          0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     dispatchRows(frame.eyeWidth, frame.eyeHeight);
   }

@@ -135,10 +135,11 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_COUNTERS_BINDING, counterBuffer_.id());
     bindParams(params);
     projectProgram_.use();
-    glBindTextureUnit(0, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(2, receiverMap.id());
-    glBindTextureUnit(3, softShadowMap.id());
-    glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindTextureUnit(SSM_PROJECT_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(SSM_PROJECT_RECEIVER_UNIT, receiverMap.id());
+    glBindTextureUnit(SSM_PROJECT_SOFT_SHADOW_MAP_UNIT, softShadowMap.id());
+    glBindImageTexture(SSM_PROJECT_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0,
+                       GL_WRITE_ONLY, GL_R32F);
     dispatchRows(frame.eyeWidth, frame.eyeHeight);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glGetNamedBufferSubData(counterBuffer_.id(), 0, sizeof counters, &counters);
@@ -156,9 +157,9 @@ public:
         bindParams(params);
         glColorMaski(0, pass == 0, pass == 1, GL_FALSE, GL_FALSE);
         pickedLightProgram_.use();
-        glBindTextureUnit(0, (pass == 0 ? occluderMap : occluderBack).id());
-        glBindTextureUnit(1, receiverMap.id());
-        glBindTextureUnit(2, frame.input(*this, "wsPosition").id());
+        glBindTextureUnit(SSM_PICKED_OCCLUDER_UNIT, (pass == 0 ? occluderMap : occluderBack).id());
+        glBindTextureUnit(SSM_PICKED_RECEIVER_UNIT, receiverMap.id());
+        glBindTextureUnit(SSM_PICKED_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
         glBindVertexArray(emptyVertexArray());
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, n * n);
       }
@@ -198,8 +199,8 @@ private:
     buffer.upload(&bounds, sizeof bounds);
     boundsProgram_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, buffer.id());
-    glBindTextureUnit(0, map.id());
-    glUniform1f(1, empty);
+    glBindTextureUnit(DEPTH_BOUNDS_MAP_UNIT, map.id());
+    glUniform1f(DEPTH_BOUNDS_EMPTY_LOCATION, empty);
     glDispatchCompute(GLuint((map.width() + 7) / 8), GLuint((map.height() + 7) / 8), 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glGetNamedBufferSubData(buffer.id(), 0, sizeof bounds, &bounds);
@@ -239,8 +240,8 @@ private:
     glColorMaski(0, pass == 0 || footprint, pass == 1 || footprint, GL_FALSE, GL_FALSE);
     patchProgram_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, receiverBounds_.id());
-    glBindTextureUnit(0, occluders.id());
-    glBindTextureUnit(1, receivers.id());
+    glBindTextureUnit(SSM_PATCHES_OCCLUDER_UNIT, occluders.id());
+    glBindTextureUnit(SSM_PATCHES_RECEIVER_UNIT, receivers.id());
     glBindVertexArray(emptyVertexArray());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
     glBindVertexArray(0);

@@ -74,8 +74,8 @@ std::vector<gpu::SsmPatchResult> runQueries(const std::vector<gpu::SsmPatchQuery
   queryBuffer.upload(queries.data(), queries.size() * sizeof(gpu::SsmPatchQuery));
   std::vector<gpu::SsmPatchResult> results(queries.size());
   resultBuffer.upload(results.data(), results.size() * sizeof(gpu::SsmPatchResult));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, queryBuffer.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, resultBuffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_QUERY_BINDING, queryBuffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_RESULT_BINDING, resultBuffer.id());
   program.use();
   glUniform1i(0, int(queries.size()));
   glDispatchCompute(GLuint((queries.size() + 63) / 64), 1, 1);
