@@ -17,7 +17,19 @@
 #include "gl/gpu_layout_ssm.h"
 #include "gl/shader_program.h"
 #include "gl/tap_patterns.h"
+#include "shared/screen_pass_layout.h"
 #include "shared_inputs/light_input.h"
+
+// Bindings (shaders/shared/pcss_layout.h), within GL 4.5's minimums.
+static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, PCSS_PARAMS_BINDING},
+                                 gpu::kUniformBindings));
+static_assert(gpu::distinctBelow({PCSS_TAPS_BINDING}, gpu::kStorageBindings) &&
+              gpu::distinctBelow({DEPTH_BOUNDS_BINDING}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({PCSS_WS_POSITION_UNIT, PCSS_WS_NORMAL_UNIT, PCSS_NEAR_UNIT},
+                                 gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({PCSS_VISIBILITY_IMAGE, PCSS_SEARCH_RADIUS_IMAGE,
+                                  PCSS_BLOCKER_DEPTH_IMAGE, PCSS_FILTER_RADIUS_IMAGE},
+                                 gpu::kImageUnits));
 
 namespace {
 

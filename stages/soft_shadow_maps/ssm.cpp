@@ -15,7 +15,22 @@
 #include "core/frame.h"
 #include "gl/gpu_layout_ssm.h"
 #include "gl/shader_program.h"
+#include "shared/screen_pass_layout.h"
 #include "shared_inputs/light_input.h"
+
+// Each pass's bindings (shaders/shared/ssm_layout.h), within GL 4.5's minimums.
+static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, SSM_PARAMS_BINDING},
+                                 gpu::kUniformBindings));
+static_assert(gpu::distinctBelow({DEPTH_BOUNDS_BINDING, SSM_COUNTERS_BINDING}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({SSM_PATCHES_OCCLUDER_UNIT, SSM_PATCHES_RECEIVER_UNIT},
+                                 gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({SSM_PICKED_OCCLUDER_UNIT, SSM_PICKED_RECEIVER_UNIT,
+                                  SSM_PICKED_WS_POSITION_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({SSM_PROJECT_WS_POSITION_UNIT, SSM_PROJECT_RECEIVER_UNIT,
+                                  SSM_PROJECT_SOFT_SHADOW_MAP_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({SSM_PROJECT_VISIBILITY_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({DEPTH_BOUNDS_MAP_UNIT}, gpu::kTextureUnits) &&
+              gpu::distinctBelow({DEPTH_BOUNDS_EMPTY_LOCATION}, gpu::kUniformLocations));
 
 namespace {
 
