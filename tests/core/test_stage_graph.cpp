@@ -166,7 +166,8 @@ TEST(StageGraph, TheRegistryIsAValidGraphAndAlgorithmOneRunsInOrder) {
   EXPECT_LT(at("classify"), at("trace"));
   EXPECT_LT(at("trace"), at("filter"));
   EXPECT_LT(at("filter"), at("composite"));
-  EXPECT_EQ(pipeline.methods(), (std::vector<std::string>{"trace", "filter", "hard_shadow"}));
+  EXPECT_EQ(pipeline.methods(),
+            (std::vector<std::string>{"trace", "filter", "hard_shadow", "pcss", "ssm"}));
   EXPECT_EQ(pipeline.methods(kRoleGroundTruth), (std::vector<std::string>{"reference"}));
   const std::string dot = pipeline.dot();
   EXPECT_NE(dot.find("\"trace\" -> \"filter\" [label=\"visibility\"]"), std::string::npos) << dot;
