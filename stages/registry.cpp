@@ -16,8 +16,10 @@ std::unique_ptr<Stage> makeNBufferStage();
 std::unique_ptr<Stage> makeClassifyStage();
 std::unique_ptr<Stage> makeTraceStage();
 std::unique_ptr<Stage> makeFilterStage();
-// 3. Baselines.
+// 3. Baselines and the other methods.
 std::unique_ptr<Stage> makeHardShadowStage();
+std::unique_ptr<Stage> makePcssStage();
+std::unique_ptr<Stage> makeSoftShadowMapStage();
 // 4. 4D rasterization (Wang et al. 2020): a method, and a ground truth at its samples.
 std::unique_ptr<Stage> makeRaster4dStage();
 // 5. Ground truth and its comparison; 6. the image.
@@ -40,6 +42,8 @@ std::vector<StageEntry> makeRegistry() {
   add(makeTraceStage());                             // §3.1-3.7, Alg. 2
   add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2
   add(makeHardShadowStage());                        // §2.3
+  add(makePcssStage());                              // Fernando 2005
+  add(makeSoftShadowMapStage());                     // Atty et al. 2006 §3
   add(makeRaster4dStage());                          // Wang et al. 2020, Alg. 1-3
   add(makeReferenceStage());                         // ground truth (Embree)
   add(makeErrorStage());                             // Atty 2006 §4.2.1

@@ -326,16 +326,18 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
   std::map<std::string, PlotSpec> axisPlots;
   for (const BenchResult& r : results) {
     const BenchSetup& setup = setups[r.setup];
-    if (setup.axis.empty() || setup.axis == "map") continue;
+    if (setup.axis.empty()) continue;
+    const bool map = setup.axis == "map";  // Atty Fig. 17: error against the map's size
     PlotSpec& spec = axisPlots[setup.axis];
     spec.title = "Error against " + setup.axis + ": " + info.scene;
-    spec.xLabel = setup.axis + (setup.axis == "light_scale" ? " (x scene light)" : setup.axis == "lateral" ? " (light widths)" : " (0 receiver .. 1 light)");
+    spec.xLabel = setup.axis + (map ? " (texels per side)" : setup.axis == "light_scale" ? " (x scene light)" : setup.axis == "lateral" ? " (light widths)" : " (0 receiver .. 1 light)");
     spec.yLabel = "mean |visibility error| in shadow (Atty 2006)";
     spec.logX = false;
     spec.connectSeries = true;
     auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), r.family);
     if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(r.family); it = spec.seriesNames.end() - 1; }
-    spec.points.push_back({setup.axisValue, r.error.meanAbsInShadow, int(it - spec.seriesNames.begin()), r.label, false});
+    spec.points.push_back({map ? double(r.map) : setup.axisValue, r.error.meanAbsInShadow,
+                           int(it - spec.seriesNames.begin()), r.label, false});
   }
   for (const auto& [axis, spec] : axisPlots) {
     const std::string stem = "error_vs_" + fileSafe(axis);

@@ -71,3 +71,12 @@ void GpuScene::draw(bool includeReceivers, GLint colorLocation) const {
   }
   glBindVertexArray(0);
 }
+
+void GpuScene::drawReceivers() const {
+  for (const DrawItem& item : items_) {
+    if (!item.receiverOnly) continue;
+    glBindVertexArray(item.vertexArray);
+    glDrawElements(GL_TRIANGLES, item.indexCount, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+}

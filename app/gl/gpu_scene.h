@@ -23,6 +23,8 @@ public:
   // Vertex attributes: location 0 = wsPosition (vec3), location 1 = wsNormal (vec3).
   // Per draw the uniform at `colorLocation` (if >= 0) receives the base colour (vec3).
   void draw(bool includeReceivers, GLint colorLocation = -1) const;
+  // Only the receiver-only objects (soft shadow maps' receiver map, Atty et al. 2006 §3.1).
+  void drawReceivers() const;
   const std::vector<DrawItem>& items() const { return items_; }
 
 private:

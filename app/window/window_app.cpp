@@ -30,6 +30,7 @@
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/views/ui_texture_view.h"
+#include "window/views/ui_ssm_pick.h"
 #include "window/views/ui_trace_source.h"
 #include "window/views/ui_view_toolbar.h"
 
@@ -314,6 +315,7 @@ int runWindow(const WindowOptions& options) {
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
       recordPickedPixel(*state);
+      pickSoftShadowMapTexels(*state);
       state->runIfNeeded(glm::ivec2(state->views.panels[0].eyeRegion));
       // 7d. The UI.
       ImGui_ImplOpenGL3_NewFrame();

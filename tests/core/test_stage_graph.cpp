@@ -167,7 +167,7 @@ TEST(StageGraph, TheRegistryIsAValidGraphAndAlgorithmOneRunsInOrder) {
   EXPECT_LT(at("trace"), at("filter"));
   EXPECT_LT(at("filter"), at("composite"));
   EXPECT_EQ(pipeline.methods(),
-            (std::vector<std::string>{"trace", "filter", "hard_shadow", "raster4d"}));
+            (std::vector<std::string>{"trace", "filter", "hard_shadow", "pcss", "ssm", "raster4d"}));
   EXPECT_EQ(pipeline.methods(kRoleGroundTruth),
             (std::vector<std::string>{"raster4d", "reference"}));
   const std::string dot = pipeline.dot();

@@ -1,0 +1,9 @@
+// PCSS block (shaders/shared/pcss_layout.h) seen from C++, checked.
+#pragma once
+#include "gl/gpu_layout.h"
+
+namespace gpu {
+#include "shared/pcss_layout.h"
+}  // namespace gpu
+
+static_assert(offsetof(gpu::PcssParams, search) == 16 && sizeof(gpu::PcssParams) == 32);
