@@ -1,6 +1,7 @@
 #include "bench/bench_configs.h"
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
@@ -36,20 +37,6 @@ void chooseMethod(BenchConfig& config) {
   config.sets.push_back("error.method=" + config.method);
 }
 
-// A method without a list of its own: its declared defaults at shadow-map size `map`.
-BenchConfig withDefaults(const std::string& method, int map) {
-  BenchConfig config{method + " map " + std::to_string(map), method, method,
-                     {"light.resolution=" + std::to_string(map)}};
-  chooseMethod(config);
-  return config;
-}
-
-std::vector<BenchConfig> withDefaults(const std::vector<std::string>& methods, int map) {
-  std::vector<BenchConfig> configs;
-  for (const std::string& method : methods) configs.push_back(withDefaults(method, map));
-  return configs;
-}
-
 // The Monte Carlo method's lists: a filtered configuration measures `filter`, an
 // unfiltered one `trace` (the stages whose outputs carry the shadow-method role).
 const std::vector<std::string> kMonteCarloMethods = {"trace", "filter"};
@@ -80,6 +67,9 @@ BenchConfig monteCarlo(const std::string& search, int layers, int rays, int map 
 struct Methods {
   bool monteCarlo = false;
   std::vector<std::string> others;
+  // A stage that is off by default (its Bool parameter `enabled`, e.g. raster4d's, which
+  // costs seconds per frame on llvmpipe) is switched on where it is measured.
+  std::map<std::string, std::string> switchOn;
 };
 
 Methods methodsOf(const Pipeline& pipeline) {
@@ -91,8 +81,24 @@ Methods methodsOf(const Pipeline& pipeline) {
     const bool listed = std::find(kMonteCarloMethods.begin(), kMonteCarloMethods.end(), method) !=
                         kMonteCarloMethods.end();
     if (!(result.monteCarlo && listed)) result.others.push_back(method);
+    for (const Param& param : pipeline.stage(method).params())
+      if (param.key == "enabled" && param.type == Param::Type::Bool && !param.asBool())
+        result.switchOn[method] = method + ".enabled=true";
   }
   return result;
+}
+
+// A method without a list of its own: its declared defaults at shadow-map size `map`.
+std::vector<BenchConfig> withDefaults(const Methods& methods, int map) {
+  std::vector<BenchConfig> configs;
+  for (const std::string& method : methods.others) {
+    BenchConfig config{method + " map " + std::to_string(map), method, method,
+                       {"light.resolution=" + std::to_string(map)}};
+    if (methods.switchOn.count(method)) config.sets.push_back(methods.switchOn.at(method));
+    chooseMethod(config);
+    configs.push_back(config);
+  }
+  return configs;
 }
 
 void append(std::vector<BenchConfig>& to, std::vector<BenchConfig> more) {
@@ -100,7 +106,7 @@ void append(std::vector<BenchConfig>& to, std::vector<BenchConfig> more) {
 }
 
 std::vector<BenchConfig> defaultConfigs(const Methods& methods) {
-  std::vector<BenchConfig> configs = withDefaults(methods.others, 512);
+  std::vector<BenchConfig> configs = withDefaults(methods, 512);
   if (methods.monteCarlo) {
     for (int rays = 1; rays <= 4; ++rays) {
       configs.push_back(monteCarlo("linear", 2, rays));
@@ -112,12 +118,12 @@ std::vector<BenchConfig> defaultConfigs(const Methods& methods) {
     configs.push_back(monteCarlo("hierarchical", 2, 2, 512, false, true));
     for (int map : {128, 256, 1024}) configs.push_back(monteCarlo("hierarchical", 2, 2, map));
   }
-  for (int map : {128, 1024}) append(configs, withDefaults(methods.others, map));
+  for (int map : {128, 1024}) append(configs, withDefaults(methods, map));
   return configs;
 }
 
 std::vector<BenchConfig> minimalConfigs(const Methods& methods) {
-  std::vector<BenchConfig> configs = withDefaults(methods.others, 512);
+  std::vector<BenchConfig> configs = withDefaults(methods, 512);
   if (methods.monteCarlo) configs.push_back(monteCarlo("hierarchical", 2, 2));
   return configs;
 }
@@ -135,7 +141,7 @@ std::vector<BenchConfig> thesisRows(const Methods& methods, int map) {
 // depth layers, with the other methods (the hard shadow, ...) and three layers
 // (linear/binary) next to them.
 std::vector<BenchConfig> attyMethods(const Methods& methods, int map) {
-  std::vector<BenchConfig> configs = withDefaults(methods.others, map);
+  std::vector<BenchConfig> configs = withDefaults(methods, map);
   if (methods.monteCarlo)
     append(configs, {monteCarlo("hierarchical", 1, 2, map), monteCarlo("hierarchical", 2, 2, map),
                      monteCarlo("linear_binary", 3, 2, map)});
@@ -279,7 +285,7 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
   } else if (preset == "thesis-table-4.1") {
     if (w == 0) w = 512;
     if (h == 0) h = 384;
-    std::vector<BenchConfig> configs = withDefaults(methods.others, 512);
+    std::vector<BenchConfig> configs = withDefaults(methods, 512);
     for (int map : {256, 512, 1024}) append(configs, thesisRows(methods, map));
     setups.push_back(makeSetup(scene, w, h, configs));
     // Tables 4.3/4.4: 800x600 and 1280x1024 at the same scale (1024x768 is the main setup).

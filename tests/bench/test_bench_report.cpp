@@ -68,7 +68,9 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   EXPECT_NE(result.output.find("references: 1 to compute"), std::string::npos) << result.output;
   ASSERT_TRUE(std::filesystem::exists(out / "results.csv")) << result.output;
   const auto rows = readCsv(out / "results.csv");
-  ASSERT_EQ(rows.size(), 4u) << result.output;  // header + hard shadow + hierarchical x 2 rays
+  // header + every method but the Monte Carlo ones at its defaults + hierarchical x 2 rays
+  const size_t others = Pipeline{}.methods().size() - 2;
+  ASSERT_EQ(rows.size(), 1u + others + 2u) << result.output;
   EXPECT_EQ(rows[0], benchCsvColumns());
   const std::vector<std::string> numeric = {"ms_median", "ms_min", "ms_max", "shadow_map",
                                             "rmse", "max_error", "mean_abs_error_in_shadow",
@@ -85,8 +87,8 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   }
   EXPECT_EQ(rows[1][7], "hard_shadow");
   const size_t sets = size_t(std::find(rows[0].begin(), rows[0].end(), "sets") - rows[0].begin());
-  EXPECT_NE(rows[2][sets].find("trace.rays=1"), std::string::npos);  // the swept rows
-  EXPECT_NE(rows[3][sets].find("trace.rays=2"), std::string::npos);
+  EXPECT_NE(rows[1 + others][sets].find("trace.rays=1"), std::string::npos);  // the swept rows
+  EXPECT_NE(rows[2 + others][sets].find("trace.rays=2"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(out / "results.md"));
   for (const char* extension : {".png", ".svg", ".pdf"})
     EXPECT_TRUE(std::filesystem::exists(out / (std::string("speed_vs_error") + extension))) << extension;
@@ -113,7 +115,7 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
     EXPECT_GT(sum, 0) << r.label;
     EXPECT_TRUE(std::isfinite(r.error.meanAbsInShadow));
   }
-  EXPECT_EQ(results[2].params.at("trace.rays"), "2");
+  EXPECT_EQ(results[others + 1].params.at("trace.rays"), "2");
   EXPECT_EQ(results[0].params.count("trace.rays"), 0u);  // the hard shadow does not trace
   std::filesystem::remove_all(out);
   std::filesystem::remove_all(cache);
@@ -142,9 +144,10 @@ TEST(BenchReport, UnknownPresetAndBadSweepAreRefused) {
 TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   const Scene plate = makeBuiltinScene("plate");
   const Pipeline graph;
+  const size_t others = graph.methods().size() - 2;  // every method but trace and filter
   const auto thesis = makeBenchPlan(plate, {"thesis-table-4.1", {}, 0, 0}, graph);
   ASSERT_EQ(thesis.size(), 3u);  // map sweep at 512x384, then 400x300 and 640x512
-  EXPECT_EQ(thesis[0].configs.size(), 1u + 6u * 3u);
+  EXPECT_EQ(thesis[0].configs.size(), others + 6u * 3u);
   EXPECT_EQ(thesis[1].width, 400);
   EXPECT_EQ(thesis[2].height, 512);
   const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0}, graph);
@@ -152,7 +155,8 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light.resolution=128,256"}, 0, 0}, graph);
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_EQ(swept[1].width, 64);
-  EXPECT_EQ(swept[0].configs.size(), 4u);  // both methods use the shadow map
+  // Every method reads the light stage, so each is swept over both resolutions.
+  EXPECT_EQ(swept[0].configs.size(), 2u * (1u + others));
   EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}, graph), std::invalid_argument);
 }
 
