@@ -46,15 +46,28 @@ void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
     throw std::invalid_argument("buildMinMax: the atlas must be an RGBA32F 2D texture of " +
                                 std::to_string(atlasSize.x) + "x" + std::to_string(atlasSize.y) +
                                 " (minmaxAtlasSize)");
-  // Texels of the atlas outside every level stay (0, 0, 0, 0); nothing reads them.
+  // 1. Texels of the atlas outside every level are (0, 0, 0, 0); nothing reads them. Only
+  //    those are cleared (right of each level >= 1 in the right column, and below them).
+  const int top = minmaxTopLevel(width, height);
   const float zeros[4] = {0, 0, 0, 0};
-  glClearTexImage(atlas.id(), 0, GL_RGBA, GL_FLOAT, zeros);
+  for (int level = 1; level <= top + 1; ++level) {
+    const glm::ivec2 origin = minmaxLevelOrigin(level, width, height);
+    const glm::ivec2 size = level <= top ? minmaxLevelSize(level, width, height)
+                                         : glm::ivec2(0, atlasSize.y - origin.y);
+    if (origin.x + size.x < atlasSize.x && size.y > 0)
+      glClearTexSubImage(atlas.id(), 0, origin.x + size.x, origin.y, 0,
+                         atlasSize.x - origin.x - size.x, size.y, 1, GL_RGBA, GL_FLOAT, zeros);
+  }
+  if (height < atlasSize.y)  // below level 0 (maps much wider than tall)
+    glClearTexSubImage(atlas.id(), 0, 0, height, 0, width, atlasSize.y - height, 1, GL_RGBA,
+                       GL_FLOAT, zeros);
+  // 2. Levels 0 and 1 in one pass, then level n from level n-1.
   level_.use();
   glBindTextureUnit(MINMAX_NEAR_UNIT, nearLayer.id());
   glBindTextureUnit(MINMAX_FAR_UNIT, farLayer.id());
   glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUniform2i(MINMAX_SIZE_LOCATION, width, height);
-  for (int level = 0; level <= minmaxTopLevel(width, height); ++level) {
+  for (int level = std::min(top, 1); level <= top; ++level) {
     const glm::ivec2 size = minmaxLevelSize(level, width, height);
     glUniform1i(MINMAX_LEVEL_LOCATION, level);
     glDispatchCompute(GLuint(size.x + 7) / 8, GLuint(size.y + 7) / 8, 1);

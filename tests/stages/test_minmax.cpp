@@ -54,6 +54,7 @@ void checkEveryTexel(int width, int height, unsigned seed) {
   const std::vector<float> texels = atlas.readFloats();
   const int top = minmaxTopLevel(width, height);
   ASSERT_GE(1 << top, std::max(width, height));
+  std::vector<bool> covered(size_t(atlasSize.x) * atlasSize.y, false);
   for (int level = 0; level <= top; ++level) {
     const int span = 1 << level;
     const glm::ivec2 size = minmaxLevelSize(level, width, height), origin =
@@ -71,11 +72,17 @@ void checkEveryTexel(int width, int height, unsigned seed) {
             farMax = std::max(farMax, layers.farDepth[size_t(y) * width + x]);
           }
         const size_t at = (size_t(origin.y + cy) * atlasSize.x + origin.x + cx) * 4;
+        ASSERT_FALSE(covered[at / 4]) << "levels overlap at level " << level;
+        covered[at / 4] = true;
         ASSERT_EQ(texels[at + 0], nearMin) << "level " << level << " cell " << cx << "," << cy;
         ASSERT_EQ(texels[at + 1], nearMax) << "level " << level << " cell " << cx << "," << cy;
         ASSERT_EQ(texels[at + 2], farMax) << "level " << level << " cell " << cx << "," << cy;
       }
   }
+  // The rest of the atlas is cleared (no stale or uninitialized values in the view).
+  for (size_t i = 0; i < covered.size(); ++i)
+    if (!covered[i])
+      for (int c = 0; c < 4; ++c) ASSERT_EQ(texels[i * 4 + c], 0.0f) << "atlas texel " << i;
 }
 
 }  // namespace
