@@ -61,7 +61,9 @@ void checkEveryTexel(int width, int height, unsigned seed) {
         minmaxLevelOrigin(level, width, height);
     ASSERT_LE(origin.x + size.x, atlasSize.x);
     ASSERT_LE(origin.y + size.y, atlasSize.y);
-    if (level == top) ASSERT_EQ(size, glm::ivec2(1, 1));
+    if (level == top) {
+      ASSERT_EQ(size, glm::ivec2(1, 1));
+    }
     for (int cy = 0; cy < size.y; ++cy)
       for (int cx = 0; cx < size.x; ++cx) {
         float nearMin = 1e30f, nearMax = -1e30f, farMax = -1e30f;
@@ -81,8 +83,9 @@ void checkEveryTexel(int width, int height, unsigned seed) {
   }
   // The rest of the atlas is cleared (no stale or uninitialized values in the view).
   for (size_t i = 0; i < covered.size(); ++i)
-    if (!covered[i])
+    if (!covered[i]) {
       for (int c = 0; c < 4; ++c) ASSERT_EQ(texels[i * 4 + c], 0.0f) << "atlas texel " << i;
+    }
 }
 
 }  // namespace
@@ -100,13 +103,16 @@ TEST(MinMax, AtlasLayoutLevelsAreDisjointAndSmall) {
         const glm::ivec2 previous = minmaxLevelOrigin(level - 1, map.x, map.y);
         const glm::ivec2 origin = minmaxLevelOrigin(level, map.x, map.y);
         EXPECT_EQ(origin.x, map.x);
-        if (level >= 2)
+        if (level >= 2) {
           EXPECT_EQ(origin.y, previous.y + minmaxLevelSize(level - 1, map.x, map.y).y);
+        }
       }
     }
     const double levelTexels = double(map.x) * map.y;
     EXPECT_LE(double(used), 4.0 / 3.0 * levelTexels + 2 * (map.x + map.y) + 16) << map.x;
-    if (map.x >= 256) EXPECT_LE(double(atlas.x) * atlas.y, 1.5 * levelTexels) << map.x;
+    if (map.x >= 256) {
+      EXPECT_LE(double(atlas.x) * atlas.y, 1.5 * levelTexels) << map.x;
+    }
   }
 }
 
