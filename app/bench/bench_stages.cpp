@@ -187,7 +187,8 @@ int runBenchStages(const BenchStagesOptions& options) {
   table << "\n## Memory per stage output (" << sceneNames.front() << ", eye " << options.width
         << "x" << options.height << ", map " << options.mapSize
         << "^2; MiB from the formats and sizes)\n\n| output | size | MiB |\n|---|---|---|\n";
-  for (const auto& stage : Pipeline().stages())
+  const Pipeline graph;  // execution order
+  for (const auto& stage : graph.stages())
     for (const Output& output : stage->outputs()) {
       const auto it = memory.find(stage->name() + "." + output.name);
       if (it != memory.end())
