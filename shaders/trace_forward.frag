@@ -1,7 +1,7 @@
 // Stage `trace`, forward form (for the deferred-vs-forward comparison of thesis Table 4.1):
 // every rasterized fragment traces its rays, also those later hidden by nearer ones.
 // Without a G-buffer there is no classification and no eye layer (three layers act as
-// two); rays are shortened with the bounds of the whole map (the N-buffer's top level).
+// two); rays are shortened with the bounds of the whole map (the hierarchy's top level).
 #include "shared/trace_pixel.glsl"
 layout(location = 0) in vec3 wsPosition;
 layout(location = 1) in vec3 wsNormal;
@@ -14,7 +14,7 @@ void main() {
   vec3 n = normalize(wsNormal);
   if (!gl_FrontFacing) n = -n;
   int topLevel = trace.record.w;
-  vec4 whole = texelFetch(nbufferLevels, ivec3(0, 0, topLevel), 0);
+  vec4 whole = hierarchyTexel(ivec2(0), topLevel);  // either hierarchy's whole map
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
   float visibility = 1.0;
   vec3 map = lightMapCoords(wsPosition);

@@ -12,6 +12,7 @@ std::unique_ptr<Stage> makeHashStage();
 std::unique_ptr<Stage> makeHashStatsStage();
 std::unique_ptr<Stage> makeLightLayersStage();
 std::unique_ptr<Stage> makeNBufferStage();
+std::unique_ptr<Stage> makeMinMaxStage();
 // 2. Monte Carlo soft shadows (Curtis & Olano).
 std::unique_ptr<Stage> makeClassifyStage();
 std::unique_ptr<Stage> makeTraceStage();
@@ -38,7 +39,8 @@ std::vector<StageEntry> makeRegistry() {
   add(makeHashStatsStage());                         // §3.1, §4.3, App. A (issue 11)
   add(makeLightLayersStage());                       // §3.3
   add(makeNBufferStage());                           // §3.5
-  add(makeClassifyStage());                          // §3.6
+  add(makeMinMaxStage());                            // §5.1 (issue 14)
+  add(makeClassifyStage(), {{"levels", "nbuffer.levels"}});  // §3.6, Eq 3.3
   add(makeTraceStage());                             // §3.1-3.7, Alg. 2
   add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2
   add(makeHardShadowStage());                        // §2.3

@@ -90,6 +90,9 @@ int runBenchStages(const BenchStagesOptions& options) {
   };
   std::vector<Row> rows;
   std::vector<std::string> columns;
+  // Memory per stage output (issue 14): every output any row of the first scene wrote,
+  // MiB from its format and size, in execution order.
+  std::map<std::string, std::pair<std::string, double>> memory;  // output -> (shape, MiB)
   for (size_t sceneIndex = 0; sceneIndex < scenes.size(); ++sceneIndex) {
     const std::string& sceneName = sceneNames[sceneIndex];
     const Scene& scene = scenes[sceneIndex];
@@ -113,6 +116,15 @@ int runBenchStages(const BenchStagesOptions& options) {
       for (int i = 0; i < options.warmup + options.frames; ++i)
         timeFrame(pipeline, frame, timed, std::uint32_t(i), i < options.warmup ? nullptr : &times);
       summarize(times, timed);
+      for (const auto& stage : pipeline.stages())
+        for (const Output& output : stage->outputs()) {
+          const std::string key = stage->name() + "." + output.name;
+          if (sceneIndex != 0 || !frame.has(key)) continue;
+          const GlTexture& texture = frame.texture(key);
+          memory[key] = {std::to_string(texture.width()) + "x" + std::to_string(texture.height()) +
+                             (texture.isArray() ? "x" + std::to_string(texture.layers()) : ""),
+                         frame.megabytes(key)};
+        }
       for (const std::string& stage : pipeline.dependencies({pipeline.methodOutput(config.method)}))
         if (std::find(columns.begin(), columns.end(), stage) == columns.end()) columns.push_back(stage);
       const bool traced = std::find(timed.stages.begin(), timed.stages.end(), "trace") != timed.stages.end();
@@ -140,7 +152,7 @@ int runBenchStages(const BenchStagesOptions& options) {
         << (std::getenv("LP_NUM_THREADS") ? std::string(", LP_NUM_THREADS=") + std::getenv("LP_NUM_THREADS") : "")
         << ". Eye " << options.width << "x" << options.height << ", shadow map " << options.mapSize
         << "^2, median of " << options.frames << " frames after " << options.warmup
-        << " warm-up frames (glFinish + steady clock per stage). Each row runs only the stages "
+        << " warm-up frames (per stage: " << Pipeline().timingMethod() << "). Each row runs only the stages "
            "its method's visibility depends on (the stage graph); \"-\": not needed by that "
            "method. Produced by `penumbra bench-stages`.\n\n"
         << "| scene | configuration | ";
@@ -172,6 +184,17 @@ int runBenchStages(const BenchStagesOptions& options) {
   table << "\nfetches/ray counts every ray set up (early outs included); fetches/searched ray "
            "only rays that reached a search loop. Forward rows trace every rasterized "
            "fragment, so classification spares nothing there.\n";
+  table << "\n## Memory per stage output (" << sceneNames.front() << ", eye " << options.width
+        << "x" << options.height << ", map " << options.mapSize
+        << "^2; MiB from the formats and sizes)\n\n| output | size | MiB |\n|---|---|---|\n";
+  const Pipeline graph;  // execution order
+  for (const auto& stage : graph.stages())
+    for (const Output& output : stage->outputs()) {
+      const auto it = memory.find(stage->name() + "." + output.name);
+      if (it != memory.end())
+        table << "| " << it->first << " | " << it->second.first << " | "
+              << cell(it->second.second, "%.2f") << " |\n";
+    }
   const std::filesystem::path out(options.out);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   writeTextFile(out, table.str());

@@ -12,6 +12,7 @@
 
 #include "bench/bench_report.h"
 #include "bench/bench_raster4d.h"
+#include "bench/bench_hierarchy.h"
 #include "bench/bench_stages.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
@@ -162,6 +163,20 @@ int main(int argc, char** argv) {
   benchRaster4dCommand->add_option("--width", raster4dBench.width)->check(CLI::Range(16, 4096));
   benchRaster4dCommand->add_option("--height", raster4dBench.height)->check(CLI::Range(16, 4096));
 
+  BenchHierarchyOptions hierarchyBench;
+  CLI::App* benchHierarchyCommand = app.add_subcommand(
+      "bench-hierarchy", "N-buffer against min-max mipmap, back to back per map size: build "
+                         "time, memory, fetches per searched ray, trace time (issue 14)");
+  benchHierarchyCommand->add_option("--out", hierarchyBench.out, "Markdown file")->capture_default_str();
+  benchHierarchyCommand->add_option("--frames", hierarchyBench.frames, "timed frames per hierarchy")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  benchHierarchyCommand->add_option("--scene", hierarchyBench.scene)->capture_default_str();
+  benchHierarchyCommand->add_option("--maps", hierarchyBench.maps, "shadow-map sizes")
+      ->check(CLI::Range(128, 2048))->delimiter(',');
+  benchHierarchyCommand->add_option("--width", hierarchyBench.width)->check(CLI::Range(16, 4096));
+  benchHierarchyCommand->add_option("--height", hierarchyBench.height)->check(CLI::Range(16, 4096));
+  benchHierarchyCommand->add_option("--set", hierarchyBench.sets, "stage.key=value for both");
+
   BenchOptions report;
   CLI::App* benchCommand = app.add_subcommand(
       "bench", "speed against error: every configuration timed and compared with the exact "
@@ -210,6 +225,7 @@ int main(int argc, char** argv) {
     if (*traceCommand) return runTraceCommand(tracing);
     if (*benchStagesCommand) return runBenchStages(benching);
     if (*benchRaster4dCommand) return runBenchRaster4d(raster4dBench);
+    if (*benchHierarchyCommand) return runBenchHierarchy(hierarchyBench);
     if (*benchCommand) {
       for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
       return runBench(report);

@@ -57,6 +57,22 @@ bool Frame::connected(const Stage& stage, const std::string& slot) const {
   return !source.empty() && (textures.count(source) || buffers.count(source));
 }
 
+double Frame::megabytes(const std::string& stageDotOutput) const {
+  if (auto texture = textures.find(stageDotOutput); texture != textures.end())
+    return double(texture->second.bytes()) / (1024.0 * 1024.0);
+  auto buffer = buffers.find(stageDotOutput);
+  if (buffer == buffers.end() || !buffer->second) return 0;
+  GLint64 size = 0;
+  glGetNamedBufferParameteri64v(buffer->second->id(), GL_BUFFER_SIZE, &size);
+  return double(size) / (1024.0 * 1024.0);
+}
+
+double Frame::megabytes(const Stage& stage) const {
+  double total = 0;
+  for (const Output& output : stage.outputs()) total += megabytes(stage.name() + "." + output.name);
+  return total;
+}
+
 const GlTexture& Frame::texture(const std::string& stageDotOutput) const {
   auto found = textures.find(stageDotOutput);
   if (found == textures.end())

@@ -51,4 +51,9 @@ struct Frame {
   // An output by name, for views, export and tests; throws naming what is missing.
   const GlTexture& texture(const std::string& stageDotOutput) const;
   bool has(const std::string& stageDotOutput) const { return textures.count(stageDotOutput) > 0; }
+  // MiB of an output written this run (texture: from its format and size; buffer: its
+  // allocated size); 0 when not written.
+  double megabytes(const std::string& stageDotOutput) const;
+  // Sum over the outputs of `stage`.
+  double megabytes(const Stage& stage) const;
 };

@@ -332,6 +332,11 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
 
   prepareCamera(frame);
   frame.counters.clear();
+  const bool queries = timingMethod() == "GL_TIME_ELAPSED";
+  if (queries && queries_.empty()) {
+    queries_.resize(stages_.size());
+    glCreateQueries(GL_TIME_ELAPSED, GLsizei(queries_.size()), queries_.data());
+  }
   glFinish();
   for (size_t i = 0; i < stages_.size(); ++i) {
     Stage& stage = *stages_[i];
@@ -346,10 +351,18 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
       continue;
     }
     const auto start = std::chrono::steady_clock::now();
+    if (queries) glBeginQuery(GL_TIME_ELAPSED, queries_[i]);
     stage.run(frame);
-    glFinish();
-    const std::chrono::duration<double, std::milli> elapsed =
-        std::chrono::steady_clock::now() - start;
+    std::chrono::duration<double, std::milli> elapsed{};
+    if (queries) {
+      glEndQuery(GL_TIME_ELAPSED);
+      GLuint64 nanoseconds = 0;
+      glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &nanoseconds);
+      elapsed = std::chrono::nanoseconds(nanoseconds);
+    } else {
+      glFinish();
+      elapsed = std::chrono::steady_clock::now() - start;
+    }
     std::vector<double>& runs = series_[stage.name()];
     runs.push_back(elapsed.count());
     std::vector<double> sorted = runs;
@@ -357,6 +370,19 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
     time.ran = true, time.milliseconds = elapsed.count();
     time.median = sorted[sorted.size() / 2], time.runs = int(runs.size());
   }
+}
+
+std::string Pipeline::timingMethod() const {
+  Timing timing = timing_;
+  if (timing == Timing::Auto) {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    timing = renderer && !std::strstr(renderer, "llvmpipe") ? Timing::Queries : Timing::Finish;
+  }
+  return timing == Timing::Queries ? "GL_TIME_ELAPSED" : "glFinish + steady clock";
+}
+
+Pipeline::~Pipeline() {
+  if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
 }
 
 std::string Pipeline::dot() const {

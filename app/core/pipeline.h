@@ -64,12 +64,18 @@ public:
   std::vector<std::string> allOutputs() const;  // every texture output, "stage.output"
 
   // Runs the stages that `requested` depends on (all stages when empty), timing each with
-  // glFinish + steady clock (GL_TIME_ELAPSED is wrong on llvmpipe). The per-frame camera
-  // uniforms are filled first.
+  // GL_TIME_ELAPSED queries on a GPU, glFinish + steady clock on llvmpipe (where the queries
+  // are wrong): timing(). The per-frame camera uniforms are filled first.
   void run(Frame& frame, const std::vector<std::string>& requested = {});
   // One entry per stage in order; stages the last run skipped have ran == false.
   const std::vector<StageTime>& lastTimes() const { return times_; }
   const StageTime& lastTime(const std::string& stage) const;
+  // How stage times are taken: Auto picks Queries unless the renderer is llvmpipe.
+  enum class Timing { Auto, Finish, Queries };
+  void setTiming(Timing timing) { timing_ = timing; }
+  // "GL_TIME_ELAPSED" or "glFinish + steady clock" (after a context exists).
+  std::string timingMethod() const;
+  ~Pipeline();
 
   // Changes whenever any parameter changes (a fingerprint of every value): the window
   // re-runs when it differs from the revision of its last run.
@@ -92,6 +98,8 @@ private:
   std::vector<std::unique_ptr<Stage>> stages_;
   std::vector<Wire> wires_;
   std::vector<StageTime> times_;
+  Timing timing_ = Timing::Auto;
+  std::vector<GLuint> queries_;  // one GL_TIME_ELAPSED query per stage, made on first use
   std::string seriesKey_;
   std::map<std::string, std::vector<double>> series_;  // per stage, identical settings
 };

@@ -25,8 +25,12 @@ struct DisplayHint {
 
 // What an output is to the rest of the program. A *shadow method's visibility* is eye-sized,
 // GL_R32F, values in [0, 1]: composite, error, bench and the window list exactly these.
-// A *ground truth* is a visibility other methods are measured against.
-enum Role : unsigned { kRoleNone = 0, kRoleShadowMethod = 1, kRoleGroundTruth = 2 };
+// A *ground truth* is a visibility other methods are measured against. A *hierarchy* is
+// min/max light depths over regions of the light layers, RGBA32F (the trace's choice of
+// N-buffer or min-max mipmap).
+enum Role : unsigned {
+  kRoleNone = 0, kRoleShadowMethod = 1, kRoleGroundTruth = 2, kRoleHierarchy = 4
+};
 
 // Format of an output or input that is a storage buffer rather than a texture.
 constexpr GLenum kBufferFormat = GL_BUFFER;

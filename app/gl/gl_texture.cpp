@@ -73,6 +73,13 @@ int GlTexture::channelCount() const {
   }
 }
 
+size_t GlTexture::bytes() const {
+  int texelBytes = 4 * channelCount();  // 32-bit channels
+  if (format_ == GL_RGBA8 || format_ == GL_R8UI || format_ == GL_R8) texelBytes = channelCount();
+  if (format_ == GL_RGBA16F) texelBytes = 8;
+  return size_t(width_) * size_t(height_) * size_t(std::max(layers_, 1)) * size_t(texelBytes);
+}
+
 bool GlTexture::isInteger() const {
   return format_ == GL_R32UI || format_ == GL_RG32UI || format_ == GL_RGBA32UI ||
          format_ == GL_R8UI;

@@ -32,6 +32,9 @@ public:
   bool isArray() const { return layers_ > 0; }
   int channelCount() const;  // channels of the internal format (depth: 1)
   bool isInteger() const;    // R32UI and friends
+  // Bytes of its one mip level over every layer, from the internal format and the size
+  // (what the format needs; the driver may pad).
+  size_t bytes() const;
 
   // Reads layer `layer` as floats (integer formats converted), row 0 at the bottom (GL order).
   std::vector<float> readFloats(int layer = 0) const;

@@ -1,4 +1,5 @@
-// Hierarchical search through the N-buffer: thesis Algorithm 2 (§3.5).
+// Hierarchical search through the N-buffer: thesis Algorithm 2 (§3.5); or through the
+// min-max mipmap (issue 14), the same ascent and descent on quadtree-aligned cells.
 // State: the stepping s (the searched part of the ray is [sStart, s]), the texel `cell`
 // that contains P(s), and a level. Each iteration looks at the level's window that holds
 // `cell` and as much of the forward ray as possible, and asks whether the ray's depth over
@@ -11,9 +12,15 @@
 // `cell` advances by whole texels at window exits, so every iteration makes progress even
 // when s lands exactly on a texel boundary.
 
-// The window [lo, hi] per axis at `level` holding `cell`, extending in the ray's direction.
+// The window [lo, hi] per axis at `level` holding `cell`: N-buffer, extending in the ray's
+// direction; min-max mipmap, the aligned cell (texel cell >> level of that level).
 ivec4 forwardWindow(ivec2 cell, int level, vec2 direction, out ivec2 texel) {
   ivec2 size = ivec2(light.mapSize.xy);
+  if (trace.limits.z == HIERARCHY_MINMAX) {
+    texel = cell >> level;
+    ivec2 lo = texel << level;
+    return ivec4(lo, min(lo + (1 << level), size) - 1);
+  }
   int span = 1 << level;
   ivec4 window;
   for (int axis = 0; axis < 2; ++axis) {
@@ -57,7 +64,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
     gIterations += 1u;
     ivec2 texel;
     ivec4 window = forwardWindow(cell, level, ray.d, texel);
-    vec4 bounds = fetchNBuffer(texel, level);
+    vec4 bounds = fetchHierarchy(texel, level);
     if (layers == 1) bounds.z = 1.0;  // one layer: everything behind the near layer is solid
     bvec2 exitAxes;
     float sExit = min(windowExit(ray, window, exitAxes), sEnd);

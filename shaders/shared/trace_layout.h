@@ -14,6 +14,7 @@
 #define TRACE_LEVELS_UNIT 4
 #define TRACE_MASK_UNIT 5         // trace.comp
 #define TRACE_ZRANGE_UNIT 6
+#define TRACE_MINMAX_UNIT 7       // trace_ray.glsl: the min-max mipmap atlas (minmax.glsl)
 #define TRACE_VISIBILITY_IMAGE 0
 #define TRACE_COST_IMAGE 1
 #define TRACE_PIXELS_LOCATION 1   // which pixels (TRACE_PIXELS_*); ROW_OFFSET_LOCATION = 0
@@ -25,6 +26,10 @@
 #define SEARCH_LINEAR 0
 #define SEARCH_LINEAR_BINARY 1
 #define SEARCH_HIERARCHICAL 2
+
+// The hierarchy the searches and the region early out read (trace.limits.z).
+#define HIERARCHY_NBUFFER 0       // thesis §3.5: windows of 2^n around each texel
+#define HIERARCHY_MINMAX 1        // issue 14: quadtree-aligned cells (min-max mipmap)
 
 #define SAMPLING_JITTERED 0
 #define SAMPLING_RANDOM 1
@@ -58,11 +63,12 @@ struct TraceParams {
   ivec4 config;    // x = rays per side n, y = sampling, z = search, w = layers (1, 2, 3)
   ivec4 switches;  // x = early out backface, y = early out inside, z = early out region,
                    // w = shorten rays (§3.7)
-  ivec4 limits;    // x = iteration cap, y = binary refinement steps, z unused,
+  ivec4 limits;    // x = iteration cap, y = binary refinement steps, z = hierarchy
+                   // (HIERARCHY_*),
                    // w = use classification (skip lit / umbra pixels)
   vec4 stepping;   // x = linear step (texels), yzw unused (the bias group is light.bias)
   ivec4 record;    // xy = pixel whose steps are recorded (-1: none), z = record capacity,
-                   // w = N-buffer top level
+                   // w = the hierarchy's top level
   vec4 eye;        // x = eye-visibility tolerance (world units, three layers), yzw unused
 };
 

@@ -24,16 +24,27 @@ vec3 lightSampleWorld(vec2 unit) {
 }
 
 // Early out "the ray's region holds no occluder" (§3.7): one N-buffer fetch at the level
-// whose window covers the ray's whole projection.
+// whose window covers the ray's whole projection; with the min-max mipmap, the (at most
+// 2 x 2) aligned cells of the level whose cell size covers it.
 bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   vec2 p0 = rayPoint(ray, sStart), p1 = rayPoint(ray, sEnd);
   ivec2 lo = texelAt(min(p0, p1)), hi = texelAt(max(p0, p1));
   int span = max(hi.x - lo.x, hi.y - lo.y) + 1;
   int level = min(int(ceil(log2(float(span)))), trace.record.w);
   ivec2 size = ivec2(light.mapSize.xy);
-  ivec2 texel = ivec2(nbufferTexelForWindow(level, lo.x, size.x),
-                      nbufferTexelForWindow(level, lo.y, size.y));
-  vec4 bounds = fetchNBuffer(texel, level);
+  vec4 bounds;
+  if (trace.limits.z == HIERARCHY_MINMAX) {
+    ivec2 first = lo >> level, last = hi >> level;
+    bounds = vec4(1.0, 0.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
+    for (int y = first.y; y <= last.y; ++y)
+      for (int x = first.x; x <= last.x; ++x) {
+        vec4 b = fetchHierarchy(ivec2(x, y), level);
+        bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
+      }
+  } else {
+    bounds = fetchHierarchy(ivec2(nbufferTexelForWindow(level, lo.x, size.x),
+                                  nbufferTexelForWindow(level, lo.y, size.y)), level);
+  }
   float depthIn = rayLsDepth(ray, sStart), depthOut = rayLsDepth(ray, sEnd);
   float farBound = layers == 1 ? 1.0 : bounds.z;
   return depthOut < bounds.x || depthIn > farBound;

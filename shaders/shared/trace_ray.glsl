@@ -6,6 +6,7 @@
 // is computed exactly at any s (no world/texture stepping drift, cf. §3.5's remark).
 #include "frame.glsl"
 #include "nbuffer.glsl"
+#include "minmax.glsl"
 #include "trace_layout.h"
 
 layout(std140, binding = TRACE_PARAMS_BINDING) uniform TraceBlock { TraceParams trace; };
@@ -15,6 +16,7 @@ layout(std430, binding = TRACE_TOTALS_BINDING) buffer TraceTotals { uint totals[
 layout(binding = TRACE_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = TRACE_FAR_UNIT) uniform sampler2D farLayer;
 layout(binding = TRACE_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
+layout(binding = TRACE_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
 
 struct Ray {
   vec2 a, d;            // texel space start and direction (B - A)
@@ -88,7 +90,14 @@ vec2 fetchLayers(ivec2 texel) {
   gFetches += 2u;
   return vec2(texelFetch(nearLayer, texel, 0).r, texelFetch(farLayer, texel, 0).r);
 }
-vec4 fetchNBuffer(ivec2 texel, int level) {
-  gFetches += 1u;
+// One texel of the hierarchy (trace.limits.z): an N-buffer texel (nbuffer.glsl), or a
+// min-max mipmap texel in level coordinates (minmax.glsl).
+vec4 hierarchyTexel(ivec2 texel, int level) {
+  if (trace.limits.z == HIERARCHY_MINMAX)
+    return texelFetch(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel, 0);
   return texelFetch(nbufferLevels, ivec3(texel, level), 0);
+}
+vec4 fetchHierarchy(ivec2 texel, int level) {  // counted
+  gFetches += 1u;
+  return hierarchyTexel(texel, level);
 }

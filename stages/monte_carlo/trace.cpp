@@ -11,6 +11,7 @@ namespace gpu {
 #include "shared/classify_layout.h"
 #include "shared/screen_pass_layout.h"
 }  // namespace gpu
+#include "gl/minmax_build.h"
 #include "gl/shader_program.h"
 
 // The option index of trace.search and trace.sampling is the GLSL enum (trace_layout.h), and
@@ -19,6 +20,16 @@ static_assert(SEARCH_LINEAR == 0 && SEARCH_LINEAR_BINARY == 1 && SEARCH_HIERARCH
 static_assert(SAMPLING_JITTERED == 0 && SAMPLING_RANDOM == 1);
 
 namespace {
+
+// The hierarchy Algorithm 2 and the region early out (§3.7) search: a choice among the
+// stages whose output has the hierarchy role (nbuffer, minmax), by trace.hierarchy.
+Input hierarchyInput() {
+  Input input = Input::choice("levels", "Hierarchy of occluder depth bounds (Algorithm 2, "
+                              "early out of §3.7): N-buffer or min-max mipmap.",
+                              kRoleHierarchy, "hierarchy", "nbuffer", /*allowNone=*/false);
+  input.format = GL_RGBA32F;
+  return input;
+}
 
 class TraceStage final : public Stage {
 public:
@@ -29,7 +40,7 @@ public:
                        GL_RGBA32F),
         Input::texture("near", "Near layer (§3.2).", GL_DEPTH_COMPONENT32F),
         Input::texture("far", "Far layer (§3.3).", GL_DEPTH_COMPONENT32F),
-        Input::texture("levels", "N-buffer (Algorithm 2, early out of §3.7).", GL_RGBA32F),
+        hierarchyInput(),
         Input::texture("mask", "Classes of §3.6 (lit and umbra pixels are not traced).", GL_R32F),
         Input::texture("zRange", "Occluder depth bounds per pixel (ray shortening, §3.7).",
                        GL_RGBA32F),
@@ -53,8 +64,13 @@ public:
                       {"jittered", "random"}, 0),
         Param::choice("search", "How a ray is traced: linear (fixed step), linear_binary "
                                 "(binary refinement on suspicious transitions, §3.3) or "
-                                "hierarchical (Algorithm 2 over the N-buffer, §3.5).",
+                                "hierarchical (Algorithm 2 over trace.hierarchy, §3.5).",
                       {"linear", "linear_binary", "hierarchical"}, 2),
+        Param::choice("hierarchy", "What the hierarchical search and the region early out "
+                                   "read: nbuffer (windows of 2^n around every texel, §3.5) "
+                                   "or minmax (a min-max mipmap, quadtree-aligned cells, 4/3 "
+                                   "of one level's memory; issue 14).",
+                      {}, 0),  // options: the stages with the hierarchy role (Pipeline fills them)
         Param::real("linear_step", "Step of the linear search, in shadow-map texels.", 1.0,
                     0.25, 16),
         Param::integer("binary_steps", "Bisections per suspicious transition (linear_binary).",
@@ -63,9 +79,9 @@ public:
                                              "blocks the ray without tracing (§3.7).", true),
         Param::boolean("early_out_inside", "An end point inside a solid blocks the ray after one "
                                            "fetch (§3.7).", true),
-        Param::boolean("early_out_region", "One N-buffer fetch over the ray's projection; if it "
-                                           "holds no occluder at the ray's depths, the ray is "
-                                           "free (§3.7).", true),
+        Param::boolean("early_out_region", "One N-buffer fetch (min-max mipmap: up to 2 x 2) "
+                                           "over the ray's projection; if it holds no occluder "
+                                           "at the ray's depths, the ray is free (§3.7).", true),
         Param::boolean("shorten_rays", "Clip each ray to the depths [zNearMin, zFarMax] that "
                                        "classification found for its pixel (§3.7, Fig 3.9).",
                        true),
@@ -96,6 +112,7 @@ public:
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
     GlTexture& cost = frame.output(*this, "cost", w, h);
     const GlTexture& levels = frame.input(*this, "levels");
+    const GlTexture& nearLayer = frame.input(*this, "near");
 
     // 1. Parameters -> the std140 block (shaders/shared/trace_layout.h).
     gpu::TraceParams params{};
@@ -105,11 +122,14 @@ public:
                      frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
                        param("early_out_region").asBool(), param("shorten_rays").asBool()};
-    params.limits = {param("max_iterations").asInt(), param("binary_steps").asInt(), 0,
+    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
+    params.limits = {param("max_iterations").asInt(), param("binary_steps").asInt(),
+                     minmax ? HIERARCHY_MINMAX : HIERARCHY_NBUFFER,
                      param("use_classification").asBool()};
     params.stepping = {param("linear_step").asFloat(), 0, 0, 0};
     params.record = {param("record_x").asInt(), recordY < 0 ? -1 : h - 1 - recordY,
-                     kRecordCapacity, levels.layers() - 1};
+                     kRecordCapacity,
+                     minmax ? minmaxTopLevel(nearLayer.width(), nearLayer.height()) : levels.layers() - 1};
     params.eye = {param("eye_tolerance").asFloat(), 0, 0, 0};
     paramsBuffer_.upload(&params, sizeof params);
     glBindBufferBase(GL_UNIFORM_BUFFER, binding::kTraceParams, paramsBuffer_.id());
@@ -132,9 +152,9 @@ public:
     // 3. Inputs.
     glBindTextureUnit(TRACE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(TRACE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(TRACE_NEAR_UNIT, frame.input(*this, "near").id());
+    glBindTextureUnit(TRACE_NEAR_UNIT, nearLayer.id());
     glBindTextureUnit(TRACE_FAR_UNIT, frame.input(*this, "far").id());
-    glBindTextureUnit(TRACE_LEVELS_UNIT, levels.id());
+    glBindTextureUnit(minmax ? TRACE_MINMAX_UNIT : TRACE_LEVELS_UNIT, levels.id());
     glBindTextureUnit(TRACE_MASK_UNIT, frame.input(*this, "mask").id());
     glBindTextureUnit(TRACE_ZRANGE_UNIT, frame.input(*this, "zRange").id());
 

@@ -18,7 +18,8 @@ public:
                  "around each texel (x: min near, y: max near, z: max far).",
                  GL_RGBA32F,
                  {"zNearMin", "zNearMax", "zFarMax", "unused"},
-                 {0, 0, 1, Colormap::Gray}}};
+                 {0, 0, 1, Colormap::Gray},
+                 kRoleHierarchy}};
   }
   std::string name() const override { return "nbuffer"; }
   std::string summary() const override {

@@ -85,9 +85,11 @@ struct Agreement {
   double fetches = 0;
 };
 
-Agreement compare(const RaySet& set, int search, int layers, float linearStep, bool print) {
+Agreement compare(const RaySet& set, int search, int layers, float linearStep, bool print,
+                  int hierarchy = HIERARCHY_NBUFFER) {
   RayQueryRunner runner(set.maps.width, set.maps.height, set.maps.nearLayer, set.maps.farLayer,
                         set.zNear, set.zFar);
+  runner.useHierarchy(hierarchy);
   std::vector<gpu::RayQuery> queries;
   for (const OracleRay& ray : set.rays) queries.push_back(toQuery(ray));
   const auto outcomes = runner.run(queries, search, layers, linearStep);
@@ -125,17 +127,30 @@ std::vector<RaySet> allRaySets() {
 
 // Thesis §3.5: the hierarchical search is exact (it "eliminates aliasing"): it must agree
 // with the exact traversal on >= 99.99% of >= 100,000 rays; every disagreement is printed.
-TEST(TraceOracle, HierarchicalSearchAgreesWithExactTraversal) {
+// The same for Algorithm 2 on the min-max mipmap's aligned cells (issue 14), one and two
+// layers, with the fetches per ray of both hierarchies written down side by side.
+void expectExact(int hierarchy, int layers) {
+  const char* name = hierarchy == HIERARCHY_MINMAX ? "minmax" : "nbuffer";
   int rays = 0, agree = 0;
   for (const RaySet& set : allRaySets()) {
-    const Agreement result = compare(set, SEARCH_HIERARCHICAL, 2, 1.0f, /*print=*/true);
-    std::printf("hierarchical, %s: %d / %d agree, %.2f fetches per ray\n", set.name.c_str(),
-                result.agree, result.rays, result.fetches / result.rays);
+    const Agreement result = compare(set, SEARCH_HIERARCHICAL, layers, 1.0f, /*print=*/true,
+                                     hierarchy);
+    std::printf("hierarchical (%s, %d layers), %s: %d / %d agree, %.2f fetches per ray\n",
+                name, layers, set.name.c_str(), result.agree, result.rays,
+                result.fetches / result.rays);
     rays += result.rays;
     agree += result.agree;
   }
   EXPECT_GE(rays, 100000);
-  EXPECT_GE(double(agree), 0.9999 * rays) << rays - agree << " disagreements";
+  EXPECT_GE(double(agree), 0.9999 * rays) << name << ": " << rays - agree << " disagreements";
+}
+
+TEST(TraceOracle, HierarchicalSearchAgreesWithExactTraversal) {
+  expectExact(HIERARCHY_NBUFFER, 2);
+}
+TEST(TraceOracle, HierarchicalSearchOnMinMaxMipmapAgreesWithExactTraversal) {
+  expectExact(HIERARCHY_MINMAX, 2);
+  expectExact(HIERARCHY_MINMAX, 1);
 }
 
 // Linear search samples the ray, so it misses thin features (§2.2); binary refinement on

@@ -1,6 +1,7 @@
 #include "ray_query.h"
 
 #include "gl_test.h"
+#include "gl/minmax_build.h"
 #include "gl/nbuffer_build.h"
 #include "gl/shader_program.h"
 
@@ -16,6 +17,9 @@ RayQueryRunner::RayQueryRunner(int width, int height, const std::vector<float>& 
                       farLayer.data());
   levels_ = GlTexture(GL_RGBA32F, width, height, nbufferLevelCount(width, height));
   buildNBuffer(near_, far_, levels_);
+  const glm::ivec2 atlas = minmaxAtlasSize(width, height);
+  minmax_ = GlTexture(GL_RGBA32F, atlas.x, atlas.y);
+  buildMinMax(near_, far_, minmax_);
 }
 
 std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery>& queries,
@@ -28,9 +32,11 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   light.bias = {0, 0, 0.1f, 0};
   gpu::TraceParams trace{};
   trace.config = {1, 0, search, layers};
-  trace.limits = {maxIterations, binarySteps, 0, 0};
+  trace.limits = {maxIterations, binarySteps, hierarchy_, 0};
   trace.stepping = {linearStep, 0, 0, 0};
-  trace.record = {-1, -1, 0, levels_.layers() - 1};
+  trace.record = {-1, -1, 0,
+                  hierarchy_ == HIERARCHY_MINMAX ? minmaxTopLevel(width_, height_)
+                                                 : levels_.layers() - 1};
   GlBuffer lightBuffer, traceBuffer, records, totals, queryBuffer, resultBuffer;
   lightBuffer.upload(&light, sizeof light);
   traceBuffer.upload(&trace, sizeof trace);
@@ -49,6 +55,7 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   glBindTextureUnit(TRACE_NEAR_UNIT, near_.id());
   glBindTextureUnit(TRACE_FAR_UNIT, far_.id());
   glBindTextureUnit(TRACE_LEVELS_UNIT, levels_.id());
+  glBindTextureUnit(TRACE_MINMAX_UNIT, minmax_.id());
   program.use();
   glUniform1i(0, int(queries.size()));
   glDispatchCompute(GLuint((queries.size() + 63) / 64), 1, 1);

@@ -24,9 +24,12 @@ public:
                                    int layers, float linearStep = 1.0f, int binarySteps = 6,
                                    int maxIterations = 4096);
   int levelCount() const { return levels_.layers(); }
+  // Which hierarchy the searches read (HIERARCHY_*; both are built): N-buffer by default.
+  void useHierarchy(int hierarchy) { hierarchy_ = hierarchy; }
 
 private:
   int width_, height_;
   float zNear_, zFar_;
-  GlTexture near_, far_, levels_;
+  int hierarchy_ = HIERARCHY_NBUFFER;
+  GlTexture near_, far_, levels_, minmax_;
 };

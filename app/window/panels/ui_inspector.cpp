@@ -98,8 +98,9 @@ void drawTimings(const UiState& state) {
   }
   const double total = state.session.medianPipelineMs();
   ImGui::Text("pipeline %.1f ms (%.1f runs/s)", total, total > 0 ? 1000.0 / total : 0.0);
-  ImGui::TextDisabled("median of %d run(s) with these settings;\nlast run %.1f ms; glFinish timing",
-                      state.session.medianRuns(), state.session.lastPipelineMs());
+  ImGui::TextDisabled("median of %d run(s) with these settings;\nlast run %.1f ms; %s timing",
+                      state.session.medianRuns(), state.session.lastPipelineMs(),
+                      state.session.pipeline.timingMethod().c_str());
 }
 
 // 3. Counters the stages reported this frame.

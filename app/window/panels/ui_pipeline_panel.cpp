@@ -13,7 +13,7 @@
 
 namespace {
 
-// 1. An output line: selectable, marked with the view(s) showing it, format and size.
+// 1. An output line: selectable, marked with the view(s) showing it, format, size and MiB.
 void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   const std::string key = stage.name() + "." + output.name;
   std::string shownIn;
@@ -22,9 +22,10 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   std::string size = state.session.pipeline.lastTime(stage.name()).ran ? "not written" : "not run";
   if (state.session.frame && state.session.frame->has(key)) {
     const GlTexture& texture = state.session.frame->texture(key);
-    char text[64];
-    std::snprintf(text, sizeof text, "%dx%d%s", texture.width(), texture.height(),
-                  texture.isArray() ? (" x" + std::to_string(texture.layers())).c_str() : "");
+    char text[96];
+    std::snprintf(text, sizeof text, "%dx%d%s %.1f MiB", texture.width(), texture.height(),
+                  texture.isArray() ? (" x" + std::to_string(texture.layers())).c_str() : "",
+                  state.session.frame->megabytes(key));
     size = text;
   }
   const std::string label = "  " + output.name + "  " + shownIn + "###" + key;
@@ -39,7 +40,7 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\n%s, %s\nclick: show in the active view; Ctrl+click: the other view",
                       output.doc.c_str(), formatName(output.format), size.c_str());
-  ImGui::SameLine(ImGui::GetContentRegionMax().x - 110);
+  ImGui::SameLine(ImGui::GetContentRegionMax().x - 170);
   ImGui::TextDisabled("%s %s", formatName(output.format), size.c_str());
 }
 
@@ -97,7 +98,10 @@ void drawStage(UiState& state, Stage& stage, int number) {
   ImGui::SameLine(ImGui::GetContentRegionMax().x - 64);
   if (time.ran) ImGui::Text("%6.1f ms", time.median);
   else ImGui::TextDisabled(" not run");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timingText(time).c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s\ntimed with %s; outputs: %.1f MiB", timingText(time).c_str(),
+                      state.session.pipeline.timingMethod().c_str(),
+                      state.session.frame ? state.session.frame->megabytes(stage) : 0.0);
   if (!open) return;
   ImGui::PushID(stage.name().c_str());
   ImGui::PushTextWrapPos(0);

@@ -1,0 +1,18 @@
+// `penumbra bench-hierarchy` (issue 14): the N-buffer against the min-max mipmap, back to
+// back in one run (frames alternate between the two), per map size: hierarchy build time,
+// memory, fetches per searched ray, trace time, and whether the visibilities agree.
+// A benchmark program: it writes numbers, asserts nothing.
+#pragma once
+#include <string>
+#include <vector>
+
+struct BenchHierarchyOptions {
+  std::string out = "bench/minmax.md";
+  int frames = 6, warmup = 1;
+  int width = 640, height = 480;
+  std::string scene = "cube";
+  std::vector<int> maps = {512, 1024, 2048};
+  std::vector<std::string> sets;  // applied to both hierarchies
+};
+
+int runBenchHierarchy(const BenchHierarchyOptions& options);

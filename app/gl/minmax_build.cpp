@@ -1,0 +1,82 @@
+#include "gl/minmax_build.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "gl/gpu_layout.h"
+#include "shared/minmax_layout.h"
+
+static_assert(gpu::distinctBelow({MINMAX_NEAR_UNIT, MINMAX_FAR_UNIT}, gpu::kTextureUnits));
+static_assert(MINMAX_ATLAS_IMAGE < gpu::kImageUnits);
+
+int minmaxTopLevel(int width, int height) {
+  int top = 0;
+  while ((1 << top) < std::max(width, height)) ++top;
+  return top;
+}
+
+glm::ivec2 minmaxLevelSize(int level, int width, int height) {
+  return {(width + (1 << level) - 1) >> level, (height + (1 << level) - 1) >> level};
+}
+
+glm::ivec2 minmaxLevelOrigin(int level, int width, int height) {
+  if (level == 0) return {0, 0};
+  int y = 0;  // levels 1 .. level-1 stacked (the GLSL has the closed form)
+  for (int finer = 1; finer < level; ++finer) y += minmaxLevelSize(finer, width, height).y;
+  return {width, y};
+}
+
+glm::ivec2 minmaxAtlasSize(int width, int height) {
+  const int top = minmaxTopLevel(width, height);
+  const int stacked = top >= 1 ? minmaxLevelOrigin(top + 1, width, height).y : 0;
+  return {width + (top >= 1 ? (width + 1) / 2 : 0), std::max(height, stacked)};
+}
+
+void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
+                          GlTexture& atlas) {
+  const int width = nearLayer.width(), height = nearLayer.height();
+  if (width < 1 || height < 1 || farLayer.width() != width || farLayer.height() != height ||
+      nearLayer.isArray() || farLayer.isArray())
+    throw std::invalid_argument("buildMinMax: near and far layers must be 2D textures of the "
+                                "same size >= 1x1");
+  const glm::ivec2 atlasSize = minmaxAtlasSize(width, height);
+  if (atlas.internalFormat() != GL_RGBA32F || atlas.isArray() || atlas.width() != atlasSize.x ||
+      atlas.height() != atlasSize.y)
+    throw std::invalid_argument("buildMinMax: the atlas must be an RGBA32F 2D texture of " +
+                                std::to_string(atlasSize.x) + "x" + std::to_string(atlasSize.y) +
+                                " (minmaxAtlasSize)");
+  // 1. Texels of the atlas outside every level are (0, 0, 0, 0); nothing reads them. Only
+  //    those are cleared (right of each level >= 1 in the right column, and below them).
+  const int top = minmaxTopLevel(width, height);
+  const float zeros[4] = {0, 0, 0, 0};
+  for (int level = 1; level <= top + 1; ++level) {
+    const glm::ivec2 origin = minmaxLevelOrigin(level, width, height);
+    const glm::ivec2 size = level <= top ? minmaxLevelSize(level, width, height)
+                                         : glm::ivec2(0, atlasSize.y - origin.y);
+    if (origin.x + size.x < atlasSize.x && size.y > 0)
+      glClearTexSubImage(atlas.id(), 0, origin.x + size.x, origin.y, 0,
+                         atlasSize.x - origin.x - size.x, size.y, 1, GL_RGBA, GL_FLOAT, zeros);
+  }
+  if (height < atlasSize.y)  // below level 0 (maps much wider than tall)
+    glClearTexSubImage(atlas.id(), 0, 0, height, 0, width, atlasSize.y - height, 1, GL_RGBA,
+                       GL_FLOAT, zeros);
+  // 2. Levels 0 and 1 in one pass, then level n from level n-1.
+  level_.use();
+  glBindTextureUnit(MINMAX_NEAR_UNIT, nearLayer.id());
+  glBindTextureUnit(MINMAX_FAR_UNIT, farLayer.id());
+  glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glUniform2i(MINMAX_SIZE_LOCATION, width, height);
+  for (int level = std::min(top, 1); level <= top; ++level) {
+    const glm::ivec2 size = minmaxLevelSize(level, width, height);
+    glUniform1i(MINMAX_LEVEL_LOCATION, level);
+    glDispatchCompute(GLuint(size.x + 7) / 8, GLuint(size.y + 7) / 8, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+void buildMinMax(const GlTexture& nearLayer, const GlTexture& farLayer, GlTexture& atlas) {
+  static MinMaxBuilder* builder = new MinMaxBuilder;  // never deleted: see the header
+  builder->build(nearLayer, farLayer, atlas);
+}

@@ -1,0 +1,23 @@
+// The min-max mipmap (issue 14; thesis §5.1's "more conventional image pyramids", the
+// "maximum mipmaps" of Tevs et al. 2008): a quadtree over the light layers.
+//
+// Level n has ceil(W / 2^n) x ceil(H / 2^n) texels; texel c of level n holds
+// (zNearMin, zNearMax, zFarMax, 0) over the quadtree-aligned cell of level-0 texels
+// [c * 2^n, min((c + 1) * 2^n, size) - 1] per axis, built from its (up to) 2 x 2 children
+// in level n-1 (at the borders of odd sizes, only the children that exist). Top level:
+// ceil(log2(max(W, H))), one texel over the whole map.
+//
+// Storage: one RGBA32F 2D texture, an atlas (C++: app/gl/minmax_build.h): level 0 at
+// (0, 0); level n >= 1 at x = W, y = the heights of levels 1 .. n-1 stacked. The atlas is
+// (W + ceil(W/2)) x max(H, sum of those heights) texels; the levels use 4/3 of one level.
+
+// Texels of level `level` along an axis of `size` level-0 texels.
+int minmaxLevelSize(int level, int size) { return (size + (1 << level) - 1) >> level; }
+
+// Atlas origin of level `level`. The stacked heights sum_{j=1}^{n-1} ceil(H / 2^j) in closed
+// form: ceil(H / 2^j) = floor((H - 1) / 2^j) + 1, and sum_{j>=1} floor(m / 2^j) = m - bitCount(m).
+ivec2 minmaxLevelOrigin(int level, ivec2 size) {
+  if (level == 0) return ivec2(0);
+  int m = size.y - 1, tail = m >> (level - 1);
+  return ivec2(size.x, (m - bitCount(m)) - (tail - bitCount(tail)) + level - 1);
+}

@@ -1,0 +1,49 @@
+// Stage `minmax` (issue 14): the min-max mipmap over the light layers, the conventional
+// image pyramid of thesis §5.1's future work ("maximum mipmaps", Tevs et al. 2008). Each
+// texel holds (zNearMin, zNearMax, zFarMax) over a quadtree-aligned cell, from its 2 x 2
+// children: 4/3 of one level's memory where the N-buffer (§3.5) keeps log2(W) + 1 levels.
+// Layout: shaders/shared/minmax.glsl. The trace searches it when trace.hierarchy = minmax.
+#include "core/frame.h"
+#include "gl/minmax_build.h"
+
+namespace {
+
+class MinMaxStage final : public Stage {
+public:
+  MinMaxStage() {
+    inputs_ = {
+        Input::texture("near", "Near layer: zNearMin and zNearMax.", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer: zFarMax.", GL_DEPTH_COMPONENT32F),
+    };
+    outputs_ = {{"levels",
+                 "Min-max mipmap, every level in one atlas: level 0 at the left, level n >= 1 "
+                 "stacked on the right; a level-n texel holds min/max light depths over an "
+                 "aligned 2^n x 2^n cell (x: min near, y: max near, z: max far).",
+                 GL_RGBA32F,
+                 {"zNearMin", "zNearMax", "zFarMax", "unused"},
+                 {0, 0, 1, Colormap::Gray},
+                 kRoleHierarchy}};
+  }
+  std::string name() const override { return "minmax"; }
+  std::string summary() const override {
+    return "Min/max occluder depths over a quadtree of the light layers (a min-max mipmap), "
+           "a smaller alternative to the N-buffer.";
+  }
+  std::string thesisSection() const override { return "5.1"; }
+
+  void run(Frame& frame) override {
+    const GlTexture& nearLayer = frame.input(*this, "near");
+    const GlTexture& farLayer = frame.input(*this, "far");
+    const glm::ivec2 atlasSize = minmaxAtlasSize(nearLayer.width(), nearLayer.height());
+    GlTexture& atlas = frame.output(*this, "levels", atlasSize.x, atlasSize.y);
+    builder_.build(nearLayer, farLayer, atlas);
+    frame.counters["minmax.levels"] = minmaxTopLevel(nearLayer.width(), nearLayer.height()) + 1;
+  }
+
+private:
+  MinMaxBuilder builder_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stage> makeMinMaxStage() { return std::make_unique<MinMaxStage>(); }

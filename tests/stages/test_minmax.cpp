@@ -1,0 +1,152 @@
+// Oracle for the min-max mipmap (issue 14; layout in shaders/shared/minmax.glsl): every
+// texel of every level equals the brute-force min/max over its aligned cell of level-0
+// texels, computed on the CPU from the cell definition alone (never from the 2 x 2
+// recurrence the shader uses), and the atlas places the levels where the layout says.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "gl/minmax_build.h"
+#include "scene/scene_builtin.h"
+#include "support/gl_test.h"
+
+namespace {
+
+struct Layers {
+  int width, height;
+  std::vector<float> nearDepth, farDepth;
+};
+
+// Random layers: empty texels (near 1, far 0), ordinary ones and some with near > far.
+Layers randomLayers(int width, int height, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  Layers layers{width, height, {}, {}};
+  for (int i = 0; i < width * height; ++i) {
+    const float kind = unit(random);
+    float a = unit(random), b = unit(random);
+    if (kind < 0.25f) { a = 1.0f; b = 0.0f; }
+    else if (kind < 0.35f) { if (a < b) std::swap(a, b); }
+    else if (a > b) std::swap(a, b);
+    layers.nearDepth.push_back(a);
+    layers.farDepth.push_back(b);
+  }
+  return layers;
+}
+
+GlTexture uploadDepth(const std::vector<float>& values, int width, int height) {
+  GlTexture texture(GL_DEPTH_COMPONENT32F, width, height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      values.data());
+  return texture;
+}
+
+void checkEveryTexel(int width, int height, unsigned seed) {
+  headlessContext();
+  const Layers layers = randomLayers(width, height, seed);
+  const GlTexture nearLayer = uploadDepth(layers.nearDepth, width, height);
+  const GlTexture farLayer = uploadDepth(layers.farDepth, width, height);
+  const glm::ivec2 atlasSize = minmaxAtlasSize(width, height);
+  GlTexture atlas(GL_RGBA32F, atlasSize.x, atlasSize.y);
+  buildMinMax(nearLayer, farLayer, atlas);
+  const std::vector<float> texels = atlas.readFloats();
+  const int top = minmaxTopLevel(width, height);
+  ASSERT_GE(1 << top, std::max(width, height));
+  std::vector<bool> covered(size_t(atlasSize.x) * atlasSize.y, false);
+  for (int level = 0; level <= top; ++level) {
+    const int span = 1 << level;
+    const glm::ivec2 size = minmaxLevelSize(level, width, height), origin =
+        minmaxLevelOrigin(level, width, height);
+    ASSERT_LE(origin.x + size.x, atlasSize.x);
+    ASSERT_LE(origin.y + size.y, atlasSize.y);
+    if (level == top) {
+      ASSERT_EQ(size, glm::ivec2(1, 1));
+    }
+    for (int cy = 0; cy < size.y; ++cy)
+      for (int cx = 0; cx < size.x; ++cx) {
+        float nearMin = 1e30f, nearMax = -1e30f, farMax = -1e30f;
+        for (int y = cy * span; y < std::min((cy + 1) * span, height); ++y)
+          for (int x = cx * span; x < std::min((cx + 1) * span, width); ++x) {
+            nearMin = std::min(nearMin, layers.nearDepth[size_t(y) * width + x]);
+            nearMax = std::max(nearMax, layers.nearDepth[size_t(y) * width + x]);
+            farMax = std::max(farMax, layers.farDepth[size_t(y) * width + x]);
+          }
+        const size_t at = (size_t(origin.y + cy) * atlasSize.x + origin.x + cx) * 4;
+        ASSERT_FALSE(covered[at / 4]) << "levels overlap at level " << level;
+        covered[at / 4] = true;
+        ASSERT_EQ(texels[at + 0], nearMin) << "level " << level << " cell " << cx << "," << cy;
+        ASSERT_EQ(texels[at + 1], nearMax) << "level " << level << " cell " << cx << "," << cy;
+        ASSERT_EQ(texels[at + 2], farMax) << "level " << level << " cell " << cx << "," << cy;
+      }
+  }
+  // The rest of the atlas is cleared (no stale or uninitialized values in the view).
+  for (size_t i = 0; i < covered.size(); ++i)
+    if (!covered[i]) {
+      for (int c = 0; c < 4; ++c) ASSERT_EQ(texels[i * 4 + c], 0.0f) << "atlas texel " << i;
+    }
+}
+
+}  // namespace
+
+// The levels never overlap in the atlas, and the atlas holds 4/3 of one level (plus the
+// padding of the right column) instead of the N-buffer's log2(W) + 1 levels.
+TEST(MinMax, AtlasLayoutLevelsAreDisjointAndSmall) {
+  for (glm::ivec2 map : {glm::ivec2(1, 1), {1, 7}, {5, 3}, {100, 37}, {256, 256}, {2048, 2048}}) {
+    const glm::ivec2 atlas = minmaxAtlasSize(map.x, map.y);
+    long used = 0;
+    for (int level = 0; level <= minmaxTopLevel(map.x, map.y); ++level) {
+      const glm::ivec2 size = minmaxLevelSize(level, map.x, map.y);
+      used += long(size.x) * size.y;
+      if (level >= 1) {  // stacked right below the previous level, right of level 0
+        const glm::ivec2 previous = minmaxLevelOrigin(level - 1, map.x, map.y);
+        const glm::ivec2 origin = minmaxLevelOrigin(level, map.x, map.y);
+        EXPECT_EQ(origin.x, map.x);
+        if (level >= 2) {
+          EXPECT_EQ(origin.y, previous.y + minmaxLevelSize(level - 1, map.x, map.y).y);
+        }
+      }
+    }
+    const double levelTexels = double(map.x) * map.y;
+    EXPECT_LE(double(used), 4.0 / 3.0 * levelTexels + 2 * (map.x + map.y) + 16) << map.x;
+    if (map.x >= 256) {
+      EXPECT_LE(double(atlas.x) * atlas.y, 1.5 * levelTexels) << map.x;
+    }
+  }
+}
+
+TEST(MinMax, EveryTexelOfEveryLevelEqualsBruteForceSmallSizes) {
+  for (int size : {1, 2, 3, 5, 8, 13}) checkEveryTexel(size, size, unsigned(size));
+}
+TEST(MinMax, EveryTexelOfEveryLevelEqualsBruteForceNonSquare) {
+  checkEveryTexel(37, 100, 3);
+  checkEveryTexel(100, 37, 4);
+  checkEveryTexel(1, 9, 5);
+}
+TEST(MinMax, EveryTexelOfEveryLevelEqualsBruteForce512) { checkEveryTexel(512, 512, 6); }
+
+TEST(MinMax, RejectsAnAtlasOfTheWrongShape) {
+  headlessContext();
+  const GlTexture nearLayer(GL_DEPTH_COMPONENT32F, 16, 16), farLayer(GL_DEPTH_COMPONENT32F, 16, 16);
+  GlTexture wrong(GL_RGBA32F, 16, 16);
+  EXPECT_THROW(buildMinMax(nearLayer, farLayer, wrong), std::invalid_argument);
+}
+
+// In the pipeline: built from the frame's light layers; the top texel bounds the whole map.
+TEST(MinMaxStage, BuiltFromTheLightLayersOfTheFrame) {
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128", "trace.hierarchy=minmax"},
+                  64, 64);
+  const GlTexture& atlas = run.frame->texture("minmax.levels");
+  EXPECT_EQ(glm::ivec2(atlas.width(), atlas.height()), minmaxAtlasSize(128, 128));
+  EXPECT_EQ(run.frame->counters.at("minmax.levels"), 8.0);
+  const auto nearLayer = run.read("light_layers.near");
+  const auto farLayer = run.read("light_layers.far");
+  const auto texels = atlas.readFloats();
+  const glm::ivec2 top = minmaxLevelOrigin(7, 128, 128);
+  const size_t at = (size_t(top.y) * atlas.width() + top.x) * 4;
+  EXPECT_LT(*std::min_element(nearLayer.begin(), nearLayer.end()), 1.0f);  // the cube is in the map
+  EXPECT_EQ(texels[at + 0], *std::min_element(nearLayer.begin(), nearLayer.end()));
+  EXPECT_EQ(texels[at + 1], *std::max_element(nearLayer.begin(), nearLayer.end()));
+  EXPECT_EQ(texels[at + 2], *std::max_element(farLayer.begin(), farLayer.end()));
+}
