@@ -59,7 +59,7 @@ TEST(Cli, BadFlagsAndScenesExit2) {
   EXPECT_EQ(runPenumbra("--no-such-flag").exitCode, 2);
   const auto scene = runPenumbra("export --scene nowhere --out /tmp/penumbra_never");
   EXPECT_EQ(scene.exitCode, 2);
-  EXPECT_NE(scene.output.find("cube, plate, spheres, engine"), std::string::npos) << scene.output;
+  EXPECT_NE(scene.output.find("cube, plate, spheres, engine, dragon"), std::string::npos) << scene.output;
   const auto missing = runPenumbra("export --scene /nonexistent/file.glb --out /tmp/penumbra_never");
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_NE(missing.output.find("file.glb"), std::string::npos) << missing.output;
