@@ -70,6 +70,12 @@ struct Methods {
   // A stage that is off by default (its Bool parameter `enabled`, e.g. raster4d's, which
   // costs seconds per frame on llvmpipe) is switched on where it is measured.
   std::map<std::string, std::string> switchOn;
+  // A method with maps of its own (an Int parameter `resolution`, e.g. ssm's occluder,
+  // receiver and soft shadow maps) follows the swept map size, as light.resolution does.
+  std::set<std::string> ownResolution;
+  // A method with variants (an Enum parameter `passes`, e.g. ssm's one and two passes,
+  // which Atty et al. 2006 §4.2 compare on every curve): each value, where a preset asks.
+  std::map<std::string, std::vector<std::string>> passes;
 };
 
 Methods methodsOf(const Pipeline& pipeline) {
@@ -81,22 +87,42 @@ Methods methodsOf(const Pipeline& pipeline) {
     const bool listed = std::find(kMonteCarloMethods.begin(), kMonteCarloMethods.end(), method) !=
                         kMonteCarloMethods.end();
     if (!(result.monteCarlo && listed)) result.others.push_back(method);
-    for (const Param& param : pipeline.stage(method).params())
+    for (const Param& param : pipeline.stage(method).params()) {
       if (param.key == "enabled" && param.type == Param::Type::Bool && !param.asBool())
         result.switchOn[method] = method + ".enabled=true";
+      if (param.key == "resolution" && param.type == Param::Type::Int)
+        result.ownResolution.insert(method);
+      if (param.key == "passes" && param.type == Param::Type::Enum)
+        result.passes[method] = param.options;
+    }
   }
   return result;
 }
 
-// A method without a list of its own: its declared defaults at shadow-map size `map`.
-std::vector<BenchConfig> withDefaults(const Methods& methods, int map) {
+// A method without a list of its own: its declared defaults at shadow-map size `map` (its
+// own maps too). everyPass: one configuration per value of its `passes` (family "ssm two
+// passes"), else its default only.
+std::vector<BenchConfig> withDefaults(const Methods& methods, int map, bool everyPass = false) {
   std::vector<BenchConfig> configs;
   for (const std::string& method : methods.others) {
     BenchConfig config{method + " map " + std::to_string(map), method, method,
                        {"light.resolution=" + std::to_string(map)}};
     if (methods.switchOn.count(method)) config.sets.push_back(methods.switchOn.at(method));
+    if (methods.ownResolution.count(method))
+      config.sets.push_back(method + ".resolution=" + std::to_string(map));
     chooseMethod(config);
-    configs.push_back(config);
+    if (!everyPass || !methods.passes.count(method)) {
+      configs.push_back(config);
+      continue;
+    }
+    for (const std::string& passes : methods.passes.at(method)) {
+      BenchConfig variant = config;
+      const std::string name = method + " " + passes + (passes == "one" ? " pass" : " passes");
+      variant.label = name + " map " + std::to_string(map);
+      variant.family = name;
+      variant.sets.push_back(method + ".passes=" + passes);
+      configs.push_back(variant);
+    }
   }
   return configs;
 }
@@ -137,11 +163,11 @@ std::vector<BenchConfig> thesisRows(const Methods& methods, int map) {
           monteCarlo("linear_binary", 3, 2, map), monteCarlo("linear_binary", 3, 3, map)};
 }
 
-// Atty et al. compare their one- and two-pass versions; our analogues are one and two
-// depth layers, with the other methods (the hard shadow, ...) and three layers
-// (linear/binary) next to them.
+// Atty et al. compare their one- and two-pass versions (ssm: both); the Monte Carlo
+// method's analogues are one and two depth layers, with the other methods (the hard
+// shadow, PCSS, ...) and three layers (linear/binary) next to them.
 std::vector<BenchConfig> attyMethods(const Methods& methods, int map) {
-  std::vector<BenchConfig> configs = withDefaults(methods, map);
+  std::vector<BenchConfig> configs = withDefaults(methods, map, /*everyPass=*/true);
   if (methods.monteCarlo)
     append(configs, {monteCarlo("hierarchical", 1, 2, map), monteCarlo("hierarchical", 2, 2, map),
                      monteCarlo("linear_binary", 3, 2, map)});

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <unistd.h>
 
@@ -152,6 +153,25 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   EXPECT_EQ(thesis[2].height, 512);
   const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0}, graph);
   EXPECT_EQ(atty.size(), 1u + 6u + 7u + 5u);
+  // Atty et al. measure their method in one and two passes on every curve, its own maps at
+  // the swept size (Fig. 17's x axis); every other method once per map size.
+  for (const BenchSetup& setup : atty) {
+    const size_t maps = setup.axis == "map" ? 7u : 1u;
+    EXPECT_EQ(setup.configs.size(), maps * (others + 1u + 3u)) << setup.label;  // ssm x 2, MC x 3
+    std::map<std::string, int> ssmPasses;
+    for (const BenchConfig& config : setup.configs) {
+      if (config.method != "ssm") continue;
+      const auto has = [&](const std::string& set) {
+        return std::find(config.sets.begin(), config.sets.end(), set) != config.sets.end();
+      };
+      const std::string map = config.label.substr(config.label.rfind(' ') + 1);
+      EXPECT_TRUE(has("ssm.resolution=" + map) && has("light.resolution=" + map)) << config.label;
+      EXPECT_TRUE(has("ssm.passes=one") != has("ssm.passes=two")) << config.label;
+      ++ssmPasses[config.family];
+    }
+    EXPECT_EQ(ssmPasses["ssm one pass"], int(maps)) << setup.label;
+    EXPECT_EQ(ssmPasses["ssm two passes"], int(maps)) << setup.label;
+  }
   const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light.resolution=128,256"}, 0, 0}, graph);
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_EQ(swept[1].width, 64);
