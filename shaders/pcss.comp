@@ -8,6 +8,10 @@
 // Depths: the map stores linear light depth (light_block.h); blockers are averaged as
 // distances along the light axis and the triangles measured from the light plane (Eq 3.1),
 // not from the projection point: one depth space throughout.
+// Blockers (steps 2 and 4) are texels whose surface point lies in front of the receiver's
+// tangent plane (receiver-plane depth bias): a tap compared with the receiver's own depth
+// finds the receiver's surface itself in front wherever that surface slopes away from the
+// light, and the region then collapses onto the receiver's texel (acne, self-shadow noise).
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/hash.glsl"
@@ -41,6 +45,27 @@ vec2 tap(int i, vec2 shift) {
   return fract(taps[i] * 0.5 + 0.5 + shift) * 2.0 - 1.0;
 }
 
+// The world point a map texel holds: the ray from the projection point through the texel's
+// centre, at distance z along the light axis.
+vec3 wsPointOfTexel(ivec2 texel, float z) {
+  vec2 ndc = (vec2(texel) + 0.5) / vec2(light.mapSize.xy) * 2.0 - 1.0;
+  vec3 wsProjection = light.wsLightCenter.xyz - light.wsLightForward.w * light.wsLightForward.xyz;
+  return wsProjection + z * (light.wsLightForward.xyz + ndc.x * light.lightDepthRange.z * light.wsLightRight.xyz
+                             + ndc.y * light.lightDepthRange.w * light.wsLightUp.xyz);
+}
+
+// The receiver as blockers see it: the biased point (moved towards the light, as every
+// shadow-map test does) and its tangent plane, if it faces the light centre.
+struct Receiver { float lsDepth; vec3 wsPoint; vec3 wsNormal; bool plane; };
+
+// A tap's texel blocks the receiver if it is nearer the light and, for a receiver facing the
+// light, in front of its tangent plane through the biased point.
+bool blocks(Receiver receiver, ivec2 texel, float lsDepth) {
+  if (lsDepth >= receiver.lsDepth) return false;
+  if (!receiver.plane) return true;
+  return dot(receiver.wsNormal, wsPointOfTexel(texel, lsDepthToZ(lsDepth)) - receiver.wsPoint) > 0.0;
+}
+
 void main() {
   ivec2 pixel = screenPixel();
   if (pixel.x < 0) return;
@@ -51,11 +76,15 @@ void main() {
   float visibility = 1.0, searchHalf = 0.0, blockerDepth = 0.0, filterHalf = 0.0;
   if (wsPosition.w > 0.0 && insideMap) {
     vec2 size = vec2(light.mapSize.xy);
+    vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
+    vec3 wsToLight = normalize(light.wsLightCenter.xyz - wsPosition.xyz);
     float bias = light.bias.x;  // the light's Eq 3.2 group, as every shadow-map test
     if (light.bias.y != 0.0)
-      bias += adaptiveBias(map.z, texelFetch(wsNormalTexture, pixel, 0).xyz,
-                           -light.wsLightForward.xyz, light.bias.z);
-    float lsReceiver = zToLsDepth(map.z - bias);
+      bias += adaptiveBias(map.z, wsNormal, -light.wsLightForward.xyz, light.bias.z);
+    // A receiver turned away from the light centre keeps the plain depth comparison.
+    Receiver receiver = Receiver(zToLsDepth(map.z - bias),
+                                 wsPosition.xyz - bias * light.wsLightForward.xyz, wsNormal,
+                                 dot(wsNormal, wsToLight) > 0.0);
     vec2 shift = vec2(0.0);
     if (pcss.taps.z != 0)
       shift = toUnitSquare(hashRand(uvec4(pixel, 0u, 0u), frame.keys.x, int(light.sampling.x)).xy);
@@ -72,8 +101,9 @@ void main() {
     for (int i = 0; i < pcss.taps.x && searchHalf > 0.0; ++i) {
       vec2 uv = search.xy + searchHalf * tap(i, shift);
       if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
-      float lsDepth = texelFetch(nearLayer, ivec2(uv * size), 0).r;
-      if (lsDepth < lsReceiver) blockerSum += lsDepthToZ(lsDepth), ++blockers;
+      ivec2 texel = ivec2(uv * size);
+      float lsDepth = texelFetch(nearLayer, texel, 0).r;
+      if (blocks(receiver, texel, lsDepth)) blockerSum += lsDepthToZ(lsDepth), ++blockers;
     }
     if (blockers > 0) {
       float zAverage = blockerSum / float(blockers);
@@ -86,7 +116,8 @@ void main() {
       for (int i = 0; i < pcss.taps.y; ++i) {
         vec2 uv = region.xy + filterHalf * tap(pcss.taps.x + i, shift);
         bool onMap = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)));
-        if (!onMap || texelFetch(nearLayer, ivec2(uv * size), 0).r >= lsReceiver) ++lit;
+        ivec2 texel = ivec2(uv * size);
+        if (!onMap || !blocks(receiver, texel, texelFetch(nearLayer, texel, 0).r)) ++lit;
       }
       visibility = float(lit) / float(pcss.taps.y);
     }
