@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "window/panels/ui_hash_stats.h"
@@ -40,7 +41,10 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\n%s, %s\nclick: show in the active view; Ctrl+click: the other view",
                       output.doc.c_str(), formatName(output.format), size.c_str());
-  ImGui::SameLine(ImGui::GetContentRegionMax().x - 170);
+  // Right-aligned, but never over the name (ssm's "occluderBackMap DEPTH32F" in a narrow panel).
+  const float nameEnd = ImGui::CalcTextSize(("  " + output.name + "  " + shownIn).c_str()).x +
+                        ImGui::GetStyle().ItemSpacing.x;
+  ImGui::SameLine(std::max(nameEnd, ImGui::GetContentRegionMax().x - 170));
   ImGui::TextDisabled("%s %s", formatName(output.format), size.c_str());
 }
 
