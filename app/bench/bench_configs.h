@@ -21,7 +21,11 @@
 //   atty-4.2          the sweeps of Atty et al. 2006 §4.2 with their metric (mean |error|
 //                     over pixels in shadow): shadow-map size; light size; occluder moved
 //                     laterally; occluder moved from the receiver to the light (map 128,
-//                     as theirs); every method in each
+//                     as theirs); every method in each, a method with passes (ssm) at each
+//                     of them, as Atty et al. measure one and two passes
+//
+// A method whose stage has maps of its own (an Int parameter `resolution`, e.g. ssm) gets
+// <method>.resolution = the map size beside light.resolution, so Fig. 17's x axis is its map.
 
 // --sweep KEY=v1,v2,...: KEY is a stage parameter (every configuration is repeated for each
 // value) or one of the setup axes scene.light_scale (light width and height x v),
