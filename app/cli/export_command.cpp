@@ -5,12 +5,42 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
+#include "figures/categories.h"
+#include "io/colormap.h"
 #include "io/headless_session.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
 
+namespace {
+
+// The PNG of one output layer again, with its annotation band.
+void writeAnnotatedPng(const std::filesystem::path& png, const Frame& frame, const std::string& key,
+                       const GlTexture& texture, const Output& output, int layer,
+                       const std::string& keyParameters) {
+  const std::vector<float> values = texture.readFloats(layer);
+  const DisplayHint& hint = output.display;
+  Annotation annotation;
+  annotation.caption = frame.scene.name + " · " + key +
+                       (texture.isArray() ? " level " + std::to_string(layer) : "") + " · " +
+                       std::to_string(texture.width()) + "x" + std::to_string(texture.height()) +
+                       (keyParameters.empty() ? "" : " · " + keyParameters);
+  const int channel = hint.channel < texture.channelCount() ? hint.channel : -1;
+  if (channel >= 0 && hint.colormap == Colormap::Categorical)
+    annotation.legend = categoryLegend(values, texture.channelCount(), channel, output.doc);
+  else if (channel >= 0)
+    annotation.bar = ColorBar{hint.colormap, hint.black, hint.white,
+                              key + ": " + output.channels.at(size_t(channel))};
+  const auto rgb = annotateImage(displayRgb8(values, texture.width(), texture.height(),
+                                             texture.channelCount(), hint),
+                                 texture.width(), texture.height(), annotation);
+  writePng(png, rgb, texture.width(), texture.height() + annotationHeight(annotation, texture.width()));
+}
+
+}  // namespace
+
 std::vector<std::string> exportFrame(const std::string& target, const Frame& frame,
-                                     const Pipeline& pipeline, const std::string& renderer) {
+                                     const Pipeline& pipeline, const std::string& renderer,
+                                     bool annotate, const std::string& keyParameters) {
   // One transaction: every file goes into a temporary directory, renamed into place last.
   DirectoryTransaction transaction(target);
   const std::filesystem::path directory = transaction.path();
@@ -39,6 +69,9 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
         const std::string stem = texture.isArray() ? key + ".L" + std::to_string(layer) : key;
         for (const auto& path : exportTexture(directory, stem, texture, output, layer))
           written.push_back((transaction.target() / path.filename()).string());
+        if (annotate)
+          writeAnnotatedPng(directory / (stem + ".png"), frame, key, texture, output, layer,
+                            keyParameters);
       }
     }
   }
@@ -60,7 +93,10 @@ int runExport(const ExportOptions& options) {
   frame.frameKey = options.frameKey;
   session.pipeline.run(frame);
   const std::string renderer = session.context->renderer();
-  const auto written = exportFrame(options.outDirectory, frame, session.pipeline, renderer);
+  std::string keyParameters;
+  for (const std::string& set : options.sets) keyParameters += (keyParameters.empty() ? "" : ", ") + set;
+  const auto written = exportFrame(options.outDirectory, frame, session.pipeline, renderer,
+                                   options.annotate, keyParameters);
   std::printf("penumbra export: scene '%s' (%zu triangles) on %s\n",
               printable(session.scene.name).c_str(), session.scene.triangleCount(), renderer.c_str());
   for (const StageTime& time : session.pipeline.lastTimes())

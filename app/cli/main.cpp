@@ -97,6 +97,9 @@ int main(int argc, char** argv) {
   exportCommand->add_option("--set", exporting.sets, "stage.key=value, repeatable");
   exportCommand->add_option("--frame-key", exporting.frameKey, "hash key of the frame")
       ->capture_default_str();
+  exportCommand->add_flag("--annotate", exporting.annotate,
+                          "PNGs carry a colour bar (range, channel) or legend and a caption "
+                          "line below the image; the EXRs stay raw");
 
   TraceOptions tracing;
   CLI::App* traceCommand = app.add_subcommand("trace", "record every step of every ray at one "

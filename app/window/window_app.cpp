@@ -280,7 +280,7 @@ int runWindow(const WindowOptions& options) {
     std::unique_ptr<ScriptRunner> runner;
     if (!options.script.empty())
       runner = std::make_unique<ScriptRunner>(
-          std::move(actions), ScriptOptions{options.interactiveLesson, options.exportDirectory});
+          std::move(actions), ScriptOptions{options.interactiveLesson, options.exportDirectory, options.script});
     int framesRendered = 0, screenshotCount = 0;
     bool draggingSlider = false;
     auto last = std::chrono::steady_clock::now();

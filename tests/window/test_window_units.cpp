@@ -308,10 +308,35 @@ TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
         state.script.screenshotRequest.clear();
       }
     ASSERT_EQ(requested.size(), 2u) << override;
-    EXPECT_EQ(requested[0], (override.empty() ? "from_script" : override) + "/a.png");
+    EXPECT_EQ(requested[0], (override.empty() ? "penumbra_exports/from_script" : override) + "/a.png");
     EXPECT_EQ(requested[1], "/abs/b.png");
   }
   std::vector<ScriptAction> actions;
   EXPECT_NE(parseScriptJson(json::parse(R"([{"say": 3}])"), actions).find("expected a string"),
+            std::string::npos);
+}
+
+// Issue 15: a lesson's figures never land in the working directory itself: without --export
+// and export_dir they go under the output folder in a folder named after the lesson's file.
+TEST(WindowUnits, ALessonWithoutExportDirExportsUnderTheOutputFolderByItsName) {
+  const std::string lesson = R"([{"lesson": "t"}, {"screenshot": "a.png"}])";
+  for (const std::string& override : {std::string(), std::string("/tmp/chosen")}) {
+    UiState state;
+    useCube(state);
+    ScriptRunner runner(parsed(lesson), ScriptOptions{false, override, "lessons/fig_9_9.json"});
+    std::string requested;
+    for (int i = 0; i < 12 && runner.step(state) == ScriptRunner::Step::Running; ++i)
+      if (!state.script.screenshotRequest.empty()) requested = state.script.screenshotRequest;
+    EXPECT_EQ(requested, (override.empty() ? std::string(kDefaultExportDirectory) + "/fig_9_9"
+                                           : override) + "/a.png");
+  }
+  // export_dir names a folder under the output folder: no way out of it.
+  std::vector<ScriptAction> actions;
+  for (const char* bad : {R"([{"export_dir": "/tmp/x"}])", R"([{"export_dir": "a/../../x"}])",
+                          R"([{"export_dir": ""}])"})
+    EXPECT_NE(parseScriptJson(json::parse(bad), actions).find("(export_dir): expected a folder name"),
+              std::string::npos) << bad;
+  EXPECT_NE(parseScriptJson(json::parse(R"([{"export_view": {"file": "a.png", "colour": 1}}])"),
+                            actions).find("\"colour\": expected"),
             std::string::npos);
 }

@@ -6,7 +6,9 @@
 #include <filesystem>
 
 #include "cli/export_command.h"
+#include "figures/annotate.h"
 #include "io/image_export.h"
+#include "window/panels/ui_export_annotation.h"
 #include "window/ui_state.h"
 
 namespace fs = std::filesystem;
@@ -57,7 +59,7 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
 
 // 2. One view: the texture's current level, raw or through the view's own mapping.
 std::string exportViewFiles(const UiState& state, const ViewPanel& view, const std::string& target,
-                            ExportKind kind) {
+                            ExportKind kind, bool annotate) {
   if (!state.session.runError.empty()) return refusal(state);
   std::string problem;
   const GlTexture* shown = shownTexture(state, view, &problem);
@@ -85,11 +87,17 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
     for (const fs::path& path : {png, exr}) {
       if (path.empty()) continue;
       if (path.has_parent_path()) fs::create_directories(path.parent_path());
-      if (path == png)
-        writePng(png, displayRgb8ForView(values, texture.width(), texture.height(),
-                                         texture.channelCount(), view.settings),
-                 texture.width(), texture.height());
-      else
+      if (path == png) {
+        std::vector<std::uint8_t> rgb = displayRgb8ForView(
+            values, texture.width(), texture.height(), texture.channelCount(), view.settings);
+        int height = texture.height();
+        if (annotate) {
+          const Annotation annotation = viewAnnotation(state, view, values, texture.channelCount());
+          rgb = annotateImage(rgb, texture.width(), texture.height(), annotation);
+          height += annotationHeight(annotation, texture.width());
+        }
+        writePng(png, rgb, texture.width(), height);
+      } else
         writeExr(exr, values, texture.width(), texture.height(), shownChannelNames(state, view));
       written += (written.empty() ? "" : ", ") + fs::absolute(path).string();
     }

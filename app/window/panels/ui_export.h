@@ -16,9 +16,11 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
 
 // `target`: "" -> the default directory with a generated name; "x.png" / "x.exr" -> exactly
 // that file (kind from the extension); anything else -> a directory, generated names.
-// Returns the status line: the absolute paths written, or what went wrong.
+// `annotate`: the PNG carries a colour bar or legend and a caption below the image
+// (ui_export_annotation.h); the EXR stays raw. Returns the status line: the absolute paths
+// written, or what went wrong.
 std::string exportViewFiles(const UiState& state, const ViewPanel& view,
-                            const std::string& target, ExportKind kind);
+                            const std::string& target, ExportKind kind, bool annotate = false);
 // Every output + run.json into `directory` ("" -> default directory / "<scene>_all_<WxH>").
 std::string exportAllStages(UiState& state, const std::string& directory);
 

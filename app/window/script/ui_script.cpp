@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "window/script/ui_lesson_export.h"
 #include "window/ui_state.h"
 
 using nlohmann::json;
@@ -52,7 +53,12 @@ ScriptRunner::ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions opti
   context_.exportDirectory = options.exportOverride;
   context_.exportOverridden = !options.exportOverride.empty();
   context_.interactive = options.interactive;
-  for (const ScriptAction& action : actions_) context_.says += action.name == "say";
+  bool lesson = false;
+  for (const ScriptAction& action : actions_) {
+    context_.says += action.name == "say";
+    lesson = lesson || action.name == "lesson";
+  }
+  if (lesson && !context_.exportOverridden) context_.exportDirectory = defaultLessonDirectory(options.path);
 }
 
 ScriptRunner::Step ScriptRunner::step(UiState& state) {
@@ -84,6 +90,13 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
     // The next action sees the re-run pipeline and the new layout.
     if (!state.script.syntheticInput.empty() || waitForNext(state)) return Step::Running;
     if (state.needsRun() || spec->newFrame) return Step::Running;
+  }
+  if (!finished_) {  // a lesson's figure sheet and text, once
+    finished_ = true;
+    if (std::string problem = finishLesson(context_); !problem.empty()) {
+      error_ = problem;
+      return Step::Failed;
+    }
   }
   return Step::Done;
 }

@@ -29,8 +29,13 @@
 //   {"show_ray": true} (nbuffer.levels in the active view, zoomed onto the picked ray's shapes)
 // Lessons (DESIGN.md §1 `penumbra lesson`): a lesson is a script with texts for the student:
 //   {"lesson": "title"}  {"say": "text shown in the lesson panel and printed to stdout"}
-//   {"export_dir": "dir"} (relative export_view / export_all / screenshot paths go there;
-//                          `--export DIR` overrides it)
+//   {"export_dir": "name"} (relative export_view / export_all / screenshot paths go into
+//                          that folder under the output folder; `--export DIR` overrides it;
+//                          a lesson without either exports into the output folder under its
+//                          file's name: app/window/script/ui_lesson_export.h)
+//   {"export_view": {"file": "f.png", "caption": "... {ms:trace} ms", "annotate": true}}
+//                          (a panel of the lesson's figure sheet, with its caption)
+//   {"annotate": true}     (exported view PNGs carry a colour bar / legend and a caption)
 // Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
 // waits for the student's "Next" (button, Space or N), and the window stays open at the end.
 //
@@ -60,6 +65,7 @@ std::string parseScriptJson(const nlohmann::json& root, std::vector<ScriptAction
 struct ScriptOptions {
   bool interactive = false;    // a lesson played by a student: wait for "Next" at each "say"
   std::string exportOverride;  // --export DIR: replaces the script's "export_dir"
+  std::string path;            // the script's file: a lesson's default export folder
 };
 
 // 2. Runs actions frame by frame.
@@ -76,5 +82,6 @@ private:
   std::vector<ScriptAction> actions_;
   ScriptContext context_;
   size_t next_ = 0;
+  bool finished_ = false;
   std::string error_;
 };

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "window/panels/ui_export.h"
+#include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_camera.h"
 #include "window/ui_state.h"
@@ -75,10 +76,9 @@ std::string pick(UiState& state, const json& a) {
   return "";
 }
 
-std::string exportFiles(UiState& state, const json& a, ScriptContext& context, bool all) {
+std::string exportAll(UiState& state, const json& a, ScriptContext& context) {
   const std::string target = context.resolved(a.get<std::string>());
-  state.status = all ? exportAllStages(state, target)
-                     : exportViewFiles(state, activeView(state), target, ExportKind::Both);
+  state.status = exportAllStages(state, target);
   std::printf("penumbra: %s\n", state.status.c_str());
   return state.status.rfind("wrote ", 0) == 0 ? "" : state.status;
 }
@@ -160,9 +160,14 @@ std::vector<ScriptActionSpec> makeTable() {
          c.waitFrames = a.get<int>();
          return std::string();
        }},
-      {"export_view", kString,
-       [](S& s, const json& a, C& c) { return exportFiles(s, a, c, false); }},
-      {"export_all", kString, [](S& s, const json& a, C& c) { return exportFiles(s, a, c, true); }},
+      {"export_view", checkExportView,
+       [](S& s, const json& a, C& c) { return exportView(s, a, c); }},
+      {"annotate", kBool,
+       [](S&, const json& a, C& c) {
+         c.annotate = a.get<bool>();
+         return std::string();
+       }},
+      {"export_all", kString, [](S& s, const json& a, C& c) { return exportAll(s, a, c); }},
       {"screenshot", kString,
        [=](S&, const json& a, C& c) {
          c.pendingScreenshot = c.resolved(text(a));
@@ -283,9 +288,10 @@ std::vector<ScriptActionSpec> makeTable() {
       {"show_ray", kBool, [](S& s, const json& a, C&) { return showRay(s, a); }},
       {"lesson", kString, [](S& s, const json& a, C& c) { return startLesson(s, a, c); }, true},
       {"say", kString, [](S& s, const json& a, C& c) { return say(s, a, c); }, true},
-      {"export_dir", kString,
+      {"export_dir", checkExportDirName,
        [=](S&, const json& a, C& c) {
-         if (!c.exportOverridden) c.exportDirectory = text(a);
+         if (!c.exportOverridden)
+           c.exportDirectory = (std::filesystem::path(kDefaultExportDirectory) / text(a)).string();
          return std::string();
        }},
   };

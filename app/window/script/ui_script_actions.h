@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "figures/figure_sheet.h"
+
 class UiState;
 
 // What a handler may change besides the window's state: the runner's own progress.
@@ -17,6 +19,12 @@ struct ScriptContext {
   bool exportOverridden = false;  // --export DIR replaces the script's "export_dir"
   bool interactive = false;       // a lesson played by a student
   int says = 0, saysSeen = 0;     // the lesson's "say" actions: in all, and so far
+  bool annotate = false;          // "annotate": exported PNGs carry a colour bar and caption
+  // A lesson's record (ui_lesson_export.h): its title, what it said (numbers filled in) and
+  // the panels it exported, for the figure sheet and lesson.md.
+  std::string lessonTitle;
+  std::vector<std::string> said;
+  std::vector<FigurePanel> panels;
   // A relative export / screenshot path inside the export directory, if there is one.
   std::string resolved(const std::string& path) const;
 };
@@ -43,5 +51,6 @@ std::string zoomActiveView(UiState& state, const nlohmann::json& a);
 std::string showRay(UiState& state, const nlohmann::json& a);
 std::string startLesson(UiState& state, const nlohmann::json& a, ScriptContext& context);
 std::string say(UiState& state, const nlohmann::json& a, ScriptContext& context);
+std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
 void printPick(const UiState& state, const std::string& label);
 void printTiming(const UiState& state, const std::string& label);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "window/script/ui_lesson_export.h"
 #include "window/script/ui_script_actions.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
@@ -140,7 +141,7 @@ std::string showRay(UiState& state, const json& a) {
 
 // 5. Lessons: the title and each "say" for the lesson panel and stdout.
 std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
-  state.lesson.title = a.get<std::string>();
+  state.lesson.title = context.lessonTitle = a.get<std::string>();
   state.lesson.steps = context.says;
   std::printf("lesson: %s\n", state.lesson.title.c_str());
   std::fflush(stdout);
@@ -148,7 +149,10 @@ std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
 }
 
 std::string say(UiState& state, const json& a, ScriptContext& context) {
-  state.lesson.text = a.get<std::string>();
+  std::string problem;
+  state.lesson.text = fillNumbers(state, a.get<std::string>(), problem);
+  if (!problem.empty()) return problem;
+  context.said.push_back(state.lesson.text);
   state.lesson.step = ++context.saysSeen;
   state.lesson.steps = context.says;
   state.lesson.next = state.lesson.waiting = false;

@@ -2,30 +2,10 @@
 
 #include <imgui.h>
 
-#include <cmath>
-#include <regex>
-
 #include "io/colormap.h"
 #include "window/ui_state.h"
 
-// 1. "<integer> <word>" pairs of the doc.
-std::map<int, std::string> categoryNamesFromDoc(const std::string& doc) {
-  std::map<int, std::string> names;
-  static const std::regex pair(R"((?:^|[\s:,(])(\d+)\s+([A-Za-z_]+))");
-  for (auto it = std::sregex_iterator(doc.begin(), doc.end(), pair); it != std::sregex_iterator(); ++it)
-    names.emplace(std::stoi((*it)[1].str()), (*it)[2].str());
-  return names;
-}
-
-// 2. Rounded like app/io/colormap.cpp's categorical map (lround of |value|); NaN skipped.
-std::map<int, long> categoryCounts(const std::vector<float>& values, int channelCount, int channel) {
-  std::map<int, long> counts;
-  for (size_t i = size_t(channel); i < values.size(); i += size_t(channelCount))
-    if (std::isfinite(values[i])) ++counts[int(std::lround(std::fabs(values[i])))];
-  return counts;
-}
-
-// 3. The legend, counted once per pipeline run and view content.
+// The legend, counted once per pipeline run and view content.
 void drawCategoryLegend(const UiState& state, const ViewPanel& view) {
   if (!state.session.frame || !state.session.frame->has(view.output)) return;
   const GlTexture& texture = state.session.frame->texture(view.output);

@@ -1,0 +1,52 @@
+#include "window/panels/ui_export_annotation.h"
+
+#include "window/ui_state.h"
+#include "window/views/ui_categories.h"
+#include "window/views/ui_view_difference.h"
+
+// 1. Scene, what the view shows, eye size, the stage's parameters that differ from their
+//    declared defaults (as the export file name lists them, app/window/panels/ui_export.h).
+std::string viewCaption(const UiState& state, const ViewPanel& view) {
+  std::string shown = view.output;
+  if (!view.minus.empty()) shown += " minus " + view.minus + (view.clipNegative ? " (>= 0)" : "");
+  if (state.session.frame && state.session.frame->has(view.output) &&
+      state.session.frame->texture(view.output).isArray())
+    shown += " level " + std::to_string(view.settings.layer);
+  std::string caption = state.session.scene.name + " · " + shown;
+  if (state.session.frame)
+    caption += " · " + std::to_string(state.session.frame->eyeWidth) + "x" +
+               std::to_string(state.session.frame->eyeHeight);
+  const std::string stageName = view.output.substr(0, view.output.find('.'));
+  std::string changed;
+  for (const auto& stage : state.session.pipeline.stages()) {
+    if (stage->name() != stageName) continue;
+    for (const Param& param : stage->params()) {
+      const auto declared = state.session.parameterDefaults.find(stageName + "." + param.key);
+      if (declared != state.session.parameterDefaults.end() && declared->second == param.value)
+        continue;
+      changed += (changed.empty() ? "" : ", ") + param.key + "=" + param.toString();
+    }
+  }
+  return changed.empty() ? caption : caption + " · " + changed;
+}
+
+// 2. A single channel: its colour bar, or its legend when the map is categorical.
+Annotation viewAnnotation(const UiState& state, const ViewPanel& view,
+                          const std::vector<float>& values, int channelCount) {
+  Annotation annotation;
+  annotation.caption = viewCaption(state, view);
+  const int channel = singleChannel(view.settings, channelCount);
+  if (channel < 0) return annotation;  // colour: the image is its own key
+  const std::vector<std::string> names = shownChannelNames(state, view);
+  const std::string channelName =
+      channel < int(names.size()) ? names[size_t(channel)] : std::string(1, "RGBA"[channel]);
+  if (view.settings.colormap != Colormap::Categorical) {
+    annotation.bar = ColorBar{view.settings.colormap, view.settings.black, view.settings.white,
+                              view.output + (view.minus.empty() ? "" : " - " + view.minus) +
+                                  ": " + channelName};
+    return annotation;
+  }
+  const Output* output = state.session.outputOf(view.output);
+  annotation.legend = categoryLegend(values, channelCount, channel, output ? output->doc : "");
+  return annotation;
+}

@@ -1,0 +1,18 @@
+// What an annotated view PNG says below the image (app/figures/annotate.h): the view's
+// colour bar (its range and colormap, labelled with the output and channel shown), the
+// legend of a categorical mask (names from the output's doc, shares counted here), and the
+// caption line: scene, output, eye size and the producing stage's changed parameters.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "figures/annotate.h"
+
+class UiState;
+struct ViewPanel;
+
+// "cube · trace.visibility · 640x480 · rays=4, sampling=random"
+std::string viewCaption(const UiState& state, const ViewPanel& view);
+// `values`: the shown texture's level as the view reads it.
+Annotation viewAnnotation(const UiState& state, const ViewPanel& view,
+                          const std::vector<float>& values, int channelCount);

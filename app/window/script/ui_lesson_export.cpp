@@ -1,0 +1,152 @@
+#include "window/script/ui_lesson_export.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "io/image_export.h"
+#include "window/panels/ui_export.h"
+#include "window/panels/ui_export_annotation.h"
+#include "window/ui_state.h"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// 1. Where a lesson's figures go.
+std::string defaultLessonDirectory(const std::string& lessonPath) {
+  return (fs::path(kDefaultExportDirectory) / fs::path(lessonPath).stem()).string();
+}
+
+std::string checkExportDirName(const json& value) {
+  if (!value.is_string() || value.get<std::string>().empty()) return "expected a folder name";
+  const fs::path path = value.get<std::string>();
+  if (path.is_absolute()) return "expected a folder name under the output folder, not an absolute path";
+  for (const fs::path& part : path)
+    if (part == "..") return "expected a folder name under the output folder, without '..'";
+  return "";
+}
+
+std::string checkExportView(const json& value) {
+  if (value.is_string()) return "";
+  if (!value.is_object() || !value.contains("file") || !value["file"].is_string())
+    return "expected a file or folder name, or {\"file\": ..., \"caption\": ..., \"annotate\": ...}";
+  for (const auto& [key, item] : value.items())
+    if (key == "caption" ? !item.is_string()
+        : key == "annotate" ? !item.is_boolean()
+        : key != "file")
+      return "\"" + key + "\": expected \"caption\" (a string) or \"annotate\" (true or false)";
+  return "";
+}
+
+// 2. Numbers from the current run.
+namespace {
+
+bool stageMedian(const UiState& state, const std::string& stage, double& ms) {
+  for (const StageTime& time : state.session.pipeline.lastTimes())
+    if (time.stage == stage) {
+      ms = time.ran ? time.median : 0;
+      return time.ran;
+    }
+  return false;
+}
+
+std::string formatted(double value, const char* format) {
+  char text[48];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+// "ms:a+b" -> the sum of the stages' medians; "ms"; "counter".
+std::string number(const UiState& state, const std::string& name, std::string& problem) {
+  if (name == "ms") return formatted(state.session.medianPipelineMs(), "%.1f");
+  if (name.rfind("ms:", 0) == 0) {
+    double total = 0;
+    std::stringstream stages(name.substr(3));
+    for (std::string stage; std::getline(stages, stage, '+');) {
+      double ms = 0;
+      if (!stageMedian(state, stage, ms)) {
+        problem = "{" + name + "}: stage '" + stage + "' did not run for the shown outputs";
+        return "";
+      }
+      total += ms;
+    }
+    return formatted(total, "%.1f");
+  }
+  if (state.session.frame) {
+    const auto& counters = state.session.frame->counters;
+    if (const auto counter = counters.find(name); counter != counters.end())
+      return formatted(counter->second, "%.4g");
+  }
+  problem = "{" + name + "}: no such number in this run (ms, ms:stage, or a counter such as error.rmse)";
+  return "";
+}
+
+}  // namespace
+
+std::string fillNumbers(const UiState& state, const std::string& text, std::string& problem) {
+  std::string out;
+  problem.clear();
+  for (size_t i = 0; i < text.size();) {
+    const size_t open = text.find('{', i);
+    const size_t close = open == std::string::npos ? open : text.find('}', open);
+    if (close == std::string::npos) {
+      out += text.substr(i);
+      break;
+    }
+    out += text.substr(i, open - i);
+    out += number(state, text.substr(open + 1, close - open - 1), problem);
+    if (!problem.empty()) return "";
+    i = close + 1;
+  }
+  return out;
+}
+
+// 3. One exported view, recorded as a panel of the figure sheet.
+std::string exportView(UiState& state, const json& a, ScriptContext& context) {
+  const std::string file = a.is_string() ? a.get<std::string>() : a["file"].get<std::string>();
+  const bool annotate = a.is_object() ? a.value("annotate", context.annotate) : context.annotate;
+  ViewPanel& view = state.views.panels[state.views.activeView];
+  std::string caption = viewCaption(state, view), problem;
+  if (a.is_object() && a.contains("caption")) {
+    caption = fillNumbers(state, a["caption"].get<std::string>(), problem);
+    if (!problem.empty()) return problem;
+  }
+  state.status = exportViewFiles(state, view, context.resolved(file), ExportKind::Both, annotate);
+  std::printf("penumbra: %s\n", state.status.c_str());
+  if (state.status.rfind("wrote ", 0) != 0) return state.status;
+  // "wrote /abs/x.png, /abs/x.exr": the PNG is the panel.
+  std::stringstream written(state.status.substr(6));
+  for (std::string path; std::getline(written, path, ',');) {
+    path.erase(0, path.find_first_not_of(' '));
+    if (path.size() > 4 && path.compare(path.size() - 4, 4, ".png") == 0)
+      context.panels.push_back({path, caption});
+  }
+  return "";
+}
+
+// 4. The end of a lesson: the sheet and the text beside it.
+std::string finishLesson(const ScriptContext& context) {
+  if (context.lessonTitle.empty() || context.panels.empty() || context.exportDirectory.empty())
+    return "";
+  try {
+    const fs::path directory = context.exportDirectory;
+    fs::create_directories(directory);
+    for (const fs::path& path : writeFigureSheet(directory / "figure_sheet", context.lessonTitle,
+                                                 context.panels))
+      std::printf("penumbra: wrote %s\n", fs::absolute(path).c_str());
+    std::string text = "# " + context.lessonTitle + "\n\n![figure sheet](figure_sheet.png)\n\n";
+    for (size_t i = 0; i < context.panels.size(); ++i)
+      text += "- (" + std::string(1, char('a' + i % 26)) + ") `" +
+              fs::path(context.panels[i].png).filename().string() + "`: " +
+              context.panels[i].caption + "\n";
+    text += "\n## The lesson, as played\n\n";
+    for (size_t i = 0; i < context.said.size(); ++i)
+      text += std::to_string(i + 1) + ". " + context.said[i] + "\n";
+    writeTextFile(directory / "lesson.md", text);
+    std::printf("penumbra: wrote %s\n", fs::absolute(directory / "lesson.md").c_str());
+    std::fflush(stdout);
+    return "";
+  } catch (const std::exception& error) {
+    return std::string("the figure sheet: ") + error.what();
+  }
+}

@@ -1,0 +1,34 @@
+// A lesson's figures (issue 15, "Figures for a report"): where they go, the numbers its
+// texts quote from the run, each exported panel with its caption, and at the end the figure
+// sheet (app/figures/figure_sheet.h) and lesson.md (the title, every "say" as played, the
+// panels and their captions).
+//
+// Where: `--export DIR` wins; else a lesson's {"export_dir": "name"} is a folder under the
+// program's output folder (kDefaultExportDirectory); else the lesson's file name there
+// (lessons/fig_3_3.json -> penumbra_exports/fig_3_3). Never the working directory itself.
+//
+// Numbers: a "say" text or a caption may hold {ms:stage} (that stage's median time over the
+// runs with the current settings; stages joined by '+' are summed), {ms} (the pipeline's
+// median) and {counter} (frame.counters, e.g. {error.rmse}); they are filled in when the
+// action runs. An unknown name stops the lesson (it would otherwise print a wrong number).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "window/script/ui_script_actions.h"
+
+class UiState;
+
+// The folder a lesson exports into when no --export and no export_dir name one.
+std::string defaultLessonDirectory(const std::string& lessonPath);
+// {"export_dir": ...}: a relative folder name without "..". "" or what was expected.
+std::string checkExportDirName(const nlohmann::json& value);
+// {"export_view": "f.png" | "dir" | {"file": "f.png", "caption": "...", "annotate": true}}
+std::string checkExportView(const nlohmann::json& value);
+
+// Replaces {ms:...}, {ms} and {counter} by the current run's numbers; "" in `problem` or why not.
+std::string fillNumbers(const UiState& state, const std::string& text, std::string& problem);
+// The export_view handler: exports, and records the PNG as a panel of the lesson.
+std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
+// At the end of a lesson with panels: figure_sheet.png/.pdf and lesson.md. "" or why not.
+std::string finishLesson(const ScriptContext& context);
