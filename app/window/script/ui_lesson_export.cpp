@@ -1,5 +1,6 @@
 #include "window/script/ui_lesson_export.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -75,7 +76,9 @@ std::string number(const UiState& state, const std::string& name, std::string& p
   if (state.session.frame) {
     const auto& counters = state.session.frame->counters;
     if (const auto counter = counters.find(name); counter != counters.end())
-      return formatted(counter->second, "%.4g");
+      return counter->second == std::floor(counter->second) && std::fabs(counter->second) < 1e12
+                 ? formatted(counter->second, "%.0f")  // counts as counts
+                 : formatted(counter->second, "%.4g");
   }
   problem = "{" + name + "}: no such number in this run (ms, ms:stage, or a counter such as error.rmse)";
   return "";
@@ -83,7 +86,8 @@ std::string number(const UiState& state, const std::string& name, std::string& p
 
 }  // namespace
 
-std::string fillNumbers(const UiState& state, const std::string& text, std::string& problem) {
+std::string fillNumbers(const UiState& state, const ScriptContext& context, const std::string& text,
+                        std::string& problem) {
   std::string out;
   problem.clear();
   for (size_t i = 0; i < text.size();) {
@@ -94,11 +98,24 @@ std::string fillNumbers(const UiState& state, const std::string& text, std::stri
       break;
     }
     out += text.substr(i, open - i);
-    out += number(state, text.substr(open + 1, close - open - 1), problem);
+    const std::string name = text.substr(open + 1, close - open - 1);
+    const auto kept = context.kept.find(name);
+    out += kept != context.kept.end() ? kept->second : number(state, name, problem);
     if (!problem.empty()) return "";
     i = close + 1;
   }
   return out;
+}
+
+std::string keepNumbers(const UiState& state, const json& a, ScriptContext& context) {
+  for (const auto& [name, what] : a.items()) {
+    if (!what.is_string()) return "\"" + name + "\": expected a number's name such as \"error.rmse\"";
+    std::string problem;
+    const std::string value = number(state, what.get<std::string>(), problem);
+    if (!problem.empty()) return problem;
+    context.kept[name] = value;
+  }
+  return "";
 }
 
 // 3. One exported view, recorded as a panel of the figure sheet.
@@ -108,7 +125,7 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
   ViewPanel& view = state.views.panels[state.views.activeView];
   std::string caption = viewCaption(state, view), problem;
   if (a.is_object() && a.contains("caption")) {
-    caption = fillNumbers(state, a["caption"].get<std::string>(), problem);
+    caption = fillNumbers(state, context, a["caption"].get<std::string>(), problem);
     if (!problem.empty()) return problem;
   }
   state.status = exportViewFiles(state, view, context.resolved(file), ExportKind::Both, annotate);

@@ -10,7 +10,7 @@
 // Numbers: a "say" text or a caption may hold {ms:stage} (that stage's median time over the
 // runs with the current settings; stages joined by '+' are summed), {ms} (the pipeline's
 // median) and {counter} (frame.counters, e.g. {error.rmse}); they are filled in when the
-// action runs. An unknown name stops the lesson (it would otherwise print a wrong number).
+// action runs; "keep" stores one under a name for a later text. An unknown name stops the lesson (it would otherwise print a wrong number).
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
@@ -26,8 +26,12 @@ std::string checkExportDirName(const nlohmann::json& value);
 // {"export_view": "f.png" | "dir" | {"file": "f.png", "caption": "...", "annotate": true}}
 std::string checkExportView(const nlohmann::json& value);
 
-// Replaces {ms:...}, {ms} and {counter} by the current run's numbers; "" in `problem` or why not.
-std::string fillNumbers(const UiState& state, const std::string& text, std::string& problem);
+// Replaces {ms:...}, {ms}, {counter} and kept names by the numbers; "" in `problem` or why not.
+std::string fillNumbers(const UiState& state, const ScriptContext& context, const std::string& text,
+                        std::string& problem);
+// {"keep": {"rmse_random": "error.rmse", "t_trace": "ms:trace"}}: this run's numbers, kept
+// under a name for a later text ("{rmse_random}").
+std::string keepNumbers(const UiState& state, const nlohmann::json& a, ScriptContext& context);
 // The export_view handler: exports, and records the PNG as a panel of the lesson.
 std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
 // At the end of a lesson with panels: figure_sheet.png/.pdf and lesson.md. "" or why not.

@@ -36,6 +36,8 @@
 //   {"export_view": {"file": "f.png", "caption": "... {ms:trace} ms", "annotate": true}}
 //                          (a panel of the lesson's figure sheet, with its caption)
 //   {"annotate": true}     (exported view PNGs carry a colour bar / legend and a caption)
+//   {"keep": {"rmse_a": "error.rmse"}}  (a number of this run, quoted later as {rmse_a};
+//                          says and captions quote {ms:stage}, {ms}, {error.rmse}, ...)
 // Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
 // waits for the student's "Next" (button, Space or N), and the window stays open at the end.
 //

@@ -162,6 +162,7 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"export_view", checkExportView,
        [](S& s, const json& a, C& c) { return exportView(s, a, c); }},
+      {"keep", kObject, [](S& s, const json& a, C& c) { return keepNumbers(s, a, c); }},
       {"annotate", kBool,
        [](S&, const json& a, C& c) {
          c.annotate = a.get<bool>();

@@ -3,6 +3,7 @@
 // state change a click makes). The runner (ui_script.h) only looks rows up.
 #pragma once
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct ScriptContext {
   std::string lessonTitle;
   std::vector<std::string> said;
   std::vector<FigurePanel> panels;
+  std::map<std::string, std::string> kept;  // "keep": numbers under names, for later texts
   // A relative export / screenshot path inside the export directory, if there is one.
   std::string resolved(const std::string& path) const;
 };

@@ -150,7 +150,7 @@ std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
 
 std::string say(UiState& state, const json& a, ScriptContext& context) {
   std::string problem;
-  state.lesson.text = fillNumbers(state, a.get<std::string>(), problem);
+  state.lesson.text = fillNumbers(state, context, a.get<std::string>(), problem);
   if (!problem.empty()) return problem;
   context.said.push_back(state.lesson.text);
   state.lesson.step = ++context.saysSeen;
