@@ -32,6 +32,10 @@ void drawPanel(cairo_t* cr, double x, double y, cairo_surface_t* image, char let
   cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_GOOD);
   cairo_paint(cr);
   cairo_restore(cr);
+  cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);  // a frame: white images stay apart from the page
+  cairo_set_line_width(cr, 1);
+  cairo_rectangle(cr, left - 0.5, top - 0.5, w * scale + 1, h * scale + 1);
+  cairo_stroke(cr);
   const std::string label = std::string("(") + letter + ") ";
   const double labelWidth = textWidth(cr, label, 13, true);
   drawText(cr, x, y + kSheetImage + 4, label, 13, 0, true);
