@@ -4,7 +4,7 @@
 #include "window/views/ui_categories.h"
 #include "window/views/ui_view_difference.h"
 
-// 1. Scene, what the view shows, eye size, the stage's parameters that differ from their
+// 1. Scene, what the view shows, its size, the stage's parameters that differ from their
 //    declared defaults (as the export file name lists them, app/window/panels/ui_export.h).
 std::string viewCaption(const UiState& state, const ViewPanel& view) {
   std::string shown = view.output;
@@ -13,9 +13,8 @@ std::string viewCaption(const UiState& state, const ViewPanel& view) {
       state.session.frame->texture(view.output).isArray())
     shown += " level " + std::to_string(view.settings.layer);
   std::string caption = state.session.scene.name + " · " + shown;
-  if (state.session.frame)
-    caption += " · " + std::to_string(state.session.frame->eyeWidth) + "x" +
-               std::to_string(state.session.frame->eyeHeight);
+  if (const GlTexture* texture = shownTexture(state, view))  // its own size: maps are not eye-sized
+    caption += " · " + std::to_string(texture->width()) + "x" + std::to_string(texture->height());
   const std::string stageName = view.output.substr(0, view.output.find('.'));
   std::string changed;
   for (const auto& stage : state.session.pipeline.stages()) {

@@ -1,7 +1,7 @@
 // What an annotated view PNG says below the image (app/figures/annotate.h): the view's
 // colour bar (its range and colormap, labelled with the output and channel shown), the
 // legend of a categorical mask (names from the output's doc, shares counted here), and the
-// caption line: scene, output, eye size and the producing stage's changed parameters.
+// caption line: scene, output, texture size and the producing stage's changed parameters.
 #pragma once
 #include <string>
 #include <vector>

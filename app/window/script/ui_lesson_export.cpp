@@ -141,6 +141,17 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
   return "";
 }
 
+// The window as a panel too: saved at the end of the next frame, before the sheet is drawn.
+std::string screenshot(const json& a, ScriptContext& context) {
+  const std::string file = a.is_string() ? a.get<std::string>() : a["file"].get<std::string>();
+  context.pendingScreenshot = context.resolved(file);
+  const std::string caption = a.is_object() && a.contains("caption")
+                                  ? a["caption"].get<std::string>()
+                                  : "the window: " + fs::path(file).stem().string();
+  context.panels.push_back({context.pendingScreenshot, caption});
+  return "";
+}
+
 // 4. The end of a lesson: the sheet and the text beside it.
 std::string finishLesson(const ScriptContext& context) {
   if (context.lessonTitle.empty() || context.panels.empty() || context.exportDirectory.empty())

@@ -169,11 +169,8 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        }},
       {"export_all", kString, [](S& s, const json& a, C& c) { return exportAll(s, a, c); }},
-      {"screenshot", kString,
-       [=](S&, const json& a, C& c) {
-         c.pendingScreenshot = c.resolved(text(a));
-         return std::string();
-       }},
+      {"screenshot", checkExportView,
+       [](S&, const json& a, C& c) { return screenshot(a, c); }},
       {"view", kCount,
        [](S& s, const json& a, C&) -> std::string {
          if (a.get<int>() > 1) return "views are 0 (A) and 1 (B)";
