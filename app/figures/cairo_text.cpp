@@ -12,6 +12,12 @@ void setFont(cairo_t* cr, double size, bool bold) {
   cairo_set_font_size(cr, size);
 }
 
+// Removes the last UTF-8 character whole (cairo refuses a string cut inside one).
+void popCharacter(std::string& text) {
+  while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80) text.pop_back();
+  if (!text.empty()) text.pop_back();
+}
+
 }  // namespace
 
 double textWidth(cairo_t* cr, const std::string& text, double size, bool bold) {
@@ -39,10 +45,7 @@ std::vector<std::string> wrapText(cairo_t* cr, const std::string& text, double s
   if (int(lines.size()) > maxLines) {  // cut: the last kept line ends with an ellipsis
     lines.resize(size_t(maxLines));
     std::string& last = lines.back();
-    while (!last.empty() && textWidth(cr, last + "…", size) > width) last.pop_back();
-    while (!last.empty() && (static_cast<unsigned char>(last.back()) & 0xC0) == 0x80)
-      last.pop_back();  // never leave half of a UTF-8 character
-    if (!last.empty() && (static_cast<unsigned char>(last.back()) & 0x80)) last.pop_back();
+    while (!last.empty() && textWidth(cr, last + "…", size) > width) popCharacter(last);
     last += "…";
   }
   return lines;

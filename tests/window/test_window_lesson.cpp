@@ -13,6 +13,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "figures/figure_sheet.h"
 #include "io/image_export.h"
 #include "support/command.h"
 #include "support/window_test.h"
@@ -81,6 +82,25 @@ TEST(WindowLesson, Fig32LessonExportsFiguresWhoseNoiseFallsWithRaysAndFilter) {
   EXPECT_GT(one, 1.3 * four) << one << " " << four;
   EXPECT_GT(four, 1.3 * sixteen) << four << " " << sixteen;
   EXPECT_GT(sixteen, 1.3 * filtered) << sixteen << " " << filtered;
+  // Issue 15: the lesson's figure sheet (its five panels, 3 + 2) as PNG and PDF, and its text.
+  OIIO::ImageBuf sheet((dir / "figure_sheet.png").string());
+  ASSERT_TRUE(sheet.read()) << sheet.geterror();
+  const SheetSize expected = figureSheetSize(5);
+  EXPECT_EQ(sheet.spec().width, expected.width);
+  EXPECT_EQ(sheet.spec().height, expected.height);
+  EXPECT_EQ(expected.width, 2 * kSheetMargin + 3 * kSheetCell + 2 * kSheetGap);  // 3 columns
+  EXPECT_EQ(expected.height, 2 * kSheetMargin + kSheetTitle + 2 * (kSheetImage + kSheetCaption) + kSheetGap);
+  EXPECT_GT(OIIO::ImageBufAlgo::computePixelStats(sheet).stddev[0], 0.05) << "the sheet looks blank";
+  std::ifstream pdf(dir / "figure_sheet.pdf", std::ios::binary);
+  std::string head(5, '\0');
+  ASSERT_TRUE(pdf.read(head.data(), 5));
+  EXPECT_EQ(head, "%PDF-");
+  EXPECT_GT(fs::file_size(dir / "figure_sheet.pdf"), 10000u);
+  std::ifstream text(dir / "lesson.md");
+  const std::string markdown((std::istreambuf_iterator<char>(text)), std::istreambuf_iterator<char>());
+  EXPECT_NE(markdown.find("- (e) `f_filter_minus_trace.png`: filter.visibility - trace.visibility"),
+            std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("5. What did the filter change?"), std::string::npos) << markdown;
   fs::remove_all(dir);
 }
 
