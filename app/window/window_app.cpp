@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "gl/gl_context.h"
@@ -62,6 +63,9 @@ void saveScreenshot(GLFWwindow* window, const std::string& path) {
   const size_t row = size_t(width) * 3;
   for (int y = 0; y < height; ++y)
     std::copy_n(&rgb[size_t(height - 1 - y) * row], row, &flipped[size_t(y) * row]);
+  // A lesson's or script's export folder may not exist yet (its first file is a screenshot).
+  if (const std::filesystem::path parent = std::filesystem::path(path).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent);
   writePng(path, flipped, width, height);
 }
 

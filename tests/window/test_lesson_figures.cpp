@@ -135,3 +135,16 @@ TEST(LessonFigures, ExportAnnotateAnnotatesPngsOnlyWhenAskedAndLeavesExrsRaw) {
   }
   fs::remove_all(dir);
 }
+
+// `make readme-figures` found it: a script whose first file is a screenshot into a new
+// --export folder.
+TEST(LessonFigures, AScreenshotCreatesItsExportFolder) {
+  REQUIRE_DISPLAY();
+  const fs::path dir = scratchDirectory("screenshot_folder");
+  const auto script = writeScript(dir, R"([{"eye_size": [160, 120]}, {"screenshot": "shot.png"}])");
+  const auto result = runPenumbra("--script " + script.string() +
+                                  " --export " + (dir / "new" / "folder").string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_EQ(specOf(dir / "new" / "folder" / "shot.png").width, 1280);
+  fs::remove_all(dir);
+}
