@@ -78,7 +78,9 @@ int main(int argc, char** argv) {
                                                          "--export, run it through and write its figures");
   lessonCommand->add_option("file", lesson.script, "lesson JSON (e.g. lessons/fig_3_2_progression.json)")
       ->required()->check(CLI::ExistingFile);
-  lessonCommand->add_option("--export", lesson.exportDirectory, "write the figures here and exit");
+  lessonCommand->add_option("--export", lesson.exportDirectory,
+                            "write the figures, their sheet (figure_sheet.png/.pdf) and lesson.md "
+                            "here and exit (played without it, they go to penumbra_exports/<lesson>)");
   lessonCommand->add_option("--scene", lesson.scene, "scene to start from")->capture_default_str();
   lessonCommand->add_option("--screenshot", lesson.screenshot, "save the window after --frames and exit");
   lessonCommand->add_option("--frames", lesson.frames, "frames before --screenshot")->check(CLI::Range(1, 100000));
