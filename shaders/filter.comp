@@ -6,6 +6,7 @@
 // include normal sensitivity", §3): times max(n_c . n_s, 0)^uNormalPower.
 #include "shared/screen_pass.glsl"
 #include "shared/filter_layout.h"
+#include "shared/filter_tiles.glsl"
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
 layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = FILTER_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
@@ -16,7 +17,7 @@ layout(location = FILTER_DEPTH_SCALE_LOCATION) uniform float uDepthScale;
 layout(location = FILTER_NORMAL_POWER_LOCATION) uniform float uNormalPower;  // 0: normals ignored
 
 void main() {
-  ivec2 pixel = screenPixel();
+  ivec2 pixel = filteredPixel();
   if (pixel.x < 0) return;
   vec4 center = texelFetch(wsPositionTexture, pixel, 0);
   float centerValue = texelFetch(sourceTexture, pixel, 0).r;

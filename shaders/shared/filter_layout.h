@@ -7,3 +7,15 @@
 #define FILTER_RADIUS_LOCATION 2
 #define FILTER_DEPTH_SCALE_LOCATION 3
 #define FILTER_NORMAL_POWER_LOCATION 4
+#define FILTER_TILED_LOCATION 5
+
+// The tiles the filter runs on (issue 14; filter_tiles.comp writes it, filter.comp reads
+// it): a std430 storage buffer holding a glDispatchComputeIndirect command (groups x, y, z:
+// one 8 x 8 group per tile), the number of image pixels in the listed tiles, then
+// uint tiles[] packed x | y << 16 in tile units. Frame buffer name "filter.tiles".
+#define FILTER_TILES_BINDING 0
+#define FILTER_TILE_SIZE 8  // = the 8 x 8 groups of screen_pass.glsl
+struct FilterTilesHeader {
+  uint groups[3];
+  uint pixels;
+};

@@ -1,16 +1,25 @@
 // Stage `filter` (thesis §3, Fig 3.2): a separable depth-sensitive Gaussian over the
-// trace's unfiltered visibility, horizontal then vertical.
+// trace's unfiltered visibility, horizontal then vertical; by default only over the tiles
+// where it can change a value (issue 14; shaders/filter_tiles.comp says why that is exact).
+#include <cstddef>
+
 #include "core/frame.h"
 #include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
-#include "shared/filter_layout.h"
 #include "shared/screen_pass_layout.h"
+namespace gpu {
+#include "shared/filter_layout.h"
+}  // namespace gpu
 
+static_assert(offsetof(gpu::FilterTilesHeader, pixels) == 12);
+static_assert(sizeof(gpu::FilterTilesHeader) == 16);  // std430: uint[3] stride 4, then uint
 static_assert(gpu::distinctBelow({FILTER_SOURCE_UNIT, FILTER_WS_POSITION_UNIT, FILTER_WS_NORMAL_UNIT},
                                  gpu::kTextureUnits));
 static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, FILTER_DIRECTION_LOCATION,
                                   FILTER_RADIUS_LOCATION, FILTER_DEPTH_SCALE_LOCATION,
-                                  FILTER_NORMAL_POWER_LOCATION}, gpu::kUniformLocations));
+                                  FILTER_NORMAL_POWER_LOCATION, FILTER_TILED_LOCATION},
+                                 gpu::kUniformLocations));
+static_assert(gpu::distinctBelow({FILTER_TILES_BINDING}, gpu::kStorageBindings));
 
 namespace {
 
@@ -27,6 +36,8 @@ public:
          {0, 0, 1, Colormap::Gray}},
         {"visibility", "Filtered visibility (both passes).", GL_R32F, {"visibility"},
          {0, 0, 1, Colormap::Gray}, kRoleShadowMethod},
+        Output::buffer("tiles", "The 8 x 8 tiles blurred (skip_uniform), after an indirect "
+                                "dispatch header (filter_layout.h)."),
     };
     params_ = {
         Param::boolean("enabled", "Blur the shadows (off: the visibility passes through).", true),
@@ -38,6 +49,10 @@ public:
                                            "do not bleed over sharp edges (§3).", false),
         Param::real("normal_power", "Exponent of max(n_c . n_s, 0) when normal_sensitive.", 8, 1,
                     64),
+        Param::boolean("skip_uniform", "Blur only the 8 x 8 tiles whose window (the tile grown "
+                                       "by the radius) holds a value other than 0 and 1, or "
+                                       "both; every other pixel keeps its value, exactly as "
+                                       "the full blur would leave it (off: every pixel).", true),
     };
   }
   std::string name() const override { return "filter"; }
@@ -51,25 +66,68 @@ public:
     const int radius = param("enabled").asBool() ? param("radius").asInt() : 0;
     const float normalPower =
         param("normal_sensitive").asBool() ? param("normal_power").asFloat() : 0.0f;
+    const bool tiled = param("skip_uniform").asBool();
+    const GlTexture& source = frame.input(*this, "visibility");
+    GlTexture& horizontal = frame.output(*this, "horizontal", w, h);
+    GlTexture& filtered = frame.output(*this, "visibility", w, h);
+    glBindTextureUnit(FILTER_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(FILTER_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    if (tiled) {
+      // 1. The tiles where the blur can change a value, and an indirect dispatch over them.
+      GlBuffer& tiles = frame.outputBuffer(*this, "tiles");
+      const int tilesX = (w + FILTER_TILE_SIZE - 1) / FILTER_TILE_SIZE;
+      const int tilesY = (h + FILTER_TILE_SIZE - 1) / FILTER_TILE_SIZE;
+      const size_t bytes = sizeof(gpu::FilterTilesHeader) + size_t(tilesX) * tilesY * 4;
+      GLint64 currentBytes = 0;
+      glGetNamedBufferParameteri64v(tiles.id(), GL_BUFFER_SIZE, &currentBytes);
+      if (size_t(currentBytes) != bytes) tiles.upload(nullptr, bytes);
+      const gpu::FilterTilesHeader empty{{0, 1, 1}, 0};
+      glNamedBufferSubData(tiles.id(), 0, sizeof empty, &empty);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, FILTER_TILES_BINDING, tiles.id());
+      glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, tiles.id());
+      if (radius > 0) {
+        tilesProgram_.use();
+        glUniform1i(FILTER_RADIUS_LOCATION, radius);
+        glBindTextureUnit(FILTER_SOURCE_UNIT, source.id());
+        glDispatchCompute(GLuint(tilesX), GLuint(tilesY), 1);
+        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+      }
+      // 2. Every other pixel keeps its value in both passes.
+      glCopyImageSubData(source.id(), GL_TEXTURE_2D, 0, 0, 0, 0, horizontal.id(), GL_TEXTURE_2D,
+                         0, 0, 0, 0, w, h, 1);
+      glCopyImageSubData(source.id(), GL_TEXTURE_2D, 0, 0, 0, 0, filtered.id(), GL_TEXTURE_2D, 0,
+                         0, 0, 0, w, h, 1);
+    }
+    // 3. The two passes: over the listed tiles, or over every pixel.
     program_.use();
+    glUniform1i(FILTER_TILED_LOCATION, tiled);
     glUniform1i(FILTER_RADIUS_LOCATION, radius);
     glUniform1f(FILTER_DEPTH_SCALE_LOCATION, param("depth_scale").asFloat());
     glUniform1f(FILTER_NORMAL_POWER_LOCATION, normalPower);
-    glBindTextureUnit(FILTER_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(FILTER_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
-    GlTexture& horizontal = frame.output(*this, "horizontal", w, h);
-    pass(frame.input(*this, "visibility"), horizontal, {1, 0}, w, h);
-    pass(horizontal, frame.output(*this, "visibility", w, h), {0, 1}, w, h);
+    pass(source, horizontal, {1, 0}, tiled, w, h);
+    pass(horizontal, filtered, {0, 1}, tiled, w, h);
+    if (!tiled) {
+      frame.counters["filter.pixels"] = double(w) * h;
+      return;
+    }
+    gpu::FilterTilesHeader listed{};
+    glGetNamedBufferSubData(frame.outputBuffer(*this, "tiles").id(), 0, sizeof listed, &listed);
+    frame.counters["filter.tiles"] = listed.groups[0];
+    frame.counters["filter.pixels"] = listed.pixels;
   }
 
 private:
-  void pass(const GlTexture& source, GlTexture& target, glm::ivec2 direction, int w, int h) {
+  void pass(const GlTexture& source, GlTexture& target, glm::ivec2 direction, bool tiled, int w,
+            int h) {
     glBindTextureUnit(FILTER_SOURCE_UNIT, source.id());
     glBindImageTexture(FILTER_TARGET_IMAGE, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform2i(FILTER_DIRECTION_LOCATION, direction.x, direction.y);
-    dispatchRows(w, h);
+    if (!tiled) return dispatchRows(w, h);
+    glDispatchComputeIndirect(0);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
   }
   ShaderProgram program_{{{GL_COMPUTE_SHADER, "filter.comp"}}};
+  ShaderProgram tilesProgram_{{{GL_COMPUTE_SHADER, "filter_tiles.comp"}}};
 };
 
 }  // namespace

@@ -1,0 +1,44 @@
+// Stage `filter`, step 1 (issue 14): list the 8 x 8 tiles where the blur can change a value.
+// The filter's output at a pixel is sum(w_k v_k) / sum(w_k) over the receivers in its
+// (2r+1)^2 window (both passes), with the center's weight > 0; when every one of those v_k
+// is exactly 0, the sum is 0, and when every one is exactly 1, the two sums add the same
+// numbers in the same order, so the quotient is exactly 1: the pixel keeps its value. A
+// tile is listed unless the window of every pixel in it (the tile grown by r) holds one
+// value, 0 or 1, over the receivers (background pixels are never taps).
+#include "shared/frame.glsl"
+#include "shared/filter_layout.h"
+layout(local_size_x = FILTER_TILE_SIZE, local_size_y = FILTER_TILE_SIZE) in;
+layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
+layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
+layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
+  FilterTilesHeader header;
+  uint tiles[];
+};
+
+shared uint seen;  // bit 0: a receiver of value 0 in the grown tile; bit 1: of 1; bit 2: other
+
+void main() {
+  if (gl_LocalInvocationIndex == 0u) seen = 0u;
+  barrier();
+  // 1. The values over the tile grown by the radius, clipped to the image.
+  ivec2 size = ivec2(frame.sizes.xy);
+  ivec2 tileOrigin = ivec2(gl_WorkGroupID.xy) * FILTER_TILE_SIZE;
+  ivec2 low = max(tileOrigin - uRadius, ivec2(0));
+  ivec2 high = min(tileOrigin + FILTER_TILE_SIZE + uRadius, size);
+  uint bits = 0u;
+  for (int y = low.y + int(gl_LocalInvocationID.y); y < high.y; y += FILTER_TILE_SIZE)
+    for (int x = low.x + int(gl_LocalInvocationID.x); x < high.x; x += FILTER_TILE_SIZE) {
+      if (texelFetch(wsPositionTexture, ivec2(x, y), 0).w == 0.0) continue;
+      uint value = floatBitsToUint(texelFetch(sourceTexture, ivec2(x, y), 0).r);
+      bits |= value == 0u ? 1u : value == floatBitsToUint(1.0) ? 2u : 4u;  // -0.0 is "other"
+    }
+  if (bits != 0u) atomicOr(seen, bits);
+  barrier();
+  // 2. Listed when more than one value, or a value other than 0 and 1, was seen.
+  if (gl_LocalInvocationIndex != 0u || seen < 3u) return;
+  uint index = atomicAdd(header.groups[0], 1u);
+  tiles[index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
+  ivec2 inside = min(size - tileOrigin, ivec2(FILTER_TILE_SIZE));
+  atomicAdd(header.pixels, uint(inside.x * inside.y));
+}

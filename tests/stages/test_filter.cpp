@@ -1,0 +1,124 @@
+// Stage `filter` blurs only the tiles where its window holds more than one value (issue 14,
+// item 2): bit for bit the output of the blur over every pixel, both passes, on several
+// scenes and parameters; the tiles it lists are the ones a CPU count over the trace's
+// visibility finds; and most of a shadowed scene is skipped.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "scene/scene_builtin.h"
+#include "support/gl_test.h"
+
+namespace {
+
+constexpr int kTile = 8;
+
+// The tiles (and their image pixels) whose window, the tile grown by `radius` and clipped
+// to the image, holds a receiver whose visibility is neither exactly 0 nor exactly 1, or
+// receivers of both: counted on the CPU from the filter's inputs.
+struct TileCount {
+  int tiles = 0, pixels = 0;
+};
+TileCount expectedTiles(const std::vector<float>& visibility, const std::vector<float>& wsPosition,
+                        int w, int h, int radius) {
+  TileCount count;
+  if (radius == 0) return count;
+  for (int ty = 0; ty * kTile < h; ++ty)
+    for (int tx = 0; tx * kTile < w; ++tx) {
+      bool zero = false, one = false, other = false;
+      for (int y = std::max(ty * kTile - radius, 0); y < std::min((ty + 1) * kTile + radius, h); ++y)
+        for (int x = std::max(tx * kTile - radius, 0); x < std::min((tx + 1) * kTile + radius, w);
+             ++x) {
+          const size_t i = size_t(y) * w + x;
+          if (wsPosition[4 * i + 3] == 0.0f) continue;
+          std::uint32_t bits;
+          std::memcpy(&bits, &visibility[i], 4);
+          zero |= bits == 0u;
+          one |= visibility[i] == 1.0f;
+          other |= bits != 0u && visibility[i] != 1.0f;
+        }
+      if (other || (zero && one)) {
+        ++count.tiles;
+        count.pixels += std::min(kTile, w - tx * kTile) * std::min(kTile, h - ty * kTile);
+      }
+    }
+  return count;
+}
+
+bool sameBits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+int differing(const std::vector<float>& a, const std::vector<float>& b) {
+  int count = 0;
+  for (size_t i = 0; i < a.size(); ++i) count += std::memcmp(&a[i], &b[i], sizeof(float)) != 0;
+  return count;
+}
+
+}  // namespace
+
+struct FilterCase {
+  const char* scene;
+  std::vector<std::string> sets;
+};
+
+class FilterTiles : public ::testing::TestWithParam<FilterCase> {};
+
+TEST_P(FilterTiles, SameBitsAsTheBlurOverEveryPixelAndTheTilesACpuCountFinds) {
+  const FilterCase& c = GetParam();
+  std::vector<std::string> sets = {"light.resolution=256"};
+  sets.insert(sets.end(), c.sets.begin(), c.sets.end());
+  const int w = 200, h = 150;  // not a multiple of the tile in y: clipped tiles
+  PipelineRun run(makeBuiltinScene(c.scene), sets, w, h);
+  std::string where = c.scene;
+  for (const std::string& set : c.sets) where += " " + set;
+
+  const auto traced = run.read("trace.visibility");
+  const auto tiledHorizontal = run.read("filter.horizontal");
+  const auto tiled = run.read("filter.visibility");
+  const double pixels = run.frame->counters.at("filter.pixels");
+  const double tiles = run.frame->counters.at("filter.tiles");
+  const int radius = run.pipeline->param("filter.radius").asInt();
+  const TileCount expected =
+      expectedTiles(traced, run.read("gbuffer.wsPosition"), w, h, radius);
+  EXPECT_EQ(tiles, expected.tiles) << where;
+  EXPECT_EQ(pixels, expected.pixels) << where;
+
+  ASSERT_EQ(run.pipeline->set("filter.skip_uniform=false"), "");
+  run.run();
+  ASSERT_TRUE(sameBits(traced, run.read("trace.visibility"))) << where << ": the trace changed";
+  EXPECT_EQ(run.frame->counters.at("filter.pixels"), double(w) * h) << where;
+  const auto full = run.read("filter.visibility");
+  EXPECT_TRUE(sameBits(tiledHorizontal, run.read("filter.horizontal")))
+      << where << ": " << differing(tiledHorizontal, run.read("filter.horizontal"))
+      << " pixels differ after the horizontal pass";
+  EXPECT_TRUE(sameBits(tiled, full)) << where << ": " << differing(tiled, full) << " pixels differ";
+  if (radius > 0) {
+    EXPECT_GT(differing(traced, full), 0) << where << ": the blur changed nothing";
+  }
+}
+
+// Cube, spheres and engine; radii from 1 to the maximum; depth and normal weights; 2 x 2 and
+// 3 x 3 rays; classification off (the trace then writes every pixel).
+INSTANTIATE_TEST_SUITE_P(
+    ScenesAndParameters, FilterTiles,
+    ::testing::Values(FilterCase{"cube", {}}, FilterCase{"cube", {"filter.radius=1"}},
+                      FilterCase{"cube", {"filter.radius=32", "trace.rays=3"}},
+                      FilterCase{"cube", {"filter.radius=0"}},
+                      FilterCase{"spheres", {"filter.radius=7", "filter.depth_scale=0"}},
+                      FilterCase{"spheres", {"filter.normal_sensitive=true"}},
+                      FilterCase{"engine", {"filter.radius=3", "trace.rays=3"}},
+                      FilterCase{"engine", {"trace.use_classification=false",
+                                            "filter.normal_sensitive=true",
+                                            "filter.depth_scale=500"}}));
+
+// Most of a shadowed scene is lit or umbra far from any penumbra: the count the speed-up
+// rests on (cube, 640 x 480, the window's defaults).
+TEST(FilterTileCount, MostOfTheCubeIsSkipped) {
+  PipelineRun run(makeBuiltinScene("cube"), {}, 640, 480);
+  const double pixels = run.frame->counters.at("filter.pixels");
+  EXPECT_GT(pixels, 0.0);
+  EXPECT_LT(pixels, 0.5 * 640 * 480);
+}
