@@ -3,20 +3,20 @@
 // (2r+1)^2 window (both passes), with the center's weight > 0; when every one of those v_k
 // is exactly 0, the sum is 0, and when every one is exactly 1, the two sums add the same
 // numbers in the same order, so the quotient is exactly 1: the pixel keeps its value. A
-// tile is listed unless the window of every pixel in it (the tile grown by r) holds one
-// value, 0 or 1, over the receivers (background pixels are never taps).
+// tile is listed unless every pixel of the tile grown by r holds the same value, 0 or 1.
+// Background pixels are never taps, but they are looked at too: one fetch per pixel
+// instead of two, at the price of listing a tile where the background meets umbra.
 #include "shared/frame.glsl"
 #include "shared/filter_layout.h"
 layout(local_size_x = FILTER_TILE_SIZE, local_size_y = FILTER_TILE_SIZE) in;
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
-layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
 layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
   FilterTilesHeader header;
   uint tiles[];
 };
 
-shared uint seen;  // bit 0: a receiver of value 0 in the grown tile; bit 1: of 1; bit 2: other
+shared uint seen;  // bit 0: a value 0 in the grown tile; bit 1: a 1; bit 2: any other
 
 void main() {
   if (gl_LocalInvocationIndex == 0u) seen = 0u;
@@ -29,7 +29,6 @@ void main() {
   uint bits = 0u;
   for (int y = low.y + int(gl_LocalInvocationID.y); y < high.y; y += FILTER_TILE_SIZE)
     for (int x = low.x + int(gl_LocalInvocationID.x); x < high.x; x += FILTER_TILE_SIZE) {
-      if (texelFetch(wsPositionTexture, ivec2(x, y), 0).w == 0.0) continue;
       uint value = floatBitsToUint(texelFetch(sourceTexture, ivec2(x, y), 0).r);
       bits |= value == 0u ? 1u : value == floatBitsToUint(1.0) ? 2u : 4u;  // -0.0 is "other"
     }

@@ -13,6 +13,7 @@
 #include "bench/bench_report.h"
 #include "bench/bench_raster4d.h"
 #include "bench/bench_hierarchy.h"
+#include "bench/bench_compare.h"
 #include "bench/bench_stages.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
@@ -182,6 +183,29 @@ int main(int argc, char** argv) {
   benchHierarchyCommand->add_option("--height", hierarchyBench.height)->check(CLI::Range(16, 4096));
   benchHierarchyCommand->add_option("--set", hierarchyBench.sets, "stage.key=value for both");
 
+  BenchCompareOptions compareBench;
+  CLI::App* benchCompareCommand = app.add_subcommand(
+      "bench-compare", "configurations timed back to back, frames alternating: per-stage "
+                       "medians, counters, error against the reference, ratios (issue 14)");
+  benchCompareCommand->add_option("--out", compareBench.out, "Markdown file")->capture_default_str();
+  benchCompareCommand->add_option("--title", compareBench.title, "the table's heading");
+  benchCompareCommand->add_option("--scene", compareBench.scene)->capture_default_str();
+  benchCompareCommand->add_option("--frames", compareBench.frames, "timed frames per side")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  benchCompareCommand->add_option("--warmup", compareBench.warmup, "untimed frames first")
+      ->check(CLI::Range(0, 100))->capture_default_str();
+  benchCompareCommand->add_option("--width", compareBench.width)->check(CLI::Range(16, 4096));
+  benchCompareCommand->add_option("--height", compareBench.height)->check(CLI::Range(16, 4096));
+  benchCompareCommand->add_option("--set", compareBench.sets, "stage.key=value for every side");
+  benchCompareCommand->add_option("--side", compareBench.sides,
+                                  "label:stage.key=value;stage.key=value (repeatable)")->required();
+  benchCompareCommand->add_option("--requested", compareBench.requested,
+                                  "outputs to run for (default: every stage)")->delimiter(',');
+  benchCompareCommand->add_option("--counters", compareBench.counters,
+                                  "frame counters to report")->delimiter(',');
+  benchCompareCommand->add_option("--error-of", compareBench.errorOf,
+                                  "a method whose error against the reference to report");
+
   BenchOptions report;
   CLI::App* benchCommand = app.add_subcommand(
       "bench", "speed against error: every configuration timed and compared with the exact "
@@ -231,6 +255,7 @@ int main(int argc, char** argv) {
     if (*benchStagesCommand) return runBenchStages(benching);
     if (*benchRaster4dCommand) return runBenchRaster4d(raster4dBench);
     if (*benchHierarchyCommand) return runBenchHierarchy(hierarchyBench);
+    if (*benchCompareCommand) return runBenchCompare(compareBench);
     if (*benchCommand) {
       for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
       return runBench(report);
