@@ -1,7 +1,7 @@
-// Min-max mipmap level n (layout in shared/minmax.glsl): level n takes min/max over the
-// (up to) 2 x 2 children in level n-1. Levels 0 and 1 are one pass (uLevel = 1): each
-// invocation copies its children from the layers as (near, near, far) into level 0 and
-// writes their parent, so level 0 is never read back; a 1 x 1 map has level 0 alone (0).
+// Min-max mipmap level n >= 1 (layout in shared/minmax.glsl): level n takes min/max over
+// the (up to) 2 x 2 children in level n-1. Level 1 reads its children from the layers as
+// (near, near, far): level 0 is the layers, never stored (issue 14: storing it was a full
+// RGBA32F copy, half the build).
 #include "shared/minmax.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/minmax_layout.h"
@@ -16,17 +16,14 @@ void main() {
   ivec2 levelSize = ivec2(minmaxLevelSize(uLevel, uSize.x), minmaxLevelSize(uLevel, uSize.y));
   if (any(greaterThanEqual(texel, levelSize))) return;
   vec4 bounds;
-  if (uLevel <= 1) {
-    int scale = uLevel + 1;
-    for (int child = 0; child < scale * scale; ++child) {
-      ivec2 finer = scale * texel + ivec2(child & 1, child >> 1);
+  if (uLevel == 1) {
+    for (int child = 0; child < 4; ++child) {
+      ivec2 finer = 2 * texel + ivec2(child & 1, child >> 1);
       if (any(greaterThanEqual(finer, uSize))) continue;  // the first child always exists
       float nearDepth = texelFetch(nearLayer, finer, 0).r, farDepth = texelFetch(farLayer, finer, 0).r;
       vec4 b = vec4(nearDepth, nearDepth, farDepth, 0.0);
-      imageStore(atlas, finer, b);
       bounds = child == 0 ? b : vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
     }
-    if (uLevel == 0) return;
   } else {
     ivec2 finerSize = ivec2(minmaxLevelSize(uLevel - 1, uSize.x), minmaxLevelSize(uLevel - 1, uSize.y));
     ivec2 finerOrigin = minmaxLevelOrigin(uLevel - 1, uSize);

@@ -21,16 +21,15 @@ glm::ivec2 minmaxLevelSize(int level, int width, int height) {
 }
 
 glm::ivec2 minmaxLevelOrigin(int level, int width, int height) {
-  if (level == 0) return {0, 0};
   int y = 0;  // levels 1 .. level-1 stacked (the GLSL has the closed form)
   for (int finer = 1; finer < level; ++finer) y += minmaxLevelSize(finer, width, height).y;
-  return {width, y};
+  return {0, y};
 }
 
 glm::ivec2 minmaxAtlasSize(int width, int height) {
   const int top = minmaxTopLevel(width, height);
-  const int stacked = top >= 1 ? minmaxLevelOrigin(top + 1, width, height).y : 0;
-  return {width + (top >= 1 ? (width + 1) / 2 : 0), std::max(height, stacked)};
+  if (top == 0) return {1, 1};  // a 1 x 1 map: level 0 alone, the layers
+  return {(width + 1) / 2, minmaxLevelOrigin(top + 1, width, height).y};
 }
 
 void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
@@ -47,27 +46,23 @@ void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
                                 std::to_string(atlasSize.x) + "x" + std::to_string(atlasSize.y) +
                                 " (minmaxAtlasSize)");
   // 1. Texels of the atlas outside every level are (0, 0, 0, 0); nothing reads them. Only
-  //    those are cleared (right of each level >= 1 in the right column, and below them).
+  //    those are cleared (right of each level >= 2; all of a 1 x 1 map's atlas).
   const int top = minmaxTopLevel(width, height);
   const float zeros[4] = {0, 0, 0, 0};
-  for (int level = 1; level <= top + 1; ++level) {
+  if (top == 0) glClearTexImage(atlas.id(), 0, GL_RGBA, GL_FLOAT, zeros);
+  for (int level = 2; level <= top; ++level) {
     const glm::ivec2 origin = minmaxLevelOrigin(level, width, height);
-    const glm::ivec2 size = level <= top ? minmaxLevelSize(level, width, height)
-                                         : glm::ivec2(0, atlasSize.y - origin.y);
-    if (origin.x + size.x < atlasSize.x && size.y > 0)
-      glClearTexSubImage(atlas.id(), 0, origin.x + size.x, origin.y, 0,
-                         atlasSize.x - origin.x - size.x, size.y, 1, GL_RGBA, GL_FLOAT, zeros);
+    const glm::ivec2 size = minmaxLevelSize(level, width, height);
+    glClearTexSubImage(atlas.id(), 0, size.x, origin.y, 0, atlasSize.x - size.x, size.y, 1,
+                       GL_RGBA, GL_FLOAT, zeros);
   }
-  if (height < atlasSize.y)  // below level 0 (maps much wider than tall)
-    glClearTexSubImage(atlas.id(), 0, 0, height, 0, width, atlasSize.y - height, 1, GL_RGBA,
-                       GL_FLOAT, zeros);
-  // 2. Levels 0 and 1 in one pass, then level n from level n-1.
+  // 2. Level 1 from the layers, then level n from level n-1.
   level_.use();
   glBindTextureUnit(MINMAX_NEAR_UNIT, nearLayer.id());
   glBindTextureUnit(MINMAX_FAR_UNIT, farLayer.id());
   glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glUniform2i(MINMAX_SIZE_LOCATION, width, height);
-  for (int level = std::min(top, 1); level <= top; ++level) {
+  for (int level = 1; level <= top; ++level) {
     const glm::ivec2 size = minmaxLevelSize(level, width, height);
     glUniform1i(MINMAX_LEVEL_LOCATION, level);
     glDispatchCompute(GLuint(size.x + 7) / 8, GLuint(size.y + 7) / 8, 1);

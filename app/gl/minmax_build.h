@@ -1,6 +1,6 @@
 // Building the min-max mipmap (issue 14; layout in shaders/shared/minmax.glsl) from the
-// near and far light layers: level 0 copies the layers, level n takes the min/max of the
-// (up to) 2 x 2 children in level n-1, all in one atlas texture.
+// near and far light layers: level 0 is the layers themselves (not stored), level n >= 1
+// takes the min/max of the (up to) 2 x 2 children in level n-1, levels >= 1 in one atlas.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -9,10 +9,11 @@
 
 // Top level: ceil(log2(max(W, H))), one texel over the whole map.
 int minmaxTopLevel(int width, int height);
-// Texels of level `level` per axis, and its origin in the atlas (as the GLSL functions).
+// Texels of level `level` per axis, and the origin in the atlas of a level >= 1 (as the
+// GLSL functions).
 glm::ivec2 minmaxLevelSize(int level, int width, int height);
 glm::ivec2 minmaxLevelOrigin(int level, int width, int height);
-// The atlas: (W + ceil(W/2)) x max(H, stacked heights of levels >= 1).
+// The atlas: ceil(W/2) x (stacked heights of levels >= 1); 1 x 1 for a 1 x 1 map.
 glm::ivec2 minmaxAtlasSize(int width, int height);
 
 class MinMaxBuilder {

@@ -7,17 +7,18 @@
 // in level n-1 (at the borders of odd sizes, only the children that exist). Top level:
 // ceil(log2(max(W, H))), one texel over the whole map.
 //
-// Storage: one RGBA32F 2D texture, an atlas (C++: app/gl/minmax_build.h): level 0 at
-// (0, 0); level n >= 1 at x = W, y = the heights of levels 1 .. n-1 stacked. The atlas is
-// (W + ceil(W/2)) x max(H, sum of those heights) texels; the levels use 4/3 of one level.
+// Storage: level 0 is not stored: it is the light layers themselves, (near, near, far),
+// read there (trace_ray.glsl hierarchyTexel). Levels n >= 1 are one RGBA32F 2D texture, an
+// atlas (C++: app/gl/minmax_build.h): level n at x = 0, y = the heights of levels 1 .. n-1
+// stacked. The atlas is ceil(W/2) x (sum of those heights) texels (1 x 1 for a 1 x 1 map);
+// the stored levels use 1/3 of one level.
 
 // Texels of level `level` along an axis of `size` level-0 texels.
 int minmaxLevelSize(int level, int size) { return (size + (1 << level) - 1) >> level; }
 
-// Atlas origin of level `level`. The stacked heights sum_{j=1}^{n-1} ceil(H / 2^j) in closed
+// Atlas origin of level `level` >= 1. The stacked heights sum_{j=1}^{n-1} ceil(H / 2^j) in closed
 // form: ceil(H / 2^j) = floor((H - 1) / 2^j) + 1, and sum_{j>=1} floor(m / 2^j) = m - bitCount(m).
 ivec2 minmaxLevelOrigin(int level, ivec2 size) {
-  if (level == 0) return ivec2(0);
   int m = size.y - 1, tail = m >> (level - 1);
-  return ivec2(size.x, (m - bitCount(m)) - (tail - bitCount(tail)) + level - 1);
+  return ivec2(0, (m - bitCount(m)) - (tail - bitCount(tail)) + level - 1);
 }

@@ -91,13 +91,15 @@ vec2 fetchLayers(ivec2 texel) {
   return vec2(texelFetch(nearLayer, texel, 0).r, texelFetch(farLayer, texel, 0).r);
 }
 // One texel of the hierarchy (trace.limits.z): an N-buffer texel (nbuffer.glsl), or a
-// min-max mipmap texel in level coordinates (minmax.glsl).
+// min-max mipmap texel in level coordinates (minmax.glsl; level 0 is the layers).
 vec4 hierarchyTexel(ivec2 texel, int level) {
-  if (trace.limits.z == HIERARCHY_MINMAX)
+  if (trace.limits.z != HIERARCHY_MINMAX) return texelFetch(nbufferLevels, ivec3(texel, level), 0);
+  if (level > 0)
     return texelFetch(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel, 0);
-  return texelFetch(nbufferLevels, ivec3(texel, level), 0);
+  float nearDepth = texelFetch(nearLayer, texel, 0).r;
+  return vec4(nearDepth, nearDepth, texelFetch(farLayer, texel, 0).r, 0.0);
 }
-vec4 fetchHierarchy(ivec2 texel, int level) {  // counted
-  gFetches += 1u;
+vec4 fetchHierarchy(ivec2 texel, int level) {  // counted: level 0 of the min-max mipmap is 2
+  gFetches += trace.limits.z == HIERARCHY_MINMAX && level == 0 ? 2u : 1u;
   return hierarchyTexel(texel, level);
 }

@@ -1,7 +1,8 @@
 // Stage `minmax` (issue 14): the min-max mipmap over the light layers, the conventional
 // image pyramid of thesis §5.1's future work ("maximum mipmaps", Tevs et al. 2008). Each
 // texel holds (zNearMin, zNearMax, zFarMax) over a quadtree-aligned cell, from its 2 x 2
-// children: 4/3 of one level's memory where the N-buffer (§3.5) keeps log2(W) + 1 levels.
+// children: 1/3 of one level's memory (level 0 is the layers) where the N-buffer (§3.5)
+// keeps log2(W) + 1 levels.
 // Layout: shaders/shared/minmax.glsl. The trace searches it when trace.hierarchy = minmax.
 #include "core/frame.h"
 #include "gl/minmax_build.h"
@@ -16,8 +17,8 @@ public:
         Input::texture("far", "Far layer: zFarMax.", GL_DEPTH_COMPONENT32F),
     };
     outputs_ = {{"levels",
-                 "Min-max mipmap, every level in one atlas: level 0 at the left, level n >= 1 "
-                 "stacked on the right; a level-n texel holds min/max light depths over an "
+                 "Min-max mipmap, levels n >= 1 stacked in one atlas (level 0 is the light "
+                 "layers, not stored); a level-n texel holds min/max light depths over an "
                  "aligned 2^n x 2^n cell (x: min near, y: max near, z: max far).",
                  GL_RGBA32F,
                  {"zNearMin", "zNearMax", "zFarMax", "unused"},
