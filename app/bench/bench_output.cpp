@@ -3,6 +3,7 @@
 #include "io/output_path.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -94,8 +95,59 @@ std::string thesisCell(const BenchResult* r) {
   return fixed(r->msMedian, 0) + " ms (" + fixed(1000.0 / r->msMedian, 1) + " fps)";
 }
 
+// The thesis's frames per second (§4.2, Nvidia 8800 GTS), rows as in thesisTables: Tables
+// 4.1 (dragon) and 4.2 (cube) at 1024x768 by map 256/512/1024; Tables 4.3 (dragon) and 4.4
+// (cube) at map 512 by screen 800x600/1024x768/1280x1024.
+constexpr double kThesisByMap[2][6][3] = {
+    {{46, 40, 28}, {37, 34, 21}, {30, 26, 18}, {18, 16, 12}, {25, 18, 15}, {12, 11, 10}},
+    {{70, 50, 35}, {60, 45, 31}, {66, 47, 34}, {50, 44, 30}, {36, 32, 23}, {25, 22, 17}}};
+constexpr double kThesisByScreen[2][6][3] = {
+    {{45, 40, 32}, {40, 34, 22}, {33, 26, 19}, {20, 16, 12}, {27, 18, 14}, {17, 11, 8}},
+    {{74, 50, 41}, {61, 45, 34}, {70, 47, 41}, {49, 44, 35}, {41, 32, 23}, {31, 22, 15}}};
+
+// Ours beside the thesis's as ratios (absolute frame rates of a 2009 GPU and llvmpipe do not
+// compare): hierarchical over linear/binary and deferred over forward (time of the slower
+// over time of the faster, = fps ratio), and the frame rate at the last column over the
+// first (256 -> 1024 maps, 800x600 -> 1280x1024 screens).
+void thesisRatios(std::ostringstream& md, const std::string& scene, const char* axis,
+                  const double (&thesis)[6][3], const std::vector<std::string>& columns,
+                  const std::function<const BenchResult*(int row, int column)>& at) {
+  auto ratio = [&](int slowRow, int fastRow, int column) {
+    const BenchResult *slow = at(slowRow, column), *fast = at(fastRow, column);
+    return std::make_pair(slow && fast ? fixed(slow->msMedian / fast->msMedian, 2) + "x" : "-",
+                          fixed(thesis[fastRow][column] / thesis[slowRow][column], 2) + "x");
+  };
+  md << "Ratios beside the thesis's (" << scene << "; by " << axis << "): ours / thesis\n\n| ratio | rays |";
+  for (const std::string& column : columns) md << " " << column << " |";
+  md << "\n|---|---|";
+  for (size_t c = 0; c < columns.size(); ++c) md << "---|";
+  md << "\n";
+  for (int rays = 0; rays < 2; ++rays) {
+    md << "| hierarchical / linear-binary, deferred | " << rays + 2 << "x" << rays + 2;
+    for (int c = 0; c < 3; ++c) {
+      const auto [ours, theirs] = ratio(4 + rays, rays, c);
+      md << " | " << ours << " / " << theirs;
+    }
+    md << " |\n| deferred / forward, hierarchical | " << rays + 2 << "x" << rays + 2;
+    for (int c = 0; c < 3; ++c) {
+      const auto [ours, theirs] = ratio(2 + rays, rays, c);
+      md << " | " << ours << " / " << theirs;
+    }
+    md << " |\n";
+  }
+  for (int row = 0; row < 6; ++row) {
+    const BenchResult *first = at(row, 0), *last = at(row, 2);
+    const char* names[3] = {"hierarchical, deferred", "hierarchical, forward", "linear-binary, deferred"};
+    md << "| fps " << columns[2] << " / fps " << columns[0] << ", " << names[row / 2] << " | "
+       << (row % 2 ? "3x3" : "2x2") << " | | | "
+       << (first && last ? fixed(first->msMedian / last->msMedian, 2) : "-") << " / "
+       << fixed(thesis[row][2] / thesis[row][0], 2) << " |\n";
+  }
+  md << "\n";
+}
+
 void thesisTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
-                  const std::vector<BenchResult>& results) {
+                  const std::vector<BenchResult>& results, const std::string& scene) {
   struct Row { std::string family, search, deferred; int rays; };
   const std::vector<Row> rows = {{"hierarchical 2L", "hierarchical", "yes", 2},
                                  {"hierarchical 2L", "hierarchical", "yes", 3},
@@ -110,6 +162,12 @@ void thesisTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
     for (int map : {256, 512, 1024}) md << " | " << thesisCell(find(results, 0, row.family, row.rays, map));
     md << " |\n";
   }
+  const int table = scene == "dragon" ? 0 : 1;  // the thesis's dragon, or its (elongated) cube
+  md << "\n";
+  thesisRatios(md, scene + " against the thesis's " + (table ? "cube, Table 4.2" : "dragon, Table 4.1"),
+               "map", kThesisByMap[table], {"256", "512", "1024"}, [&](int row, int column) {
+                 return find(results, 0, rows[row].family, rows[row].rays, 256 << column);
+               });
   md << "\n## Thesis Table 4.3/4.4 shape: screen resolution (shadow map 512x512)\n\n| search type | rays | deferred |";
   std::vector<size_t> bySize(setups.size());
   for (size_t i = 0; i < setups.size(); ++i) bySize[i] = i;
@@ -126,6 +184,11 @@ void thesisTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
     md << " |\n";
   }
   md << "\n";
+  if (bySize.size() == 3)
+    thesisRatios(md, scene + " against the thesis's " + (table ? "cube, Table 4.4" : "dragon, Table 4.3"),
+                 "screen", kThesisByScreen[table], {"small", "main", "large"}, [&](int row, int column) {
+                   return find(results, bySize[column], rows[row].family, rows[row].rays, 512);
+                 });
 }
 
 void attyTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
@@ -306,7 +369,7 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
             "linear/binary trace ms | hierarchical trace ms | trace ratio |\n"
             "|---|---|---|---|---|---|---|---|---|\n" << ratios.str() << "\n";
   }
-  if (info.preset == "thesis-table-4.1") thesisTables(md, setups, results);
+  if (info.preset == "thesis-table-4.1") thesisTables(md, setups, results, info.scene);
   if (info.preset == "atty-4.2") attyTables(md, setups, results);
 
   // 3. Charts: a speed-vs-error scatter for each setup with several configurations; for
