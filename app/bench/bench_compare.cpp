@@ -147,7 +147,7 @@ int runBenchCompare(const BenchCompareOptions& options) {
     for (const std::string& stage : stages) table << " " << format("%.2f", stageMedian(side, stage)) << " |";
     for (const std::string& counter : options.counters) {
       const auto found = side.counters.find(counter);
-      table << " " << (found == side.counters.end() ? "-" : format("%.4g", found->second)) << " |";
+      table << " " << (found == side.counters.end() ? "-" : format("%.7g", found->second)) << " |";
     }
     const auto rays = side.counters.find("trace.raysSearched");
     const bool searched = rays != side.counters.end() && rays->second > 0;
