@@ -2,14 +2,18 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "window/ui_state.h"
 
 const Shortcut* shortcuts(int& count) {
   static const Shortcut list[] = {
       {"F1 or ?", "show / hide this help"},
       {"F5", "reload shaders (a failed compile keeps the last good one)"},
-      {"Tab", "switch the active view (A / B)"},
-      {"V", "show / hide the second view"},
+      {"Tab", "switch the active view (A / B / C / D)"},
+      {"V", "show / hide the second view (A | B)"},
+      {"G", "show / hide the 2x2 grid of views (compare four methods)"},
+      {"L", "link / unlink zoom and pan of the views"},
       {"F", "fit the active view"},
       {"1", "one texel per screen pixel"},
       {"A", "autofit black / white to the visible texels"},
@@ -24,7 +28,7 @@ const Shortcut* shortcuts(int& count) {
       {"Right drag", "orbit the camera (the pipeline re-runs)"},
       {"Middle or Shift+right drag", "pan the camera"},
       {"Ctrl+wheel", "move the camera closer / farther"},
-      {"Ctrl+click an output", "show it in the other view"},
+      {"Ctrl+click an output", "show it in the next view (opening B)"},
       {"Alt+drag (scene view)", "move the light over the ground (outline: yellow)"},
       {"Alt+Shift+drag", "raise / lower the light"},
       {"Alt+right drag", "turn the light (yaw, pitch)"},
@@ -39,7 +43,9 @@ void drawHelpWindow(UiState& state) {
   if (!state.showHelp) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Appearing, {0.5f, 0.5f});
-  ImGui::SetNextWindowSize({640, 0}, ImGuiCond_Appearing);
+  // 50 characters' widths, within the window at any UI scale; long lists scroll.
+  ImGui::SetNextWindowSize({std::min(display.x * 0.9f, 50 * ImGui::GetFontSize()), 0}, ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints({0, 0}, {display.x * 0.9f, display.y * 0.9f});
   if (ImGui::Begin("Help", &state.showHelp, ImGuiWindowFlags_NoCollapse)) {
     ImGui::TextWrapped("penumbra shows every stage of Curtis & Olano's Monte Carlo soft shadows. "
                        "Click an output on the left to view it; parameters re-run the pipeline.");
@@ -51,12 +57,14 @@ void drawHelpWindow(UiState& state) {
         ImGui::TableNextColumn();
         ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "%s", list[i].keys);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(list[i].action);
+        ImGui::TextWrapped("%s", list[i].action);
       }
       ImGui::EndTable();
     }
+    ImGui::PushTextWrapPos(0);
     ImGui::TextDisabled("Coordinates are image coordinates: (0, 0) is the top-left texel, as in "
                         "the PNGs and `penumbra trace --pixel X,Y`.");
+    ImGui::PopTextWrapPos();
   }
   ImGui::End();
 }

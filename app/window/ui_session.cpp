@@ -101,6 +101,23 @@ RunKey Session::currentKey(std::vector<std::string> requested) const {
   return key;
 }
 
+bool Session::holds(const RunKey& key) const {
+  if (!lastRun || !frame) return false;
+  if (*lastRun == key) return true;
+  RunKey same = key;
+  same.requested = lastRun->requested;
+  if (!(same == *lastRun) || !runError.empty()) return false;
+  return std::all_of(key.requested.begin(), key.requested.end(),
+                     [&](const std::string& output) { return frame->has(output); });
+}
+
+std::optional<glm::ivec2> Session::nextEye(glm::ivec2 viewRegion) const {
+  if (!eye.fitView) return eyeFor({eye.width, eye.height});
+  const glm::ivec2 size = glm::max(viewRegion, glm::ivec2(64));
+  if (viewRegion.x <= 0 || viewRegion.y <= 0 || size != requestedEye) return std::nullopt;
+  return eyeFor(size);
+}
+
 // A stage that throws is reported, not fatal.
 bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>& requested,
                           std::string& problem) {
@@ -116,7 +133,7 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
   frame->eyeWidth = size.x;
   frame->eyeHeight = size.y;
   const RunKey key = currentKey(requested);
-  if (!runEveryFrame && lastRun && *lastRun == key) return false;
+  if (!runEveryFrame && holds(key)) return false;
   lastRun = key;  // a failing run is not retried until something changes
   try {
     pipeline.run(*frame, key.requested);

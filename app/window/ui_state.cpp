@@ -114,7 +114,7 @@ std::vector<std::string> UiState::requestedOutputs() const {
         std::find(requested.begin(), requested.end(), key) == requested.end())
       requested.push_back(key);
   };
-  for (int v = 0; v < (views.twoViews ? 2 : 1); ++v) {
+  for (int v = 0; v < views.shownViews(); ++v) {
     add(views.panels[v].output);
     add(views.panels[v].minus);
   }
@@ -128,7 +128,14 @@ std::vector<std::string> UiState::requestedOutputs() const {
 }
 
 bool UiState::needsRun() const {
-  return session.runEveryFrame || !session.lastRun || *session.lastRun != currentKey();
+  return session.runEveryFrame || !session.holds(currentKey());
+}
+
+void UiState::keepPickInEye(glm::ivec2 viewRegion) {
+  const std::optional<glm::ivec2> eye = session.nextEye(viewRegion);
+  if (!eye || session.previewing) return;
+  if (fullEye != glm::ivec2(0)) views.followResize(fullEye, *eye);
+  fullEye = *eye;
 }
 
 bool UiState::runIfNeeded(glm::ivec2 viewRegion) {

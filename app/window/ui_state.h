@@ -23,6 +23,8 @@ public:
   AreaLight checkedLight;                  // the light sceneWarnings were computed for
   std::string shaderLog;  // last failed hot reload
   bool showHelp = false, showShaderLog = false;
+  bool showSpeedError = false;  // the right panel's "Speed vs error" tab instead of the inspector
+  float uiScale = 1;            // fonts and sizes (projectors, high-DPI): app/window/ui_scale.h
 
   // Actions. Each returns "" or a message naming what is valid.
   std::string loadScene(const std::string& source);  // keeps the old scene on failure
@@ -39,5 +41,9 @@ public:
   // Whether the next runIfNeeded would run (the key changed, or run every frame).
   bool needsRun() const;
   bool runIfNeeded(glm::ivec2 viewRegion);  // Session::runIfNeeded on what is shown
+  // Before a run at a new full-resolution eye size (a view opened under "fit view", the
+  // window resized): a pick made in the eye moves to the same place of the new eye.
+  void keepPickInEye(glm::ivec2 viewRegion);
+  glm::ivec2 fullEye{0, 0};  // the eye size of the last keepPickInEye outside previews
   void checkLight();  // recomputes sceneWarnings when the light moved since the last check
 };

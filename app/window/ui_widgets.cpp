@@ -18,10 +18,19 @@ void helpMarker(const std::string& text) {
   }
 }
 
-// 2. One widget per parameter type; Ctrl+click on a slider types a value.
+// 2. One widget per parameter type; Ctrl+click on a slider types a value. A name too long
+//    for the line (narrow panel, large UI scale) goes on its own line above the widget.
 bool drawParam(Param& param) {
   bool changed = false;
-  const char* label = param.key.c_str();
+  const float nameWidth = ImGui::CalcTextSize(param.key.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  const bool nameAbove = param.type != Param::Type::Bool &&
+                         ImGui::CalcItemWidth() + nameWidth + buttonsWidth({"(?)"}) > ImGui::GetContentRegionAvail().x;
+  const std::string hidden = "##" + param.key;
+  if (nameAbove) {
+    ImGui::TextUnformatted(param.key.c_str());
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"(?)"}));
+  }
+  const char* label = nameAbove ? hidden.c_str() : param.key.c_str();
   switch (param.type) {
     case Param::Type::Bool: {
       bool value = param.asBool();
@@ -78,7 +87,24 @@ const char* formatName(GLenum format) {
 }
 
 // 4. Toolbar wrapping.
+float uiPixels(float pixelsAtScale1) { return pixelsAtScale1 * ImGui::GetFontSize() / 13.0f; }
+
+float buttonsWidth(std::initializer_list<const char*> labels) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float width = 0;
+  for (const char* label : labels)
+    width += ImGui::CalcTextSize(label, nullptr, true).x + 2 * style.FramePadding.x + style.ItemSpacing.x;
+  return width;
+}
+
+void sameLineIfButtonsFit(std::initializer_list<const char*> labels) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  ImGui::SameLine();
+  if (ImGui::GetCursorScreenPos().x + buttonsWidth(labels) > right) ImGui::NewLine();
+}
+
 void sameLineIfFits(float width) {
+  width = uiPixels(width);
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   ImGui::SameLine();
   if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();

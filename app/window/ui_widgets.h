@@ -3,6 +3,7 @@
 #pragma once
 #include <epoxy/gl.h>
 
+#include <initializer_list>
 #include <string>
 
 #include "core/param.h"
@@ -15,8 +16,17 @@ void helpMarker(const std::string& text);
 bool drawParam(Param& param);
 // 3. "RGBA32F", "R32UI", "DEPTH32F", ...
 const char* formatName(GLenum format);
-// 4. Continues the current line if an item `width` wide still fits, else starts a new one.
+// 4. Continues the current line if an item `width` wide (pixels at UI scale 1) still fits,
+//    else starts a new one.
 void sameLineIfFits(float width);
+// 4b. Pixels at UI scale 1 -> pixels now (the font size over ImGui's default 13).
+float uiPixels(float pixelsAtScale1);
+// 4c. The width that buttons with these labels take on the rest of a line (each with the
+//     item spacing before it): a text field before them gets the rest. Count a help
+//     marker as the label "(?)".
+float buttonsWidth(std::initializer_list<const char*> labels);
+// 4d. SameLine if buttons with these labels still fit on the line, else a new line.
+void sameLineIfButtonsFit(std::initializer_list<const char*> labels);
 // 5. A stage's timing for a tooltip: last run, median and how many runs it covers, or why
 //    it did not run.
 std::string timingText(const StageTime& time);

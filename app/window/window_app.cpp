@@ -20,6 +20,7 @@
 #include "scene/scene_builtin.h"
 #include "window/panels/ui_export.h"
 #include "window/ui_help.h"
+#include "window/ui_scale.h"
 #include "window/panels/ui_inspector.h"
 #include "window/script/ui_lesson.h"
 #include "window/panels/ui_pipeline_panel.h"
@@ -48,9 +49,9 @@ struct Layout {
   float panelHeight() const { return height - status; }
 };
 
-Layout layoutFor(float width, float height) {
-  return {width, height, std::clamp(width * 0.27f, 220.0f, 360.0f),
-          std::clamp(width * 0.23f, 200.0f, 330.0f), ImGui::GetFrameHeight() + 6};
+Layout layoutFor(float width, float height, float uiScale) {
+  return {width, height, std::clamp(width * 0.27f, 220.0f * uiScale, 360.0f * uiScale),
+          std::clamp(width * 0.23f, 220.0f * uiScale, 330.0f * uiScale), ImGui::GetFrameHeight() + 6};
 }
 
 void saveScreenshot(GLFWwindow* window, const std::string& path) {
@@ -86,10 +87,15 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
     if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.status = exportAllStages(state, "");
     return;
   }
-  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false) && state.views.twoViews) state.views.activeView = 1 - state.views.activeView;
-  if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) {
-    state.views.twoViews = !state.views.twoViews;
-    if (!state.views.twoViews) state.views.activeView = 0;
+  ViewState& views = state.views;
+  if (ImGui::IsKeyPressed(GLFW_KEY_TAB, false)) views.activeView = (views.activeView + 1) % views.shownViews();
+  if (ImGui::IsKeyPressed(GLFW_KEY_V, false))
+    views.setLayout(views.layout == ViewLayout::SideBySide ? ViewLayout::One : ViewLayout::SideBySide);
+  if (ImGui::IsKeyPressed(GLFW_KEY_G, false))
+    views.setLayout(views.layout == ViewLayout::Grid ? ViewLayout::One : ViewLayout::Grid);
+  if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) {
+    views.linked = !views.linked;
+    if (views.linked) views.linkFrom(views.activeView);
   }
   ViewPanel& view = state.views.panels[state.views.activeView];
   const GlTexture* texture = shownTexture(state, view);
@@ -124,9 +130,17 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
                     ? (" | PREVIEW at 1/" + std::to_string(state.session.previewDivisor) +
                        " resolution while the camera moves").c_str()
                     : "");
-  const float speedWidth = ImGui::CalcTextSize(speed).x;
+  float speedWidth = ImGui::CalcTextSize(speed).x;
+  if (speedWidth > 0.55f * layout.width) {  // large UI scale: the numbers only
+    std::snprintf(speed, sizeof speed, "eye %dx%d | %.1f ms | UI %.0f fps%s",
+                  state.session.frame ? state.session.frame->eyeWidth : 0,
+                  state.session.frame ? state.session.frame->eyeHeight : 0, pipelineMs,
+                  state.session.framesPerSecond(), state.session.previewing ? " | PREVIEW" : "");
+    speedWidth = ImGui::CalcTextSize(speed).x;
+  }
+  const float padding = ImGui::GetStyle().WindowPadding.x;
   ImGui::PushClipRect(ImGui::GetCursorScreenPos(),
-                      {layout.width - speedWidth - 20, layout.height}, true);
+                      {layout.width - speedWidth - 2 * padding, layout.height}, true);
   if (!state.sceneWarnings.empty()) {  // what the depth-map methods cannot show (scene_checks.h)
     ImGui::TextColored({1.0f, 0.8f, 0.2f, 1.0f}, "warning: %s%s", state.sceneWarnings.front().c_str(),
                        state.sceneWarnings.size() > 1 ? " (+ more: hover)" : "");
@@ -139,8 +153,35 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
   }
   ImGui::TextUnformatted(state.status.empty() ? "F1: help" : state.status.c_str());
   ImGui::PopClipRect();
-  ImGui::SameLine(layout.width - speedWidth - 10);
+  ImGui::SameLine(layout.width - speedWidth - padding);
   ImGui::TextUnformatted(speed);
+  ImGui::End();
+}
+
+// 3b. The right panel: the inspector, or the speed-vs-error chart, as tabs. A script's
+//     request (state.showSpeedError) selects a tab; a click on a tab sets the request.
+void drawSidePanel(UiState& state, const Layout& layout) {
+  ImGui::SetNextWindowPos({layout.width - layout.right, 0});
+  ImGui::SetNextWindowSize({layout.right, layout.panelHeight()});
+  ImGui::Begin("##side", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar);
+  static int shownTab = 0;
+  const int wanted = state.showSpeedError ? 1 : 0;
+  const bool pending = wanted != shownTab;
+  if (ImGui::BeginTabBar("##side_tabs")) {
+    const char* names[2] = {"Inspector", "Speed vs error"};
+    for (int tab = 0; tab < 2; ++tab) {
+      const ImGuiTabItemFlags flags = pending && wanted == tab ? ImGuiTabItemFlags_SetSelected : 0;
+      if (!ImGui::BeginTabItem(names[tab], nullptr, flags)) continue;
+      shownTab = tab;
+      ImGui::BeginChild("##side_tab");  // scrolls under the tab bar, which stays in place
+      if (tab == 0) drawInspector(state);
+      else drawSpeedErrorPanel(state);
+      ImGui::EndChild();
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  if (!pending) state.showSpeedError = shownTab == 1;
   ImGui::End();
 }
 
@@ -161,27 +202,23 @@ bool drawUi(UiState& state, const Layout& layout) {
   ImGui::PopStyleVar();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   bool movingCamera = false;
-  if (state.views.twoViews) {
-    const float half = (avail.x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
-    movingCamera |= drawTextureView(state, 0, {half, avail.y});
-    ImGui::SameLine();
-    movingCamera |= drawTextureView(state, 1, {half, avail.y});
-  } else {
-    movingCamera |= drawTextureView(state, 0, avail);
+  const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
+  const int columns = state.views.layout == ViewLayout::One ? 1 : 2;
+  const int rows = state.views.layout == ViewLayout::Grid ? 2 : 1;
+  const ImVec2 cell{(avail.x - spacing.x * float(columns - 1)) / float(columns),
+                    (avail.y - spacing.y * float(rows - 1)) / float(rows)};
+  for (int v = 0; v < state.views.shownViews(); ++v) {
+    if (v % columns != 0) ImGui::SameLine();
+    movingCamera |= drawTextureView(state, v, cell);
   }
   ImGui::End();
 
-  ImGui::SetNextWindowPos({layout.width - layout.right, 0});
-  ImGui::SetNextWindowSize({layout.right, layout.panelHeight()});
-  ImGui::Begin("Inspector", nullptr, kPanelFlags);
-  drawInspector(state);
-  ImGui::End();
+  drawSidePanel(state, layout);
 
   drawStatusLine(state, layout);
   drawLessonWindow(state, layout.left + 0.5f * layout.centerWidth(), layout.centerWidth() - 24,
                    layout.panelHeight());
-  drawSpeedErrorPanel(state, layout.left + 8, std::max(30.0f, layout.panelHeight() - 400),
-                      std::min(layout.centerWidth() - 16, 520.0f));
+  stepSpeedErrorPanel();
   drawHelpWindow(state);
   drawShaderLogWindow(state);
   return movingCamera;
@@ -244,6 +281,7 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
     state.status = message;
   }
   for (const std::string& assignment : options.sets) state.session.pipeline.set(assignment);
+  if (!state.views.panels[0].output.empty()) return 0;  // the views of --config
   if (const std::string image = finalImageOutput(state.session.pipeline); !image.empty()) state.selectOutput(image);
   else state.selectStage(state.session.pipeline.stages().back()->name());
   state.views.scrollToStage.clear();  // open on the top of the pipeline panel
@@ -318,17 +356,19 @@ int runWindow(const WindowOptions& options) {
       // 7c. The pipeline, only when something changed.
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
+      state->keepPickInEye(glm::ivec2(state->views.panels[0].eyeRegion));
       recordPickedPixel(*state);
       pickSoftShadowMapTexels(*state);
       state->runIfNeeded(glm::ivec2(state->views.panels[0].eyeRegion));
-      // 7d. The UI.
+      // 7d. The UI (fonts rebuilt first when the UI scale changed).
+      applyUiScale(state->uiScale);
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       applySyntheticInput(*state);
       ImGui::NewFrame();
       handleShortcuts(*state, window, screenshotCount);
       const RunKey before = state->currentKey();
-      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y));
+      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y, state->uiScale));
       // A slider dragged since its press counts as moving too: preview until released.
       if (!ImGui::IsAnyItemActive()) draggingSlider = false;
       else if (state->currentKey() != before) draggingSlider = true;

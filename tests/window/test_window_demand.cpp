@@ -77,7 +77,7 @@ TEST(WindowDemand, TheRunKeyFollowsParametersCameraViewsAndNothingElse) {
   RunKey moved = state.currentKey();
   state.session.scene.camera.position.x += 0.5f;
   EXPECT_NE(state.currentKey().scene, moved.scene);
-  state.views.twoViews = true;
+  state.views.layout = ViewLayout::SideBySide;
   state.views.panels[1].output = "light_layers.far";
   state.views.panels[1].minus = "light_layers.near";
   EXPECT_EQ(state.requestedOutputs(),

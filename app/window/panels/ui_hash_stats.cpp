@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "stats/dieharder_run.h"
 #include "stats/hash_stats_gpu.h"
 #include "window/ui_state.h"
+#include "window/ui_widgets.h"
 
 namespace {
 
@@ -30,7 +32,10 @@ ImVec4 verdictColour(double p) {
 void drawTable(const UiState& state) {
   if (!state.session.frame) return;
   const auto& counters = state.session.frame->counters;
-  if (!ImGui::BeginTable("hash_stats_table", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit))
+  // Wider than the panel (large UI scale): the table scrolls sideways instead of being cut.
+  const float height = ImGui::GetFrameHeightWithSpacing() * float(std::size(kTestNames) + 2);
+  if (!ImGui::BeginTable("hash_stats_table", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX,
+                         {0, height}))
     return;
   ImGui::TableSetupColumn("test");
   ImGui::TableSetupColumn("p");
@@ -62,7 +67,9 @@ struct Comparison {
 };
 
 void drawComparison(UiState& state, std::unique_ptr<Comparison>& comparison) {
-  if (ImGui::Button("compare all hashes (2^16 samples each)")) {
+  const bool compare = ImGui::Button("compare all hashes");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Every hash on this pattern, 2^16 samples each, with its GPU throughput.");
+  if (compare) {
     GpuHashStats gpu;
     comparison = std::make_unique<Comparison>();
     const int pattern = state.session.pipeline.param("hash_stats.pattern").asInt();
@@ -74,8 +81,10 @@ void drawComparison(UiState& state, std::unique_ptr<Comparison>& comparison) {
     state.status = "hash_stats: compared every hash (GPU throughput measured just now)";
   }
   if (!comparison) return;
+  const float height = ImGui::GetFrameHeightWithSpacing() * float(comparison->hashes.size() + 2);
   if (!ImGui::BeginTable("hash_compare", int(kTestNames.size()) + 2,
-                         ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit))
+                         ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX,
+                         {0, height}))
     return;
   ImGui::TableSetupColumn("hash");
   for (const char* name : kTestNames) ImGui::TableSetupColumn(name);
@@ -116,7 +125,7 @@ void drawDieharder(UiState& state, std::unique_ptr<DieharderRun>& run) {
     std::snprintf(text, sizeof text, "%s: test %d / %d", run->hash().c_str(), run->testsDone(),
                   run->testsTotal());
     ImGui::ProgressBar(float(run->testsDone()) / float(run->testsTotal()),
-                       {ImGui::GetContentRegionAvail().x - 70, 0}, text);
+                       {ImGui::GetContentRegionAvail().x - buttonsWidth({"Cancel"}), 0}, text);
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) run->cancel();
   }
@@ -128,11 +137,11 @@ void drawDieharder(UiState& state, std::unique_ptr<DieharderRun>& run) {
     failed += line.assessment == "FAILED";
     thesis += thesisPass(line.p);
   }
-  ImGui::Text("%s%s: %d passed, %d weak, %d failed of %zu p-values; %d in [0.01, 0.99]",
+  ImGui::TextWrapped("%s%s: %d passed, %d weak, %d failed of %zu p-values; %d in [0.01, 0.99]",
               run->hash().c_str(), run->cancelled() ? " (cancelled)" : "", passed, weak, failed,
               lines.size(), thesis);
   if (const int claim = thesisDiehardPasses(run->hash()); claim >= 0)
-    ImGui::Text("thesis §3.1: %d of 15 DIEHARD tests passed", claim);
+    ImGui::TextWrapped("thesis §3.1: %d of 15 DIEHARD tests passed", claim);
   if (!run->error().empty()) ImGui::TextColored({1, 0.4f, 0.4f, 1}, "%s", run->error().c_str());
   ImGui::TextWrapped("Under a perfect generator each p-value falls outside [0.01, 0.99] with "
                      "probability 0.02: all 18 land inside only 70%% of the time. A count that "

@@ -53,15 +53,24 @@ void drawPick(const UiState& state) {
   ImGui::Text("(%d, %d) in %dx%d", state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y,
               state.views.pickSpace.x, state.views.pickSpace.y);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Image coordinates: row 0 at the top.");
-  if (!ImGui::BeginTable("pick", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
-  ImGui::TableSetupColumn("output", ImGuiTableColumnFlags_WidthFixed,
-                          ImGui::GetContentRegionAvail().x * 0.42f);
+  // Names in their own column when the longest fits in half the panel, else above the values
+  // (a narrow panel, a large UI scale): never cut.
+  const std::vector<PickRow>& rows = pickRows(state);
+  float nameWidth = 0;
+  for (const PickRow& row : rows) nameWidth = std::max(nameWidth, ImGui::CalcTextSize(row.label.c_str()).x);
+  const bool twoColumns = nameWidth <= 0.5f * ImGui::GetContentRegionAvail().x;
+  if (!ImGui::BeginTable("pick", twoColumns ? 2 : 1, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
+  if (twoColumns) ImGui::TableSetupColumn("output", ImGuiTableColumnFlags_WidthFixed, nameWidth);
   ImGui::TableSetupColumn("values", ImGuiTableColumnFlags_WidthStretch);
-  for (const PickRow& row : pickRows(state)) {
+  for (const PickRow& row : rows) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(row.label.c_str());
-    ImGui::TableNextColumn();
+    if (twoColumns) {
+      ImGui::TextUnformatted(row.label.c_str());
+      ImGui::TableNextColumn();
+    } else {
+      ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "%s", row.label.c_str());
+    }
     std::string text;
     char value[64];
     for (int c = 0; c < row.channelCount; ++c) {
@@ -83,24 +92,27 @@ void drawTimings(const UiState& state) {
   for (const StageTime& time : times) slowest = std::max(slowest, time.ran ? time.median : 0.0);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float width = ImGui::GetContentRegionAvail().x;
-  const float labelWidth = std::min(110.0f, width * 0.4f);
+  const float labelWidth = std::min(uiPixels(110), width * 0.4f);
   for (const StageTime& time : times) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     const float height = ImGui::GetTextLineHeight();
-    const float barWidth = time.ran ? float(time.median / slowest) * (width - labelWidth - 60) : 0;
+    const float reserve = ImGui::CalcTextSize("00000.0 ms").x + uiPixels(14);  // the number after the bar
+    const float barWidth = time.ran ? float(time.median / slowest) * std::max(width - labelWidth - reserve, 0.0f) : 0;
     draw->AddRectFilled({at.x + labelWidth, at.y + 2}, {at.x + labelWidth + barWidth, at.y + height - 1},
                         IM_COL32(90, 150, 230, 255));
     ImGui::TextUnformatted(time.stage.c_str());
-    ImGui::SameLine(labelWidth + barWidth + 14);
+    ImGui::SameLine(labelWidth + barWidth + uiPixels(14));
     if (time.ran) ImGui::Text("%.1f ms", time.median);
     else ImGui::TextDisabled("not run");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", timingText(time).c_str());
   }
   const double total = state.session.medianPipelineMs();
-  ImGui::Text("pipeline %.1f ms (%.1f runs/s)", total, total > 0 ? 1000.0 / total : 0.0);
-  ImGui::TextDisabled("median of %d run(s) with these settings;\nlast run %.1f ms; %s timing",
+  ImGui::TextWrapped("pipeline %.1f ms (%.1f runs/s)", total, total > 0 ? 1000.0 / total : 0.0);
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled("median of %d run(s) with these settings; last run %.1f ms; %s timing",
                       state.session.medianRuns(), state.session.lastPipelineMs(),
                       state.session.pipeline.timingMethod().c_str());
+  ImGui::PopTextWrapPos();
 }
 
 // 3. Counters the stages reported this frame.
@@ -109,7 +121,7 @@ void drawCounters(const UiState& state) {
     ImGui::TextDisabled("No counters this frame.");
     return;
   }
-  for (const auto& [name, value] : state.session.frame->counters) ImGui::Text("%s  %.6g", name.c_str(), value);
+  for (const auto& [name, value] : state.session.frame->counters) ImGui::TextWrapped("%s  %.6g", name.c_str(), value);
 }
 
 // 4. The ray trace hook: the picked eye pixel, ray i of n x n.
@@ -135,7 +147,7 @@ void drawRayTrace(UiState& state) {
     cachedRay = state.views.selectedRay;
   }
   if (trace.raysPerPixel > 1) {
-    ImGui::SetNextItemWidth(-60);
+    ImGui::SetNextItemWidth(-uiPixels(60));
     ImGui::SliderInt("ray", &state.views.selectedRay, 0, trace.raysPerPixel - 1);
   }
   glm::ivec2 lightMap{0};
@@ -155,7 +167,7 @@ void drawRayTrace(UiState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Show %s in the active view, zoomed onto this ray's visited\n"
                       "windows (hierarchical) or samples (linear).", levels.c_str());
-  ImGui::SameLine();
+  sameLineIfButtonsFit({"[x] own window"});
   ImGui::Checkbox("own window", &state.views.traceWindow);
   if (!state.views.traceWindow) {
     drawRayTracePanel(trace, lightMap, state.views.overlays);
@@ -166,7 +178,7 @@ void drawRayTrace(UiState& state) {
   ImGui::SetNextWindowPos({display.x * 0.28f, display.y * 0.5f}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({display.x * 0.4f, display.y * 0.46f}, ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Ray trace of the picked pixel", &state.views.traceWindow)) {
-    ImGui::SetNextItemWidth(200);
+    ImGui::SetNextItemWidth(uiPixels(200));
     ImGui::SliderInt("ray##window", &state.views.selectedRay, 0, std::max(trace.raysPerPixel - 1, 0));
     drawRayTracePanel(trace, lightMap, state.views.overlays);
   }
@@ -178,12 +190,12 @@ void drawRayTrace(UiState& state) {
 // 5. Sections, top to bottom.
 void drawInspector(UiState& state) {
   if (ImGui::CollapsingHeader("Picked texel", ImGuiTreeNodeFlags_DefaultOpen)) drawPick(state);
-  for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v) {
+  for (int v = 0; v < state.views.shownViews(); ++v) {
     const ViewPanel& view = state.views.panels[v];
     const GlTexture* texture = state.session.frame && state.session.frame->has(view.output) ? &state.session.frame->texture(view.output) : nullptr;
     if (texture && view.settings.colormap == Colormap::Categorical &&
         singleChannel(view.settings, texture->channelCount()) >= 0 &&
-        ImGui::CollapsingHeader(v == 0 ? "Categories (view A)" : "Categories (view B)",
+        ImGui::CollapsingHeader((std::string("Categories (view ") + "ABCD"[v] + ")").c_str(),
                                 ImGuiTreeNodeFlags_DefaultOpen))
       drawCategoryLegend(state, view);
   }

@@ -18,8 +18,8 @@ namespace {
 void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   const std::string key = stage.name() + "." + output.name;
   std::string shownIn;
-  for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v)
-    if (state.views.panels[v].output == key) shownIn += v == 0 ? "[A]" : "[B]";
+  for (int v = 0; v < state.views.shownViews(); ++v)
+    if (state.views.panels[v].output == key) shownIn += std::string("[") + "ABCD"[v] + "]";
   std::string size = state.session.pipeline.lastTime(stage.name()).ran ? "not written" : "not run";
   if (state.session.frame && state.session.frame->has(key)) {
     const GlTexture& texture = state.session.frame->texture(key);
@@ -32,8 +32,8 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   const std::string label = "  " + output.name + "  " + shownIn + "###" + key;
   if (ImGui::Selectable(label.c_str(), !shownIn.empty())) {
     if (ImGui::GetIO().KeyCtrl) {  // Ctrl+click: the other view, opening it if needed
-      state.views.twoViews = true;
-      state.views.activeView = 1 - state.views.activeView;
+      if (state.views.layout == ViewLayout::One) state.views.setLayout(ViewLayout::SideBySide);
+      state.views.activeView = (state.views.activeView + 1) % state.views.shownViews();
     }
     if (std::string problem = state.selectOutput(key); !problem.empty()) state.status = problem;
     state.views.scrollToStage.clear();  // clicked here: it is in view already
@@ -41,11 +41,19 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\n%s, %s\nclick: show in the active view; Ctrl+click: the other view",
                       output.doc.c_str(), formatName(output.format), size.c_str());
-  // Right-aligned, but never over the name (ssm's "occluderBackMap DEPTH32F" in a narrow panel).
+  // Right-aligned after the name; on its own line when the panel is too narrow for both (never
+  // over the name: ssm's "occluderBackMap DEPTH32F" in a narrow panel).
+  const std::string info = std::string(formatName(output.format)) + " " + size;
+  const float infoX = ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(info.c_str()).x;
   const float nameEnd = ImGui::CalcTextSize(("  " + output.name + "  " + shownIn).c_str()).x +
                         ImGui::GetStyle().ItemSpacing.x;
-  ImGui::SameLine(std::max(nameEnd, ImGui::GetContentRegionMax().x - 170));
-  ImGui::TextDisabled("%s %s", formatName(output.format), size.c_str());
+  const bool below = infoX < nameEnd;
+  if (below) ImGui::Indent();
+  else ImGui::SameLine(infoX);
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled("%s", info.c_str());
+  ImGui::PopTextWrapPos();
+  if (below) ImGui::Unindent();
 }
 
 // 1b. An input slot and the producer wired to it (the graph, as the registry built it):
@@ -54,6 +62,9 @@ void drawInput(UiState& state, const Stage& stage, const Input& input) {
   const std::string source = state.session.pipeline.source(stage.name(), input.name);
   std::string label = "  " + input.name + " <- " + (source.empty() ? "(none)" : source);
   if (input.isChoice()) label += "  (" + input.choiceParam + ")";
+  if (ImGui::CalcTextSize(label.c_str()).x > ImGui::GetContentRegionAvail().x)  // lines, not cut
+    label = "  " + input.name + " <-\n      " + (source.empty() ? "(none)" : source) +
+            (input.isChoice() ? "\n      (" + input.choiceParam + ")" : "");
   const bool texture = !source.empty() && state.session.outputOf(source) && !state.session.outputOf(source)->isBuffer();
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   if (ImGui::Selectable((label + "###in_" + stage.name() + "." + input.name).c_str(), false) && texture) {
@@ -71,7 +82,7 @@ void drawInput(UiState& state, const Stage& stage, const Input& input) {
 void drawThicknessLine(UiState& state) {
   const LayerOutputs layers = layerOutputs(state.session.pipeline);
   bool shown = false;
-  for (int v = 0; v < (state.views.twoViews ? 2 : 1); ++v)
+  for (int v = 0; v < state.views.shownViews(); ++v)
     shown |= state.views.panels[v].output == layers.far && state.views.panels[v].minus == layers.near;
   if (ImGui::Selectable("  thickness (far - near)###layers.thickness", shown)) {
     state.status = showThickness(state);
@@ -99,9 +110,12 @@ void drawStage(UiState& state, Stage& stage, int number) {
   const bool open = ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen);
   if (selected) ImGui::PopStyleColor();
   const StageTime& time = state.session.pipeline.lastTime(stage.name());
-  ImGui::SameLine(ImGui::GetContentRegionMax().x - 64);
-  if (time.ran) ImGui::Text("%6.1f ms", time.median);
-  else ImGui::TextDisabled(" not run");
+  char timeText[32];
+  std::snprintf(timeText, sizeof timeText, time.ran ? "%.1f ms" : "not run", time.median);
+  ImGui::SameLine(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(timeText).x -
+                  ImGui::GetStyle().FramePadding.x);
+  if (time.ran) ImGui::TextUnformatted(timeText);
+  else ImGui::TextDisabled("%s", timeText);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\ntimed with %s; outputs: %.1f MiB", timingText(time).c_str(),
                       state.session.pipeline.timingMethod().c_str(),
@@ -111,11 +125,18 @@ void drawStage(UiState& state, Stage& stage, int number) {
   ImGui::PushTextWrapPos(0);
   ImGui::TextUnformatted(stage.summary().c_str());
   ImGui::PopTextWrapPos();
+  ImGui::PushTextWrapPos(0);
   if (!stage.thesisSection().empty()) ImGui::TextDisabled("thesis %s", stage.thesisSection().c_str());
+  ImGui::PopTextWrapPos();
   for (const Input& input : stage.inputs()) drawInput(state, stage, input);
   for (const Output& output : stage.outputs()) drawOutput(state, stage, output);
   if (hasLayerOutputs(stage)) drawThicknessLine(state);
-  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+  // Controls share one width, leaving room for the longest name and its (?) marker.
+  float names = 0;
+  for (const Param& param : stage.params()) names = std::max(names, ImGui::CalcTextSize(param.key.c_str()).x);
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float rest = avail - names - buttonsWidth({"(?)"}) - ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::PushItemWidth(std::min(std::max(rest, uiPixels(80)), 0.55f * avail));  // else the name goes above
   for (Param& param : stage.params())
     if (drawParam(param)) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();

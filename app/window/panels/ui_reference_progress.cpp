@@ -14,7 +14,7 @@ std::string compareWithReference(UiState& state) {
   if (!truth || comparison.empty()) return "no ground truth and comparison stage registered";
   if (std::string problem = state.session.setParameter(truth->name() + ".enabled", "true"); !problem.empty())
     return problem;
-  state.views.twoViews = true;
+  if (state.views.layout == ViewLayout::One) state.views.setLayout(ViewLayout::SideBySide);
   state.views.activeView = 1;
   state.views.panels[1].locked = false;
   std::string problem = state.selectOutput(comparison);

@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "scene/scene_builtin.h"
@@ -17,7 +18,7 @@ namespace {
 // 1. Scene: built-ins in a combo, or a typed path to a scene JSON / glTF.
 void drawScenePicker(UiState& state) {
   static std::string path;
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);  // room for "91216 tris"
   if (ImGui::BeginCombo("scene", state.session.scene.name.c_str())) {
     for (const std::string& name : builtinSceneNames())
       if (ImGui::Selectable(name.c_str(), name == state.session.sceneSource))
@@ -26,7 +27,7 @@ void drawScenePicker(UiState& state) {
   }
   ImGui::SameLine();
   ImGui::TextDisabled("%zu tris", state.session.scene.triangleCount());
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 50);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Load"}));
   const bool entered = ImGui::InputTextWithHint("##scenepath", ".json / .gltf / .glb path", &path,
                                                 ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
@@ -87,9 +88,9 @@ void drawCameraAndLight(UiState& state) {
     light = lightBefore;
   }
   if (ImGui::Button("Reset camera")) camera = state.session.initialCamera;
-  ImGui::SameLine();
+  sameLineIfButtonsFit({"Reset light"});
   if (ImGui::Button("Reset light")) light = state.session.initialLight;
-  ImGui::SameLine();
+  sameLineIfButtonsFit({"[x] outline", "(?)"});  // a checkbox: its box counts as "[x] "
   ImGui::Checkbox("outline", &state.views.showLight);
   helpMarker("Draw the light rectangle (yellow), its centre and its axis down to the ground "
              "over the scene views; hold Alt over a view to drag it.");
@@ -98,7 +99,7 @@ void drawCameraAndLight(UiState& state) {
 // 4. Files and tools: settings, shaders, export all, how the pipeline re-runs.
 void drawTools(UiState& state) {
   static std::string settingsPath = "penumbra_settings.json", exportDirectory;
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Save", "Load", "(?)"}));
   ImGui::InputText("##settings", &settingsPath);
   ImGui::SameLine();
   if (ImGui::Button("Save")) state.status = saveSettingsFile(state, settingsPath);
@@ -109,16 +110,31 @@ void drawTools(UiState& state) {
   }
   helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
              "Open one at start with `penumbra --config FILE`.");
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Export all", "(?)"}));
   ImGui::InputTextWithHint("##exportdir", kDefaultExportDirectory, &exportDirectory);
   ImGui::SameLine();
   if (ImGui::Button("Export all")) state.status = exportAllStages(state, exportDirectory);
   helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
              "`penumbra export` with these settings.");
   if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();
-  ImGui::SameLine();
+  sameLineIfButtonsFit({"[x] every frame", "(?)"});
   ImGui::Checkbox("every frame", &state.session.runEveryFrame);
   helpMarker("Re-run the pipeline every frame (for timing). Off: only when something changes.");
+  // Steps, not a slider: the font atlas is rebuilt once per choice, not under a drag.
+  static const float kScales[] = {0.75f, 1.0f, 1.25f, 1.5f, 1.75f, 2.0f, 2.5f, 3.0f};
+  char current[16];
+  std::snprintf(current, sizeof current, "%.2gx", state.uiScale);
+  ImGui::SetNextItemWidth(uiPixels(80));
+  if (ImGui::BeginCombo("UI scale", current)) {
+    for (float scale : kScales) {
+      char label[16];
+      std::snprintf(label, sizeof label, "%.2gx", scale);
+      if (ImGui::Selectable(label, scale == state.uiScale)) state.uiScale = scale;
+    }
+    ImGui::EndCombo();
+  }
+  helpMarker("Text and widget size, for projectors and high-DPI screens (the font is re-rasterised "
+             "at the new size, so text stays sharp). Saved with the settings.");
 }
 
 }  // namespace
@@ -126,7 +142,11 @@ void drawTools(UiState& state) {
 // 5. Sections.
 void drawScenePanel(UiState& state) {
   if (!ImGui::CollapsingHeader("Scene, camera, light", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.62f);
+  // Controls share one width, leaving room for the longest label ("light height") and (?).
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float rest = avail - ImGui::CalcTextSize("light height").x - buttonsWidth({"(?)"}) -
+                     ImGui::GetStyle().ItemInnerSpacing.x;
+  ImGui::PushItemWidth(std::clamp(rest, 0.3f * avail, 0.62f * avail));
   drawScenePicker(state);
   drawEyeSize(state);
   drawCameraAndLight(state);

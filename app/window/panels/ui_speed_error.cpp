@@ -13,6 +13,7 @@
 #include "bench/pareto.h"
 #include "core/pipeline.h"
 #include "window/ui_state.h"
+#include "window/ui_widgets.h"
 
 std::string newestBenchJson(const std::filesystem::path& directory) {
   namespace fs = std::filesystem;
@@ -89,12 +90,13 @@ ImU32 methodColour(size_t index) {
 
 // 2. The chart: points (only those measured: frames > 0), frontier, the current one ringed.
 void drawPlot(const std::vector<const BenchResult*>& points, int current) {
-  const ImVec2 size{ImGui::GetContentRegionAvail().x, 260};
+  const float em = ImGui::GetFontSize();  // margins follow the UI scale
+  const ImVec2 size{ImGui::GetContentRegionAvail().x, 20 * em};
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("##plot", size);
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  const float left = origin.x + 48, right = origin.x + size.x - 8;
-  const float top = origin.y + 6, bottom = origin.y + size.y - 34;
+  const float left = origin.x + 3.7f * em, right = origin.x + size.x - 0.6f * em;
+  const float top = origin.y + 0.5f * em, bottom = origin.y + size.y - 2.6f * em;
   draw->AddRectFilled({left, top}, {right, bottom}, IM_COL32(30, 30, 34, 255));
   draw->AddRect({left, top}, {right, bottom}, IM_COL32(120, 120, 120, 255));
   std::vector<double> xs, ys;
@@ -113,7 +115,7 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
       draw->AddLine({x, top}, {x, bottom}, grid);
       char text[32];
       std::snprintf(text, sizeof text, "%g", v);
-      draw->AddText({x - 8, bottom + 2}, label, text);
+      draw->AddText({x - 0.6f * em, bottom + 2}, label, text);
     }
   for (int decade = int(std::floor(ay.lo)); decade <= int(std::ceil(ay.hi)); ++decade)
     for (double m : {1.0, 2.0, 5.0}) {
@@ -123,10 +125,10 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
       draw->AddLine({left, y}, {right, y}, grid);
       char text[32];
       std::snprintf(text, sizeof text, "%g", v);
-      draw->AddText({origin.x, y - 7}, label, text);
+      draw->AddText({origin.x, y - 0.5f * em}, label, text);
     }
-  draw->AddText({left + 60, bottom + 17}, label, "ms per frame (median of the method's stages, log)");
-  draw->AddText({left + 4, top + 2}, label, "mean |error| in shadow (log)");
+  draw->AddText({left + 0.3f * em, bottom + 1.3f * em}, label, "ms per frame (median, log)");
+  draw->AddText({left + 0.3f * em, top + 2}, label, "mean |error| in shadow (log)");
   // Frontier (increasing time), points coloured by method, the current configuration.
   const std::vector<bool> onFrontier = paretoFrontier(xs, ys);
   std::vector<size_t> frontier;
@@ -154,16 +156,18 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
                       p.msMedian, stages.c_str(), p.error.meanAbsInShadow);
   }
   ImGui::TextColored({1, 0.75f, 0.25f, 1}, "-- Pareto frontier");
-  for (size_t m = 0; m < methods.size(); ++m) {
+  for (size_t m = 0; m < methods.size(); ++m) {  // the legend wraps in a narrow panel
+    const std::string entry = "o " + methods[m];
     ImGui::SameLine();
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(m)), "o %s", methods[m].c_str());
+    if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(entry.c_str()).x) ImGui::NewLine();
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(m)), "%s", entry.c_str());
   }
 }
 
 // 3. The live run's controls: preset, measure / cancel, progress.
 void drawLiveControls(PanelState& panel, UiState& state) {
   const std::vector<std::string> presets = benchPresetNames();
-  ImGui::SetNextItemWidth(160);
+  ImGui::SetNextItemWidth(10 * ImGui::GetFontSize());
   if (ImGui::BeginCombo("preset", presets[size_t(panel.preset)].c_str())) {
     for (size_t i = 0; i < presets.size(); ++i)
       if (ImGui::Selectable(presets[i].c_str(), int(i) == panel.preset)) panel.preset = int(i);
@@ -172,7 +176,6 @@ void drawLiveControls(PanelState& panel, UiState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The configurations measured: the preset's first setup (as `penumbra "
                       "bench --preset`), plus the window's current parameters.");
-  ImGui::SameLine();
   if (panel.bench.running()) {
     if (ImGui::Button("Cancel")) panel.bench.cancel();
   } else if (ImGui::Button("Measure this scene")) {
@@ -192,34 +195,34 @@ void drawLiveControls(PanelState& panel, UiState& state) {
   if (!panel.liveMessage.empty()) ImGui::TextColored({1, 0.5f, 0.4f, 1}, "%s", panel.liveMessage.c_str());
 }
 
-}  // namespace
-
-void drawSpeedErrorPanel(UiState& state, float x, float y, float width) {
-  // Never destroyed: its live run holds GL objects, and the GL context is gone at exit.
+// Never destroyed: its live run holds GL objects, and the GL context is gone at exit.
+PanelState& panelState() {
   static PanelState& panel = *new PanelState;
   if (!panel.initialised) {
     panel.initialised = true;
     const std::string newest = newestBenchJson(std::filesystem::current_path());
     std::snprintf(panel.path, sizeof panel.path, "%s", newest.c_str());
   }
-  // One step of the live run per window frame, whether the panel is open or not.
-  if (panel.bench.running()) {
-    try {
-      panel.bench.step();
-    } catch (const std::exception& error) {
-      panel.liveMessage = error.what();
-      panel.bench.cancel();
-    }
+  return panel;
+}
+
+}  // namespace
+
+void stepSpeedErrorPanel() {
+  PanelState& panel = panelState();
+  if (!panel.bench.running()) return;
+  try {
+    panel.bench.step();
+  } catch (const std::exception& error) {
+    panel.liveMessage = error.what();
+    panel.bench.cancel();
   }
-  ImGui::SetNextWindowPos({x, y}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({width, 0}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Speed vs error", nullptr, 0)) {
-    ImGui::End();
-    return;
-  }
+}
+
+void drawSpeedErrorPanel(UiState& state) {
+  PanelState& panel = panelState();
   if (ImGui::RadioButton("live: this scene", panel.live)) panel.live = true;
-  ImGui::SameLine();
+  sameLineIfButtonsFit({"(o) a results.json"});
   if (ImGui::RadioButton("a results.json", !panel.live)) {
     panel.live = false;
     if (panel.loadedPath.empty()) load(panel);
@@ -264,13 +267,12 @@ void drawSpeedErrorPanel(UiState& state, float x, float y, float width) {
   }
   if (!points.empty()) {
     drawPlot(points, current);
-    if (current >= 0)
-      ImGui::TextColored({0.3f, 1, 0.5f, 1}, "(O) current: %s, %.2f ms, error %.4f",
-                         points[size_t(current)]->label.c_str(), points[size_t(current)]->msMedian,
-                         points[size_t(current)]->error.meanAbsInShadow);
-    else if (panel.live)
+    if (current >= 0) {
+      ImGui::TextColored({0.3f, 1, 0.5f, 1}, "(O) current:");
+      ImGui::TextWrapped("%s, %.2f ms, error %.4f", points[size_t(current)]->label.c_str(),
+                         points[size_t(current)]->msMedian, points[size_t(current)]->error.meanAbsInShadow);
+    } else if (panel.live)
       ImGui::TextWrapped("The current parameters were not measured in this run on this view "
                          "(measure again to add them).");
   }
-  ImGui::End();
 }

@@ -15,5 +15,8 @@ class UiState;
 // The newest bench/*/results.json under `directory`, relative to it; "" if none.
 std::string newestBenchJson(const std::filesystem::path& directory);
 
-// The floating panel (starts collapsed).
-void drawSpeedErrorPanel(UiState& state, float x, float y, float width);
+// One step of the live run; called every window frame, whether the panel is shown or not.
+void stepSpeedErrorPanel();
+// The panel's contents, drawn into the current window (the right side panel's "Speed vs
+// error" tab: a fixed region that never covers the views or catches their drags).
+void drawSpeedErrorPanel(UiState& state);

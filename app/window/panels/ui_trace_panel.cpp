@@ -1,3 +1,4 @@
+#include "window/ui_widgets.h"
 #include "window/panels/ui_trace_panel.h"
 
 #include <imgui.h>
@@ -59,7 +60,7 @@ bool hasPoints(const std::vector<RayStepRecord>& steps) {
 //     samples, each sample's [near, far] as a bar (coloured like level 0) and the sample as a
 //     dot. A dot inside its bar is inside the solid the two layers bound: a hit (§3.3).
 void drawPointPlot(const std::vector<RayStepRecord>& steps) {
-  const ImVec2 size{ImGui::GetContentRegionAvail().x, 140};
+  const ImVec2 size{ImGui::GetContentRegionAvail().x, uiPixels(140)};
   const ImVec2 at = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(at, {at.x + size.x, at.y + size.y}, IM_COL32(20, 20, 24, 255));
@@ -105,7 +106,7 @@ void drawPointPlot(const std::vector<RayStepRecord>& steps) {
 //    depth over the step as a white segment: where the segment enters the band, the ray may
 //    be blocked there.
 void drawPlot(const std::vector<RayStepRecord>& steps) {
-  const ImVec2 size{ImGui::GetContentRegionAvail().x, 140};
+  const ImVec2 size{ImGui::GetContentRegionAvail().x, uiPixels(140)};
   const ImVec2 at = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(at, {at.x + size.x, at.y + size.y}, IM_COL32(20, 20, 24, 255));
@@ -140,9 +141,9 @@ void drawPlot(const std::vector<RayStepRecord>& steps) {
 
 // 2. The step table (s: stepping at the step's end).
 void drawTable(const std::vector<RayStepRecord>& steps) {
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX |
                                 ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-  if (!ImGui::BeginTable("steps", 7, flags, {0, 200})) return;
+  if (!ImGui::BeginTable("steps", 7, flags, {0, uiPixels(200)})) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   for (const char* name : {"#", "lvl", "window", "s", "ray depth", "zNearMin..zFarMax", "decision"})
     ImGui::TableSetupColumn(name);
@@ -174,8 +175,8 @@ void drawTable(const std::vector<RayStepRecord>& steps) {
 // 3. Summary, plot, table; the visited windows become rectangles over light-sized views.
 void drawRayTracePanel(const RayTraceInfo& trace, glm::ivec2 lightMapSize,
                        std::vector<ViewOverlayShape>& overlay) {
-  ImGui::Text("%zu steps%s%s", trace.steps.size(), trace.result.empty() ? "" : ", ",
-              trace.result.c_str());
+  ImGui::TextWrapped("%zu steps%s%s", trace.steps.size(), trace.result.empty() ? "" : ", ",
+                     trace.result.c_str());
   if (trace.steps.empty()) return;
   const std::vector<ViewOverlayShape> shapes = traceOverlay(trace, lightMapSize);
   overlay.insert(overlay.end(), shapes.begin(), shapes.end());

@@ -8,6 +8,8 @@
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_camera.h"
+#include "window/ui_layout_report.h"
+#include "window/ui_scale.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_difference.h"
 #include "window/views/ui_view_toolbar.h"
@@ -173,19 +175,33 @@ std::vector<ScriptActionSpec> makeTable() {
        [](S&, const json& a, C& c) { return screenshot(a, c); }},
       {"view", kCount,
        [](S& s, const json& a, C&) -> std::string {
-         if (a.get<int>() > 1) return "views are 0 (A) and 1 (B)";
+         if (a.get<int>() >= kMaxViews) return "views are 0 (A), 1 (B), 2 (C) and 3 (D)";
+         if (a.get<int>() >= s.views.shownViews())
+           s.views.setLayout(a.get<int>() == 1 ? ViewLayout::SideBySide : ViewLayout::Grid);
          s.views.activeView = a.get<int>();
-         s.views.twoViews = s.views.twoViews || s.views.activeView == 1;
          return "";
        },
        true},
       {"two_views", kBool,
        [](S& s, const json& a, C&) {
-         s.views.twoViews = a.get<bool>();
-         if (!s.views.twoViews) s.views.activeView = 0;
+         s.views.setLayout(a.get<bool>() ? ViewLayout::SideBySide : ViewLayout::One);
          return std::string();
        },
        true},
+      {"layout", kString,
+       [=](S& s, const json& a, C&) -> std::string {
+         ViewLayout layout;
+         if (!layoutFromName(text(a), layout)) return "unknown layout; valid: one, side_by_side, grid";
+         s.views.setLayout(layout);
+         return "";
+       },
+       true},
+      {"link_views", kBool,
+       [](S& s, const json& a, C&) {
+         s.views.linked = a.get<bool>();
+         if (s.views.linked) s.views.linkFrom(s.views.activeView);
+         return std::string();
+       }},
       {"lock", kBool,
        [](S& s, const json& a, C&) {
          activeView(s).locked = a.get<bool>();
@@ -242,6 +258,25 @@ std::vector<ScriptActionSpec> makeTable() {
          printTiming(s, text(a));
          return std::string();
        }},
+      {"print_layout", kString,
+       [=](S&, const json& a, C&) {
+         printLayout(text(a));
+         return std::string();
+       }},
+      {"ui_scale", kFactor,
+       [](S& s, const json& a, C&) -> std::string {
+         if (!validUiScale(a.get<float>()))
+           return "expected a UI scale in [" + std::to_string(kMinUiScale) + ", " + std::to_string(kMaxUiScale) + "]";
+         s.uiScale = a.get<float>();
+         return "";
+       },
+       true},
+      {"speed_error", kBool,
+       [](S& s, const json& a, C&) {
+         s.showSpeedError = a.get<bool>();
+         return std::string();
+       },
+       true},
       {"print_pick", kString,
        [=](S& s, const json& a, C&) {
          printPick(s, text(a));

@@ -125,6 +125,7 @@ std::string zoomActiveView(UiState& state, const json& a) {
         hi = glm::max(hi, glm::max(shape.a, shape.b));
       }
     if (lo.x <= hi.x) view.transform.center = 0.5f * (lo + hi);
+    if (state.views.linked) state.views.linkFrom(state.views.activeView);
   }
   return "";
 }
@@ -202,11 +203,12 @@ void printPick(const UiState& state, const std::string& label) {
 void printTiming(const UiState& state, const std::string& label) {
   std::printf(
       "timing %s: eye %dx%d, pipeline median %.2f ms (%.1f runs/s) over %d runs, last "
-      "run %.2f ms, UI %.1f fps\n",
+      "run %.2f ms, UI %.1f fps, %d pipeline runs in this window\n",
       label.c_str(), state.session.frame->eyeWidth, state.session.frame->eyeHeight,
       state.session.medianPipelineMs(),
       state.session.medianPipelineMs() > 0 ? 1000.0 / state.session.medianPipelineMs() : 0.0,
-      state.session.medianRuns(), state.session.lastPipelineMs(), state.session.framesPerSecond());
+      state.session.medianRuns(), state.session.lastPipelineMs(), state.session.framesPerSecond(),
+      state.session.pipelineRuns);
   for (const StageTime& time : state.session.pipeline.lastTimes())
     if (time.ran)
       std::printf("  %-14s %8.2f ms (last %.2f ms, %d runs)\n", time.stage.c_str(), time.median,

@@ -9,6 +9,7 @@
 
 #include "io/image_export.h"
 #include "scene/scene_builtin.h"
+#include "window/script/ui_settings_views.h"
 #include "window/ui_state.h"
 
 using nlohmann::json;
@@ -66,7 +67,7 @@ std::string parameterText(const json& value, const std::string& pointer) {
 
 }  // namespace
 
-// 1. Everything a user can change in the window, except the views.
+// 1. Everything a user can change in the window.
 json settingsJson(const UiState& state) {
   json root;
   root["penumbra_settings"] = 1;
@@ -90,13 +91,15 @@ json settingsJson(const UiState& state) {
       }
     }
   root["parameters"] = parameters;
+  root["ui_scale"] = uiScaleJson(state);
+  root["views"] = viewsJson(state);
   return root;
 }
 
 // 2. Read and check into copies; commit only when all of it is valid.
 std::string applySettingsJson(UiState& state, const json& root) {
   try {
-    onlyKeys(root, "", {"penumbra_settings", "scene", "eye", "camera", "light", "parameters"});
+    onlyKeys(root, "", {"penumbra_settings", "scene", "eye", "camera", "light", "parameters", "ui_scale", "views"});
     // 2a. Parameters, checked on copies of the declarations.
     std::vector<std::pair<Param*, Param>> parameters;
     if (root.contains("parameters")) {
@@ -162,12 +165,21 @@ std::string applySettingsJson(UiState& state, const json& root) {
       if (l.contains("height")) light.height = float(number(l["height"], "/light/height"));
     }
     if (std::string problem = validateScene(candidate); !problem.empty()) fail("", problem);
-    // 2c. Commit.
+    // 2c. UI scale and views (checked whole, applied last).
+    std::vector<std::function<void(UiState&)>> interface;
+    try {
+      if (root.contains("ui_scale")) interface.push_back(readUiScale(state, root["ui_scale"], "/ui_scale"));
+      if (root.contains("views")) interface.push_back(readViews(state, root["views"], "/views"));
+    } catch (const std::invalid_argument& error) {
+      throw SettingsError{error.what()};
+    }
+    // 2d. Commit.
     if (loaded) state.adoptScene(std::move(*loaded), scene);
     state.session.scene.camera = candidate.camera;
     state.session.scene.light = candidate.light;
     state.session.eye = eye;
     for (auto& [declared, value] : parameters) *declared = value;
+    for (const auto& apply : interface) apply(state);
     return "";
   } catch (const SettingsError& error) {
     return error.message;

@@ -1,11 +1,13 @@
 // The window's settings as JSON (save / load, `penumbra --config FILE`): scene, eye size,
-// camera, light and every parameter as "stage.key": value. Loading is all or nothing: a bad
+// camera, light, every parameter as "stage.key": value, the UI scale and the views
+// (app/window/script/ui_settings_views.h). Loading is all or nothing: a bad
 // file changes nothing and the message names the JSON path and what is valid.
 //
 //   {"penumbra_settings": 1, "scene": "cube", "eye": "fit" | [640, 480],
 //    "camera": {"position": [x,y,z], "target": [..], "up": [..], "fov_y_degrees": 45},
 //    "light": {"center": [..], "forward": [..], "up": [..], "width": 1.6, "height": 1.6},
-//    "parameters": {"hard_shadow.offset": 0.005, "composite.shadow": "hard_shadow", ...}}
+//    "parameters": {"hard_shadow.offset": 0.005, "composite.shadow": "hard_shadow", ...},
+//    "ui_scale": 1, "views": {"layout": "one", "panels": [{"output": ..., "zoom": ...}], ...}}
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+
 #include "io/colormap.h"
 #include "window/ui_state.h"
 
@@ -24,14 +26,23 @@ void drawCategoryLegend(const UiState& state, const ViewPanel& view) {
   const auto names = categoryNamesFromDoc(output ? output->doc : "");
   const double total = double(texture.width()) * texture.height();
   ImGui::TextDisabled("%s", view.output.c_str());
+  // Swatch and name, then count and share right-aligned; below the name when the panel is too
+  // narrow for both (large UI scale), so nothing is cut.
+  const float swatch = ImGui::GetTextLineHeight() * 0.9f;
   for (const auto& [value, count] : counts) {
     const auto rgb = applyColormap(Colormap::Categorical, 0, float(value));
     ImGui::ColorButton(("##c" + std::to_string(value)).c_str(),
                        ImVec4(rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f, 1),
-                       ImGuiColorEditFlags_NoTooltip, {12, 12});
+                       ImGuiColorEditFlags_NoTooltip, {swatch, swatch});
     ImGui::SameLine();
     const auto name = names.find(value);
-    ImGui::Text("%d %-11s %8ld  %5.1f%%", value, name != names.end() ? name->second.c_str() : "",
-                count, 100.0 * double(count) / total);
+    ImGui::Text("%d %s", value, name != names.end() ? name->second.c_str() : "");
+    char share[48];
+    std::snprintf(share, sizeof share, "%ld  %5.1f%%", count, 100.0 * double(count) / total);
+    const float x = ImGui::GetContentRegionMax().x - ImGui::CalcTextSize(share).x;
+    const float nameEnd = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
+    if (nameEnd + ImGui::GetStyle().ItemSpacing.x <= x) ImGui::SameLine(x);
+    else ImGui::SetCursorPosX(x);
+    ImGui::TextUnformatted(share);
   }
 }

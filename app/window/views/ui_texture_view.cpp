@@ -1,3 +1,4 @@
+#include "window/ui_widgets.h"
 #include "window/views/ui_texture_view.h"
 
 #include <algorithm>
@@ -135,8 +136,9 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
 }
 
 // 3. Mouse over the image region (an invisible button owns it).
-bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 origin,
+bool handleMouse(UiState& state, int index, glm::ivec2 size, glm::vec2 origin,
                  glm::vec2 regionSize) {
+  ViewPanel& view = state.views.panels[index];
   ImGuiIO& io = ImGui::GetIO();
   const bool hovered = ImGui::IsItemHovered();
   const glm::vec2 mouse = toGlm(io.MousePos);
@@ -150,11 +152,13 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
     } else {
       view.transform.zoomAbout(std::pow(1.25f, io.MouseWheel), mouse, origin, regionSize);
       view.fitted = false;
+      if (state.views.linked) state.views.linkFrom(index);
     }
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
     view.transform.pan(toGlm(io.MouseDelta));
     view.fitted = false;
+    if (state.views.linked) state.views.linkFrom(index);
   }
   if (ImGui::IsItemDeactivated() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
       io.MouseDragMaxDistanceSqr[0] < io.MouseDragThreshold * io.MouseDragThreshold && hovered)
@@ -173,6 +177,15 @@ bool handleMouse(UiState& state, ViewPanel& view, glm::ivec2 size, glm::vec2 ori
   return movingCamera;
 }
 
+// The first of `texts` that fits the line (a small view, a large UI scale), else the last:
+// the readout is one reserved line and never runs past the view.
+std::string fitting(std::initializer_list<std::string> texts) {
+  const float width = ImGui::GetContentRegionAvail().x;
+  for (const std::string& text : texts)
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  return *(texts.end() - 1);
+}
+
 // 4. The readout line: hovered texel (else the pick) with its raw values.
 void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& texture,
                  std::optional<glm::ivec2> hover) {
@@ -184,8 +197,9 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
     what = "pick";
   }
   if (!at || at->x < 0 || at->y < 0 || at->x >= size.x || at->y >= size.y) {
-    ImGui::TextDisabled("%dx%d%s  click: pick, drag: pan, wheel: zoom, right drag: orbit, Alt: light", size.x,
-                        size.y, texture.isArray() ? " (array)" : "");
+    const std::string extent = std::to_string(size.x) + "x" + std::to_string(size.y) + (texture.isArray() ? " (array)" : "");
+    ImGui::TextDisabled("%s", fitting({extent + "  click: pick, drag: pan, wheel: zoom, right drag: orbit, Alt: light",
+                                       extent + "  F1: help", extent}).c_str());
     return;
   }
   const std::array<float, 4> texel = readTexel(texture, at->x, at->y, view.settings.layer);
@@ -198,7 +212,8 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
     text += value;
   }
   // Image coordinates (row 0 at the top, as the PNGs and `penumbra trace --pixel`).
-  ImGui::Text("%s (%d, %d): %s", what, at->x, size.y - 1 - at->y, text.c_str());
+  const std::string where = "(" + std::to_string(at->x) + ", " + std::to_string(size.y - 1 - at->y) + ")";
+  ImGui::TextUnformatted(fitting({what + (" " + where) + ": " + text, where + " " + text, text}).c_str());
 }
 
 }  // namespace
@@ -206,9 +221,11 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
 // 5. Child window: toolbar, image region, readout.
 bool drawTextureView(UiState& state, int index, ImVec2 size) {
   ViewPanel& view = state.views.panels[index];
-  const bool active = state.views.activeView == index && state.views.twoViews;
+  const bool several = state.views.shownViews() > 1;
+  const bool active = state.views.activeView == index && several;
+  const char letter[2] = {"ABCD"[index], 0};
   if (active) ImGui::PushStyleColor(ImGuiCol_Border, IM_COL32(230, 180, 60, 255));
-  ImGui::BeginChild(index == 0 ? "view_A" : "view_B", size, true,
+  ImGui::BeginChild((std::string("view_") + letter).c_str(), size, true,
                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   if (active) ImGui::PopStyleColor();
   if (ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows) &&
@@ -218,18 +235,18 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   // the current output wraps, so choosing another output never re-runs the pipeline. The
   // reserve is the toolbar's widest case (about 1400 pixels of controls) plus the readout.
   const ImVec2 whole = ImGui::GetContentRegionAvail();
-  const float toolbarLines = std::max(2.0f, std::ceil(1400.0f / std::max(whole.x, 1.0f)));
+  const bool compact = state.views.layout == ViewLayout::Grid;  // tools behind "..." (one line)
+  const float toolbarLines = compact ? 1.0f : std::max(2.0f, std::ceil(uiPixels(1400) / std::max(whole.x, 1.0f)));
   view.eyeRegion = {whole.x, whole.y - toolbarLines * ImGui::GetFrameHeightWithSpacing() -
                                  ImGui::GetTextLineHeightWithSpacing()};
-  if (state.views.twoViews) {
-    ImGui::TextColored(active ? ImVec4(0.9f, 0.7f, 0.25f, 1) : ImVec4(0.6f, 0.6f, 0.6f, 1), "%s",
-                       index == 0 ? "A" : "B");
+  if (several) {
+    ImGui::TextColored(active ? ImVec4(0.9f, 0.7f, 0.25f, 1) : ImVec4(0.6f, 0.6f, 0.6f, 1), "%s", letter);
     ImGui::SameLine();
   }
   std::string problem;
   const GlTexture* texture = shownTexture(state, view, &problem);
   if (texture) syncSettings(state, view, *texture);
-  drawViewToolbar(state, view, texture);
+  drawViewToolbar(state, view, texture, compact);
   const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const glm::vec2 regionSize{std::max(avail.x, 16.0f), std::max(avail.y - readoutHeight, 16.0f)};
@@ -249,7 +266,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
     const glm::ivec2 textureSize{texture->width(), texture->height()};
-    movingCamera = handleMouse(state, view, textureSize, origin, regionSize);
+    movingCamera = handleMouse(state, index, textureSize, origin, regionSize);
     std::optional<glm::ivec2> hover;
     if (ImGui::IsItemHovered())
       hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);

@@ -94,7 +94,10 @@ void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
 //    parameters' new revision re-runs the pipeline.
 void recordPickedPixel(UiState& state) {
   if (!state.views.pick || !state.session.frame) return;
-  if (state.views.pickSpace != glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight)) return;
+  // The eye of the coming run (UiState::keepPickInEye), so a resized eye runs once.
+  const glm::ivec2 eye = state.fullEye != glm::ivec2(0) ? state.fullEye
+                                                         : glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight);
+  if (state.views.pickSpace != eye) return;
   const glm::ivec2 image{state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y};
   if (Stage* recorder = recordingStage(state.session.pipeline)) {
     recorder->param("record_x").value = image.x;

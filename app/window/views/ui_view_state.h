@@ -1,5 +1,6 @@
-// The window's views: the two texture views of the centre area, the selection, the pick and
-// what is drawn over the views (one part of UiState, app/window/ui_state.h).
+// The window's views: up to four texture views of the centre area (one, A|B side by side, or
+// a 2x2 grid to compare four methods), the selection, the pick and what is drawn over the
+// views (one part of UiState, app/window/ui_state.h).
 #pragma once
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 struct ViewPanel {
   std::string output;         // "stage.output" shown
   bool locked = false;        // a locked view ignores selections in the pipeline panel
+  bool toolsOpen = false;     // the 2x2 grid shows only the output unless the tools are open
   ViewSettings settings;
   std::string settingsFor;    // the output `settings` were initialised from
   ViewTransform transform;
@@ -35,23 +37,42 @@ struct ViewPanel {
   mutable ViewDifference difference;  // a cache of the GPU result
 };
 
+// How the centre area is split: one view, A | B, or A B / C D.
+enum class ViewLayout { One, SideBySide, Grid };
+constexpr int kMaxViews = 4;
+
 struct ViewState {
-  ViewPanel panels[2];
+  ViewPanel panels[kMaxViews];
   int activeView = 0;
-  bool twoViews = false;
+  ViewLayout layout = ViewLayout::One;
+  bool linked = false;  // zoom and pan of one view apply to the others (same relative place)
   std::string selectedStage;
   std::string scrollToStage;  // the pipeline panel brings this stage into view (scripts, views)
   std::optional<glm::ivec2> pick;  // GL texel (row 0 at the bottom) in a texture of `pickSpace`
   glm::ivec2 pickSpace{0, 0};
+  glm::vec2 pickUv{0, 0};  // the pick's centre over pickSpace: kept exactly while the eye resizes
   int selectedRay = 0;
   std::vector<ViewOverlayShape> overlays;  // drawn by views of matching size (ray trace)
   bool showLight = true;    // the light's outline over eye-sized views (ui_light_gesture.h)
   bool traceShown = false;  // the inspector's ray trace section is open (it needs the trace)
   bool traceWindow = false;  // the ray trace panel in its own window instead of the inspector
 
-  // The view a pipeline-panel selection goes to: the active one unless locked.
+  // 1. Layout: how many views are shown; opening a view copies what A shows into a view
+  //    that shows nothing yet (so nothing new has to run).
+  int shownViews() const { return layout == ViewLayout::One ? 1 : layout == ViewLayout::SideBySide ? 2 : 4; }
+  void setLayout(ViewLayout next);
+  // The view a pipeline-panel selection goes to: the active one unless locked, else the
+  // next shown one that is not.
   ViewPanel* selectionTarget();
-  // The pick stays inside the texture it was made in.
+  // 2. The pick stays inside the texture it was made in; `followResize` moves it to the same
+  //    place of a resized texture (the eye when a view opens under "fit view").
   void setPick(glm::ivec2 texel, glm::ivec2 space);
   void movePick(glm::ivec2 delta);
+  void followResize(glm::ivec2 from, glm::ivec2 to);
+  // 3. Linked views: the other shown views take view `from`'s zoom and pan, scaled to their
+  //    texture size (same relative centre, same screen size of the whole image).
+  void linkFrom(int from);
 };
+
+const char* layoutName(ViewLayout layout);  // "one", "side_by_side", "grid"
+bool layoutFromName(const std::string& name, ViewLayout& layout);

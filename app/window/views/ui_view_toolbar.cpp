@@ -45,7 +45,7 @@ namespace {
 // 2a. "minus": the difference view (app/window/views/ui_view_difference.h), with the thickness preset.
 void drawDifferenceControls(UiState& state, ViewPanel& view) {
   sameLineIfFits(170);
-  ImGui::SetNextItemWidth(130);
+  ImGui::SetNextItemWidth(uiPixels(130));
   const std::string current = view.minus.empty() ? "- (nothing)" : "- " + view.minus;
   if (ImGui::BeginCombo("##minus", current.c_str())) {
     if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
@@ -75,8 +75,8 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
 }
 
 // 2. Line 1: what is shown (output, lock, channels, colormap, level).
-void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
-  ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - 170, 120.0f, 210.0f));
+void drawOutputCombo(UiState& state, ViewPanel& view, float width) {
+  ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo("##output", view.output.c_str())) {
     for (const std::string& key : state.session.outputKeys())
       if (ImGui::Selectable(key.c_str(), key == view.output)) {
@@ -86,6 +86,11 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
       }
     ImGui::EndCombo();
   }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", view.output.c_str());  // the combo may cut it
+}
+
+void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
+  drawOutputCombo(state, view, std::clamp(ImGui::GetContentRegionAvail().x - uiPixels(170), uiPixels(120), uiPixels(210)));
   sameLineIfFits(60);
   ImGui::Checkbox("lock", &view.locked);
   if (ImGui::IsItemHovered())
@@ -101,14 +106,14 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
     else ImGui::SameLine(0, 2);
     const bool on = view.settings.channels[size_t(c)];
     ImGui::PushStyleColor(ImGuiCol_Button, on ? lit[c] : ImVec4(0.2f, 0.2f, 0.22f, 1));
-    if (ImGui::Button(names[c], {22, 0})) view.settings.channels[size_t(c)] = !on;
+    if (ImGui::Button(names[c], {uiPixels(22), 0})) view.settings.channels[size_t(c)] = !on;
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Channel %s on/off. One channel alone: shown through the colormap.", names[c]);
   }
   const bool single = singleChannel(view.settings, texture->channelCount()) >= 0;
   sameLineIfFits(100);
-  ImGui::SetNextItemWidth(100);
+  ImGui::SetNextItemWidth(uiPixels(100));
   ImGui::BeginDisabled(!single);
   int map = int(view.settings.colormap);
   const auto maps = colormapNames();
@@ -123,7 +128,7 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   const GlTexture& source = state.session.frame->texture(view.output);  // a difference view is 2D
   if (source.isArray()) {
     sameLineIfFits(170);
-    ImGui::SetNextItemWidth(110);
+    ImGui::SetNextItemWidth(uiPixels(110));
     ImGui::SliderInt("level", &view.settings.layer, 0, source.layers() - 1);
     helpMarker("Array layer: for the N-buffer, level n holds min/max over 2^n x 2^n texels.");
   }
@@ -133,11 +138,11 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
 void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture) {
   ViewSettings& s = view.settings;
   const float speed = std::max(1e-6f, std::abs(s.white - s.black) * 0.005f);
-  ImGui::SetNextItemWidth(80);
+  ImGui::SetNextItemWidth(uiPixels(80));
   ImGui::DragFloat("##black", &s.black, speed, 0, 0, "%.4g");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Black point: drag, or double-click to type.");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(80);
+  ImGui::SetNextItemWidth(uiPixels(80));
   ImGui::DragFloat("##white", &s.white, speed, 0, 0, "%.4g");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("White point: drag, or double-click to type.");
   sameLineIfFits(60);
@@ -169,8 +174,16 @@ void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture
 
 }  // namespace
 
-// 4. Both lines; the second only once the output has a texture.
-void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture) {
-  drawSourceControls(state, view, texture);
-  if (texture) drawRangeControls(state, view, *texture);
+// 4. Both lines; the second only once the output has a texture. Compact: one line.
+void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture, bool compact) {
+  if (compact && !view.toolsOpen) {
+    drawOutputCombo(state, view, ImGui::GetContentRegionAvail().x - buttonsWidth({"..."}));
+  } else {
+    drawSourceControls(state, view, texture);
+    if (texture) drawRangeControls(state, view, *texture);
+  }
+  if (!compact) return;
+  ImGui::SameLine();
+  if (ImGui::Button(view.toolsOpen ? "^" : "...")) view.toolsOpen = !view.toolsOpen;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip(view.toolsOpen ? "Hide this view's tools" : "This view's tools: lock, difference, channels, colormap, range, zoom, export");
 }

@@ -7,8 +7,9 @@ class UiState;
 struct ViewPanel;
 class GlTexture;
 
-// `texture` is the output's texture this frame, or nullptr if it was not written.
-void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture);
+// `texture` is the output's texture this frame, or nullptr if it was not written. `compact`
+// (the 2x2 grid): the output and a "..." button that opens the rest (view.toolsOpen).
+void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture, bool compact);
 
 // Fits black/white to the finite values of the shown channels in the visible texels.
 void autofitView(ViewPanel& view, const GlTexture& texture);
