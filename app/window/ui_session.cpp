@@ -107,6 +107,11 @@ bool Session::holds(const RunKey& key) const {
   RunKey same = key;
   same.requested = lastRun->requested;
   if (!(same == *lastRun) || !runError.empty()) return false;
+  // Only a request that grew: showing less (albedo instead of the composite) runs the smaller
+  // graph, so the timings show what the view costs.
+  if (!std::includes(key.requested.begin(), key.requested.end(), lastRun->requested.begin(),
+                     lastRun->requested.end()))
+    return false;
   return std::all_of(key.requested.begin(), key.requested.end(),
                      [&](const std::string& output) { return frame->has(output); });
 }

@@ -74,8 +74,8 @@ struct Session {
   // The key a run of `requested` would have now (under "fit view", the last laid-out size).
   RunKey currentKey(std::vector<std::string> requested) const;
   // Whether the frame already holds what `key` asks for: the last run's key, or the same
-  // but for outputs that last run wrote anyway (a second view of an output the first one
-  // depends on, or of the same one, runs nothing).
+  // with more outputs requested that the last run wrote anyway (a second view of the same
+  // output or of one the first depends on runs nothing).
   bool holds(const RunKey& key) const;
   // The eye size the next run would have, or none while "fit view" waits for the layout.
   std::optional<glm::ivec2> nextEye(glm::ivec2 viewRegion) const;
