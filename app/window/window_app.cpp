@@ -174,8 +174,12 @@ void drawSidePanel(UiState& state, const Layout& layout) {
       if (!ImGui::BeginTabItem(names[tab], nullptr, flags)) continue;
       shownTab = tab;
       ImGui::BeginChild("##side_tab");  // scrolls under the tab bar, which stays in place
-      if (tab == 0) drawInspector(state);
-      else drawSpeedErrorPanel(state);
+      if (tab == 0) {
+        drawInspector(state);
+      } else {
+        state.views.overlays.clear();  // the ray's shapes are the inspector's
+        drawSpeedErrorPanel(state);
+      }
       ImGui::EndChild();
       ImGui::EndTabItem();
     }

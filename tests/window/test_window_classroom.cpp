@@ -23,7 +23,7 @@ namespace {
 
 struct WindowRect {
   std::string name;
-  float x, y, w, h, overflow;
+  float x, y, w, h, contentHeight, overflow;
   bool overlaps(const WindowRect& o) const {
     return x < o.x + o.w && o.x < x + w && y < o.y + o.h && o.y < y + h;
   }
@@ -34,13 +34,13 @@ std::vector<WindowRect> layoutOf(const std::string& output, const std::string& l
   std::vector<WindowRect> windows;
   const std::regex line("layout " + label +
                         ": window (.+) at (-?[0-9]+) (-?[0-9]+) size ([0-9]+) ([0-9]+) contents "
-                        "[0-9]+ [0-9]+ overflow ([0-9]+)");
+                        "[0-9]+ ([0-9]+) overflow ([0-9]+)");
   std::istringstream lines(output);
   for (std::string text; std::getline(lines, text);) {
     std::smatch m;
     if (std::regex_match(text, m, line))
       windows.push_back({m[1], std::stof(m[2]), std::stof(m[3]), std::stof(m[4]), std::stof(m[5]),
-                         std::stof(m[6])});
+                         std::stof(m[6]), std::stof(m[7])});
   }
   return windows;
 }
@@ -109,6 +109,7 @@ TEST(WindowClassroom, NoWindowFloatsOverTheViews) {
 TEST(WindowClassroom, NoPanelContentsRunPastTheRightEdgeAtScale1And15) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("classroom_scale");
+  std::vector<float> statusText;  // the status line's one line of text: the font's size
   for (const char* scale : {"1", "1.5"}) {
     const std::string shot = (dir / (std::string("window_scale_") + scale + ".png")).string();
     const auto script = writeScript(dir, std::string(R"([{"ui_scale": )") + scale + R"(},
@@ -127,7 +128,12 @@ TEST(WindowClassroom, NoPanelContentsRunPastTheRightEdgeAtScale1And15) {
                                  << "' runs " << w.overflow << " px past its right edge";
     }
     EXPECT_TRUE(fs::is_regular_file(shot)) << result.output;
+    const std::vector<WindowRect> panels = layoutOf(result.output, "panels");
+    if (const WindowRect* status = find(panels, "##status")) statusText.push_back(status->contentHeight);
   }
+  ASSERT_EQ(statusText.size(), 2u);
+  EXPECT_EQ(statusText[0], 13);  // ImGui's font at 13 px
+  EXPECT_EQ(statusText[1], 20);  // rebuilt at round(13 x 1.5)
 }
 
 TEST(WindowClassroom, LinkedViewsFollowTheActiveOne) {
