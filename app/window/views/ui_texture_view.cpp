@@ -237,8 +237,11 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   const ImVec2 whole = ImGui::GetContentRegionAvail();
   const bool compact = state.views.layout == ViewLayout::Grid;  // tools behind "..." (one line)
   const float toolbarLines = compact ? 1.0f : std::max(2.0f, std::ceil(uiPixels(1400) / std::max(whole.x, 1.0f)));
-  view.eyeRegion = {whole.x, whole.y - toolbarLines * ImGui::GetFrameHeightWithSpacing() -
-                                 ImGui::GetTextLineHeightWithSpacing()};
+  // A window too small for the toolbar still gets a (tiny) region: zero would read as "no
+  // layout yet" and the pipeline (and a script waiting for its first run) would never start.
+  view.eyeRegion = glm::max(glm::vec2(whole.x, whole.y - toolbarLines * ImGui::GetFrameHeightWithSpacing() -
+                                                   ImGui::GetTextLineHeightWithSpacing()),
+                            glm::vec2(1));
   if (several) {
     ImGui::TextColored(active ? ImVec4(0.9f, 0.7f, 0.25f, 1) : ImVec4(0.6f, 0.6f, 0.6f, 1), "%s", letter);
     ImGui::SameLine();
