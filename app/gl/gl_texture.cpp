@@ -33,8 +33,10 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
   else
     glTextureStorage2D(id_, 1, internalFormat, width, height);
   try {
-    checkGlAllocation("a " + std::to_string(width) + "x" + std::to_string(height) +
-                          (layers > 0 ? "x" + std::to_string(layers) : std::string()) + " texture",
+    std::string what = "a ";
+    what.append(std::to_string(width)).append("x").append(std::to_string(height));
+    if (layers > 0) what.append("x").append(std::to_string(layers));
+    checkGlAllocation(what.append(" texture"),
                       size_t(width) * size_t(height) * size_t(std::max(layers, 1)) *
                           size_t(channelCount()) * 4);
   } catch (...) {
