@@ -5,7 +5,8 @@
 # found (BUILD_FUZZ/corpus, default build-fuzz). A finding (crash, sanitizer report, leak,
 # timeout, out of memory, an exception other than InputError) fails the run and leaves its
 # input in BUILD_FUZZ/findings. Then the corpus is replayed with source-based coverage and
-# the line coverage of the two readers printed (docs/reliability.md).
+# the line coverage of the two readers printed (docs/reliability.md); FUZZ_COVERAGE=0 skips
+# that (ctest Fuzz.Bounded).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_FUZZ:-build-fuzz}
@@ -33,7 +34,8 @@ for harness in scene_json gltf; do
   grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$build/fuzz_$harness.log" || true
 done
 # Line coverage of the readers over the corpus (when llvm-cov is installed).
-if command -v llvm-profdata-14 >/dev/null && command -v llvm-cov-14 >/dev/null; then
+if [ "${FUZZ_COVERAGE:-1}" != 0 ] && command -v llvm-profdata-14 >/dev/null &&
+   command -v llvm-cov-14 >/dev/null; then
   configure "$build/coverage" -DPENUMBRA_FUZZ_COVERAGE=ON
   for harness in scene_json gltf; do
     LLVM_PROFILE_FILE="$build/coverage/$harness.profraw" "$build/coverage/fuzz_$harness" -runs=0 \

@@ -3,7 +3,9 @@
 # (GCC), leak checking on. Mesa's driver keeps allocations for the life of the process and
 # is unloaded before LeakSanitizer looks, so those reports are suppressed by
 # tests/sanitize/lsan.supp (by module), never by turning leak checking off. Any other report
-# fails the run. BUILD_SANITIZE (default build-sanitize) is the build directory.
+# fails the run. BUILD_SANITIZE (default build-sanitize) is the build directory. -O1 -g1
+# (line tables only) as the sanitizers' documentation advises: about half the compile time
+# of -O2 -g, and every report still names file and line.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -11,7 +13,7 @@ build=${BUILD_SANITIZE:-build-sanitize}
 jobs=${JOBS:-$(nproc)}
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" \
-      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build "$build" -j "$jobs"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitize/lsan.supp:print_suppressions=0"

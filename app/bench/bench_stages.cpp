@@ -121,9 +121,7 @@ int runBenchStages(const BenchStagesOptions& options) {
           const std::string key = stage->name() + "." + output.name;
           if (sceneIndex != 0 || !frame.has(key)) continue;
           const GlTexture& texture = frame.texture(key);
-          memory[key] = {std::to_string(texture.width()) + "x" + std::to_string(texture.height()) +
-                             (texture.isArray() ? "x" + std::to_string(texture.layers()) : ""),
-                         frame.megabytes(key)};
+          memory[key] = {texture.extentText(), frame.megabytes(key)};
         }
       for (const std::string& stage : pipeline.dependencies({pipeline.methodOutput(config.method)}))
         if (std::find(columns.begin(), columns.end(), stage) == columns.end()) columns.push_back(stage);

@@ -33,8 +33,7 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
   else
     glTextureStorage2D(id_, 1, internalFormat, width, height);
   try {
-    checkGlAllocation("a " + std::to_string(width) + "x" + std::to_string(height) +
-                          (layers > 0 ? "x" + std::to_string(layers) : std::string()) + " texture",
+    checkGlAllocation("a " + extentText() + " texture",
                       size_t(width) * size_t(height) * size_t(std::max(layers, 1)) *
                           size_t(channelCount()) * 4);
   } catch (...) {
@@ -46,6 +45,15 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+// Appends only: `"x" + std::to_string(...)` (a literal plus a temporary string) makes GCC 12
+// print a false -Wrestrict from <string> (GCC bug 105329).
+std::string GlTexture::extentText() const {
+  std::string text = std::to_string(width_);
+  text.append("x").append(std::to_string(height_));
+  if (layers_ > 0) text.append("x").append(std::to_string(layers_));
+  return text;
 }
 
 GlTexture& GlTexture::operator=(GlTexture&& other) noexcept {

@@ -30,6 +30,8 @@ public:
   int height() const { return height_; }
   int layers() const { return layers_; }
   bool isArray() const { return layers_ > 0; }
+  // "WxH", or "WxHxL" for an array texture (messages, the bench's memory table).
+  std::string extentText() const;
   int channelCount() const;  // channels of the internal format (depth: 1)
   bool isInteger() const;    // R32UI and friends
   // Bytes of its one mip level over every layer, from the internal format and the size

@@ -116,8 +116,10 @@ std::string nameSourcesInLog(const std::string& log, const std::vector<std::stri
           index < files.size()
               ? files[index] + ":" + std::to_string(encoded % kLinesPerFile)
               : (*match)[2].str() + ":" + (*match)[3].str();
-      result += text.substr(last, size_t(match->position()) - last) + (*match)[1].str() + place +
-                (withColumn ? ":" + (*match)[4].str() : "");
+      // Appends only: `":" + (*match)[4].str()` makes GCC 12 print a false -Wrestrict.
+      result.append(text, last, size_t(match->position()) - last).append((*match)[1].str());
+      result.append(place);
+      if (withColumn) result.append(":").append((*match)[4].str());
       last = size_t(match->position() + match->length());
     }
     return result + text.substr(last);

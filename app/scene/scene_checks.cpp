@@ -110,7 +110,7 @@ std::vector<std::string> lightWarnings(const Scene& scene) {
     if (object.receiverOnly) continue;
     occluders = true;
     occluderInFront = occluderInFront || inFront;
-    const std::string name = "'" + printable(object.name) + "'";
+    const std::string name = std::string(1, '\'').append(printable(object.name)).append("'");
     bool crosses = false;
     for (size_t t = 0; t < mesh.triangleCount() && !crosses; ++t) {
       const glm::dvec3 corner[3] = {light(mesh.positions[mesh.indices[3 * t]]),

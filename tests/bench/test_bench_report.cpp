@@ -13,7 +13,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <unistd.h>
 
 #include "bench/bench_configs.h"
 #include "bench/bench_json.h"
@@ -24,15 +23,9 @@
 #include "scene/light_frame.h"
 #include "scene/scene_builtin.h"
 #include "support/command.h"
+#include "support/temp_directory.h"
 
 namespace {
-
-std::filesystem::path scratch(const std::string& name) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("penumbra-bench-test-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(path);
-  return path;
-}
 
 std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path) {
   std::ifstream file(path);
@@ -60,7 +53,8 @@ glm::vec3 occluderCentre(const Scene& scene) {
 }  // namespace
 
 TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
-  const auto out = scratch("tiny"), cache = scratch("tiny-cache");
+  const TempDirectory scratch("penumbra-bench-tiny");
+  const auto out = scratch.path() / "out", cache = scratch.path() / "cache";
   setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // inherited by the command
   const CommandResult result = runPenumbra(
       "bench --scene plate --preset minimal --sweep trace.rays=1,2 --width 64 --height 48 "
@@ -118,12 +112,11 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   }
   EXPECT_EQ(results[others + 1].params.at("trace.rays"), "2");
   EXPECT_EQ(results[0].params.count("trace.rays"), 0u);  // the hard shadow does not trace
-  std::filesystem::remove_all(out);
-  std::filesystem::remove_all(cache);
 }
 
 TEST(BenchReport, RefusesWhenTheReferenceWouldExceedTheTimeLimit) {
-  const auto out = scratch("refuse"), cache = scratch("refuse-cache");
+  const TempDirectory scratch("penumbra-bench-refuse");
+  const auto out = scratch.path() / "out", cache = scratch.path() / "cache";
   setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // nothing cached: the estimate decides
   const CommandResult result = runPenumbra(
       "bench --scene plate --preset minimal --width 64 --height 48 --frames 1 "
@@ -134,12 +127,15 @@ TEST(BenchReport, RefusesWhenTheReferenceWouldExceedTheTimeLimit) {
 }
 
 TEST(BenchReport, UnknownPresetAndBadSweepAreRefused) {
-  CommandResult result = runPenumbra("bench --scene plate --preset nope --out /tmp/x");
+  const TempDirectory scratch("penumbra-bench-bad");
+  const std::string out = (scratch.path() / "out").string();
+  CommandResult result = runPenumbra("bench --scene plate --preset nope --out " + out);
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.output.find("thesis-table-4.1"), std::string::npos) << result.output;
-  result = runPenumbra("bench --scene plate --sweep trace.rays=1,99 --out /tmp/x");
+  result = runPenumbra("bench --scene plate --sweep trace.rays=1,99 --out " + out);
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.output.find("trace.rays"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
@@ -218,7 +214,8 @@ TEST(Plot, ChartsAreWrittenAsPngSvgAndPdfWithText) {
   spec.yLabel = "error";
   spec.seriesNames = {"a"};
   spec.points = {{2, 0.5, 0, "p", true}, {20, 0.1, 0, "q", true}, {30, 0.3, 0, "r", false}};
-  const std::filesystem::path stem = scratch("plot");
+  const TempDirectory scratch("penumbra-bench-plot");
+  const std::filesystem::path stem = scratch.path() / "plot";
   const auto paths = writePlot(stem, spec);
   ASSERT_EQ(paths.size(), 3u);
   OIIO::ImageBuf image(paths[0].string());
@@ -238,6 +235,5 @@ TEST(Plot, ChartsAreWrittenAsPngSvgAndPdfWithText) {
   };
   EXPECT_NE(head(paths[1]).find("<svg"), std::string::npos);
   EXPECT_EQ(head(paths[2]).rfind("%PDF", 0), 0u);
-  for (const auto& path : paths) std::filesystem::remove(path);
   EXPECT_THROW(writePlot("/nonexistent-directory/x", spec), std::runtime_error);
 }

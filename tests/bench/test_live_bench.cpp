@@ -7,12 +7,12 @@
 #include <cmath>
 #include <filesystem>
 #include <thread>
-#include <unistd.h>
 
 #include "bench/live_bench.h"
 #include "core/pipeline.h"
 #include "scene/scene_builtin.h"
 #include "support/gl_test.h"
+#include "support/temp_directory.h"
 
 namespace {
 
@@ -29,9 +29,8 @@ int stepToTheEnd(LiveBench& bench) {
 }  // namespace
 
 TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
-  const auto cache = std::filesystem::temp_directory_path() /
-                     ("penumbra-live-bench-" + std::to_string(::getpid()));
-  setenv("PENUMBRA_CACHE", cache.c_str(), 1);
+  const TempDirectory cache("penumbra-live-bench");
+  setenv("PENUMBRA_CACHE", cache.path().c_str(), 1);
   headlessContext();
   const Scene plate = makeBuiltinScene("plate");
   Pipeline window;  // the window's parameters: a configuration the preset does not have
@@ -75,5 +74,4 @@ TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
   ASSERT_EQ(bench.results().size(), 1u);
   EXPECT_EQ(bench.results()[0].frames, 2);
   EXPECT_FALSE(bench.step());
-  std::filesystem::remove_all(cache);
 }

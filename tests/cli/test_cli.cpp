@@ -10,12 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include "support/command.h"
+#include "support/temp_directory.h"
 
 namespace fs = std::filesystem;
 
 TEST(Cli, ExportWritesEveryOutputAndRunJson) {
-  const fs::path out = fs::temp_directory_path() / "penumbra_cli_export";
-  fs::remove_all(out);
+  const TempDirectory scratch("penumbra_cli_export");
+  const fs::path out = scratch.path() / "out";
   const auto result = runPenumbra("export --scene cube --out " + out.string() +
                                   " --width 128 --height 96 --set light.resolution=128");
   ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -33,42 +34,50 @@ TEST(Cli, ExportWritesEveryOutputAndRunJson) {
   EXPECT_TRUE(run["stage_milliseconds"].contains("trace") || run["stage_milliseconds"].contains("hard_shadow"));
   for (const auto& entry : fs::directory_iterator(out))
     EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
-  fs::remove_all(out);
 }
 
+// Bad input is refused before anything is written: --out names a directory that must never
+// appear (inside a unique scratch directory).
 TEST(Cli, UnknownSetKeyExits2AndListsValidKeys) {
-  const auto result = runPenumbra("export --scene cube --out /tmp/penumbra_never --set nope.key=1");
+  const TempDirectory scratch("penumbra_cli_never");
+  const fs::path never = scratch.path() / "never";
+  const auto result = runPenumbra("export --scene cube --out " + never.string() + " --set nope.key=1");
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.output.find("unknown parameter 'nope.key'"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("light.resolution"), std::string::npos) << result.output;
-  EXPECT_FALSE(fs::exists("/tmp/penumbra_never"));
+  EXPECT_FALSE(fs::exists(never));
 }
 
 TEST(Cli, OutOfRangeValueExits2AndNamesTheRange) {
-  const auto result = runPenumbra("export --scene cube --out /tmp/penumbra_never "
-                                  "--set light.resolution=5000");
+  const TempDirectory scratch("penumbra_cli_never");
+  const std::string never = (scratch.path() / "never").string();
+  const auto result = runPenumbra("export --scene cube --out " + never + " --set light.resolution=5000");
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.output.find("[128, 2048]"), std::string::npos) << result.output;
-  const auto notNumber = runPenumbra("export --set hard_shadow.offset=abc --out /tmp/penumbra_never");
+  const auto notNumber = runPenumbra("export --set hard_shadow.offset=abc --out " + never);
   EXPECT_EQ(notNumber.exitCode, 2);
   EXPECT_NE(notNumber.output.find("hard_shadow.offset"), std::string::npos) << notNumber.output;
+  EXPECT_FALSE(fs::exists(never));
 }
 
 TEST(Cli, BadFlagsAndScenesExit2) {
+  const TempDirectory scratch("penumbra_cli_never");
+  const std::string never = (scratch.path() / "never").string();
   EXPECT_EQ(runPenumbra("export --width -3").exitCode, 2);
   EXPECT_EQ(runPenumbra("--no-such-flag").exitCode, 2);
-  const auto scene = runPenumbra("export --scene nowhere --out /tmp/penumbra_never");
+  const auto scene = runPenumbra("export --scene nowhere --out " + never);
   EXPECT_EQ(scene.exitCode, 2);
   EXPECT_NE(scene.output.find("cube, plate, spheres, engine, dragon"), std::string::npos) << scene.output;
-  const auto missing = runPenumbra("export --scene /nonexistent/file.glb --out /tmp/penumbra_never");
+  const auto missing = runPenumbra("export --scene /nonexistent/file.glb --out " + never);
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_NE(missing.output.find("file.glb"), std::string::npos) << missing.output;
+  EXPECT_FALSE(fs::exists(never));
 }
 
 TEST(Window, ScreenshotUnderXvfbIsNotBlank) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (make test does)";
-  const fs::path shot = fs::temp_directory_path() / "penumbra_window_smoke.png";
-  fs::remove(shot);
+  const TempDirectory scratch("penumbra_window_smoke");
+  const fs::path shot = scratch.path() / "shot.png";
   const auto result = runPenumbra("--screenshot " + shot.string() + " --frames 3 --width 800 --height 500");
   ASSERT_EQ(result.exitCode, 0) << result.output;
   OIIO::ImageBuf image(shot.string());
@@ -82,5 +91,4 @@ TEST(Window, ScreenshotUnderXvfbIsNotBlank) {
   OIIO::ImageBuf view = OIIO::ImageBufAlgo::cut(image, OIIO::ROI(400, 800, 0, 500));
   const auto viewStats = OIIO::ImageBufAlgo::computePixelStats(view);
   EXPECT_GT(viewStats.stddev[0], 0.02);
-  fs::remove(shot);
 }

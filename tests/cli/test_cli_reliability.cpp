@@ -112,7 +112,9 @@ TEST(CliReliability, ExportDirectoryIsATransaction) {
     }
     int status = 0;
     waitpid(child, &status, 0);
-    if (killedWhileWriting) EXPECT_TRUE(WIFSIGNALED(status));
+    if (killedWhileWriting) {
+      EXPECT_TRUE(WIFSIGNALED(status));
+    }
   }
   ASSERT_EQ(killedWhileWriting, 1) << "never caught the export while writing";
   EXPECT_EQ(readText(out / "run.json"), secondRun) << "the earlier export was touched";
@@ -149,16 +151,19 @@ TEST(CliReliability, LightFacingAwayFromTheOccludersIsWarnedAbout) {
 
 // Case 7: messages.
 TEST(CliReliability, MessagesAreShortAndSayWhy) {
-  const auto timeLimit = runPenumbra("bench --scene cube --out /tmp/penumbra_never --time-limit -1");
+  const TempDirectory dir("penumbra_cli_messages");
+  const fs::path never = dir.path() / "never";
+  const auto timeLimit = runPenumbra("bench --scene cube --out " + never.string() + " --time-limit -1");
   EXPECT_EQ(timeLimit.exitCode, 2);
   EXPECT_LT(timeLimit.output.size(), 300u) << timeLimit.output;
   EXPECT_TRUE(contains(timeLimit.output, "--time-limit")) << timeLimit.output;
   for (const char* value : {"0x4", "inf"}) {  // more spellings: tests/core/test_param_syntax.cpp
-    const auto hex = runPenumbra(std::string("export --out /tmp/penumbra_never --set 'trace.rays=") + value + "'");
+    const auto hex = runPenumbra("export --out " + never.string() + " --set 'trace.rays=" + value + "'");
     EXPECT_EQ(hex.exitCode, 2) << value << ": " << hex.output;
   }
-  EXPECT_FALSE(fs::exists("/tmp/penumbra_never"));
-  const auto scenes = runPenumbra("bench-stages --scenes '' --out /tmp/penumbra_never/t.md");
+  EXPECT_FALSE(fs::exists(never));
+  const auto scenes = runPenumbra("bench-stages --scenes '' --out " + (never / "t.md").string());
   EXPECT_EQ(scenes.exitCode, 2) << scenes.output;
   EXPECT_TRUE(contains(scenes.output, "names no scene")) << scenes.output;
+  EXPECT_FALSE(fs::exists(never));
 }

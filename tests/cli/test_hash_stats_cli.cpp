@@ -11,12 +11,13 @@
 #include "gl/hash_kind.h"
 #include "stats/dieharder_run.h"
 #include "support/command.h"
+#include "support/temp_directory.h"
 
 namespace fs = std::filesystem;
 
 TEST(HashStatsCli, WritesTablesJsonAndImagesForEveryHash) {
-  const fs::path out = fs::temp_directory_path() / "penumbra_hash_stats_cli";
-  fs::remove_all(out);
+  const TempDirectory scratch("penumbra_hash_stats_cli");
+  const fs::path out = scratch.path() / "out";
   const auto result = runPenumbra("hash-stats --count 4096 --keys 2 --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
   std::ifstream in(out / "hash_stats.json");

@@ -10,6 +10,7 @@
 #include "scene/mesh_builders.h"
 #include "scene/scene_builtin.h"
 #include "support/gl_test.h"
+#include "support/temp_directory.h"
 
 TEST(GlContextTest, HeadlessContextIsGl45Core) {
   GlContext& context = headlessContext();
@@ -97,8 +98,8 @@ TEST(HardShadow, PlateShadowEqualsAnalyticProjectionWithinOneTexel) {
 
 TEST(Export, ExrReadBackEqualsGpuBufferBitForBit) {
   PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, 96, 64);
-  const auto directory = std::filesystem::temp_directory_path() / "penumbra_exr_test";
-  std::filesystem::create_directories(directory);
+  const TempDirectory scratch("penumbra_exr_test");
+  const std::filesystem::path& directory = scratch.path();
   for (const std::string key : {"gbuffer.wsPosition", "light_layers.near", "hard_shadow.visibility"}) {
     const size_t dot = key.find('.');
     const Output& output = run.pipeline->stage(key.substr(0, dot)).output(key.substr(dot + 1));
@@ -116,5 +117,4 @@ TEST(Export, ExrReadBackEqualsGpuBufferBitForBit) {
     EXPECT_TRUE(std::filesystem::exists(directory / (key + ".png")));
     EXPECT_FALSE(std::filesystem::exists(directory / (key + ".partial.exr")));
   }
-  std::filesystem::remove_all(directory);
 }

@@ -7,6 +7,7 @@
 
 #include "gl/shader_program.h"
 #include "support/gl_test.h"
+#include "support/temp_directory.h"
 
 TEST(ShaderLog, SourceNumbersBecomeFileNames) {
   const std::vector<std::string> files{"trace.comp", "shared/frame.glsl", "shared/trace_ray.glsl"};
@@ -20,7 +21,8 @@ TEST(ShaderLog, SourceNumbersBecomeFileNames) {
 
 TEST(ShaderLog, AnErrorInAnIncludedFileIsReportedThere) {
   headlessContext();
-  const auto dir = std::filesystem::temp_directory_path() / "penumbra_shader_log";
+  const TempDirectory scratch("penumbra_shader_log");
+  const std::filesystem::path& dir = scratch.path();
   std::filesystem::create_directories(dir / "shared");
   std::ofstream(dir / "broken.comp") << "#include \"shared/helper.glsl\"\n"
                                         "layout(local_size_x = 1) in;\nvoid main() { helper(); }\n";
@@ -31,5 +33,4 @@ TEST(ShaderLog, AnErrorInAnIncludedFileIsReportedThere) {
   EXPECT_FALSE(program.reload(log));
   unsetenv("PENUMBRA_SHADER_DIR");
   EXPECT_NE(log.find("shared/helper.glsl:2:"), std::string::npos) << log;
-  std::filesystem::remove_all(dir);
 }

@@ -7,11 +7,10 @@
 #include "scene/scene_builtin.h"
 #include "scene/scene_file.h"
 #include "scene/scene_gltf.h"
+#include "support/temp_directory.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -58,14 +57,12 @@ size_t triangles(const std::vector<SceneObject>& objects) {
   return count;
 }
 
-// A per-process directory: ctest runs the tests of this binary as parallel processes.
+// A unique directory per test (TempDirectory): ctest runs the tests of this binary as
+// parallel processes.
 class SceneFilesTemp : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("penumbra_scene_files_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  const TempDirectory scratch_{"penumbra_scene_files"};
+  const fs::path dir_ = scratch_.path();
 
   std::string write(const std::string& name, const std::string& text) {
     const fs::path path = dir_ / name;
@@ -86,8 +83,6 @@ class SceneFilesTemp : public ::testing::Test {
       std::cout << "  refused: " << message << "\n";
     }
   }
-
-  fs::path dir_;
 };
 
 // One triangle in the z = 0 plane, counter-clockwise from +z, uint16 indices, with its

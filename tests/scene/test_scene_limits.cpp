@@ -143,9 +143,9 @@ TEST(SceneLimits, HostileKeysAreShortPrintableAndDuplicatesRefused) {
 // Case 6: configurations the light's depth maps cannot represent are warned about.
 TEST(SceneLimits, LightWarningsNameWhatTheDepthMapsCannotShow) {
   std::vector<std::string> unused;
-  for (const std::string& name : {"cube", "plate", "spheres", "stress_grazing", "stress_contact",
-                                  "stress_sheet", "stress_light_touching", "stress_far_receiver",
-                                  "stress_outside_frustum"}) {
+  for (const char* name : {"cube", "plate", "spheres", "stress_grazing", "stress_contact",
+                           "stress_sheet", "stress_light_touching", "stress_far_receiver",
+                           "stress_outside_frustum"}) {
     const auto warnings = lightWarnings(loadScene(name, unused));
     EXPECT_TRUE(warnings.empty()) << name << ": " << warnings.front();
   }

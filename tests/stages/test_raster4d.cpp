@@ -9,13 +9,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "reference/reference_request.h"
 #include "reference/reference_trace.h"
 #include "scene/scene_builtin.h"
 #include "scene/scene_stress.h"
 #include "support/gl_test.h"
+#include "support/temp_directory.h"
 
 namespace {
 
@@ -163,9 +163,8 @@ TEST(Raster4d, VisibilityFiniteAndInRangeOnEveryScene) {
 // is black but for ties (at most one light sample per pixel); the trace's error can be
 // measured against raster4d without the CPU reference.
 TEST(Raster4d, ErrorStageComparesWithEitherGroundTruth) {
-  const std::string cache = (std::filesystem::temp_directory_path() /
-                             ("penumbra-raster4d-cache-" + std::to_string(::getpid()))).string();
-  setenv("PENUMBRA_CACHE", cache.c_str(), 1);
+  const TempDirectory cache("penumbra-raster4d-cache");
+  setenv("PENUMBRA_CACHE", cache.path().c_str(), 1);
   PipelineRun black(makeBuiltinScene("spheres"),
                     {"raster4d.enabled=true", "raster4d.samples=16", "reference.enabled=true", "reference.cache=false",
                      "reference.sampling=uniform", "reference.samples=16",
@@ -178,7 +177,6 @@ TEST(Raster4d, ErrorStageComparesWithEitherGroundTruth) {
                     kWidth, kHeight);
   EXPECT_GT(trace.frame->counters.at("error.rmse"), 0);
   EXPECT_LT(trace.frame->counters.at("error.rmse"), 0.2);
-  std::filesystem::remove_all(cache);
 }
 
 // Bad parameter values are refused by --set with the valid range.

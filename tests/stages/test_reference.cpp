@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <thread>
 #include <tuple>
-#include <unistd.h>
 
 #include "reference/error_metrics.h"
 #include "reference/reference_cache.h"
@@ -19,22 +18,17 @@
 #include "reference/reference_trace.h"
 #include "scene/scene_builtin.h"
 #include "support/gl_test.h"
+#include "support/temp_directory.h"
 
 namespace {
 
 // A private, empty cache directory for one test (the cache is per user otherwise), removed
 // when the test ends.
 struct ScopedCache {
-  std::filesystem::path directory;
-  explicit ScopedCache(const std::string& name)
-      : directory(std::filesystem::temp_directory_path() /
-                  ("penumbra-test-cache-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(directory);
+  TempDirectory scratch;
+  const std::filesystem::path directory = scratch.path() / "cache";
+  explicit ScopedCache(const std::string& name) : scratch("penumbra-test-cache-" + name) {
     setenv("PENUMBRA_CACHE", directory.c_str(), 1);
-  }
-  ~ScopedCache() {
-    std::error_code ignored;
-    std::filesystem::remove_all(directory, ignored);
   }
 };
 

@@ -173,7 +173,9 @@ TEST(TraceOracle, LinearSearchAgreementAgainstStepSize) {
         total += double(result.agree) / result.rays;
         // A quarter-texel step sees nearly every feature (sheets, near == far, through two
         // samples in one texel on either side of them).
-        if (step == 0.25f) EXPECT_GE(double(result.agree) / result.rays, 0.99) << set.name;
+        if (step == 0.25f) {
+          EXPECT_GE(double(result.agree) / result.rays, 0.99) << set.name;
+        }
       }
       std::printf("\n");
       total /= double(sets.size());

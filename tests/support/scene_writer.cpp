@@ -1,28 +1,9 @@
 #include "support/scene_writer.h"
 
-#include <unistd.h>
-
 #include <fstream>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-TempDirectory::TempDirectory(const std::string& name)
-    : path_(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
-  fs::remove_all(path_);
-  fs::create_directories(path_);
-}
-
-TempDirectory::~TempDirectory() {
-  std::error_code ignored;
-  fs::remove_all(path_, ignored);
-}
-
-std::string TempDirectory::write(const std::string& name, const std::string& bytes) const {
-  const fs::path file = path_ / name;
-  std::ofstream(file, std::ios::binary) << bytes;
-  return file.string();
-}
 
 json groundAndPlateScene() {
   return {{"name", "ground and plate"},

@@ -1,22 +1,13 @@
-// Test support: scene JSON and glTF files written into a per-process temporary directory,
+// Test support: scene JSON and glTF files written into a TempDirectory (unique, removed after),
 // for the tests of bad and extreme input (tests/scene/test_scene_limits.cpp, tests/cli).
 #pragma once
 #include <nlohmann/json.hpp>
 
+#include "support/temp_directory.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
-
-class TempDirectory {
-public:
-  explicit TempDirectory(const std::string& name);  // <tmp>/<name>_<pid>, fresh
-  ~TempDirectory();
-  const std::filesystem::path& path() const { return path_; }
-  std::string write(const std::string& name, const std::string& bytes) const;  // the path
-
-private:
-  std::filesystem::path path_;
-};
 
 // A scene JSON: a 20 x 20 ground at y = 0, one occluder quad (size 1.5 at y = 1, casting
 // shadows), a 1 x 1 light at (0, 4, 0) facing down, a camera looking at the origin. Tests

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <string>
 
+#include "support/temp_directory.h"  // scratchDirectory
+
 #define REQUIRE_DISPLAY() \
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (make test does)"
 
-// A fresh directory under the system temp directory for one test.
-std::filesystem::path scratchDirectory(const std::string& name);
 // Writes `json` to <directory>/script.json and returns the path.
 std::filesystem::path writeScript(const std::filesystem::path& directory, const std::string& json);

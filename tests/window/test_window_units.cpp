@@ -297,7 +297,7 @@ TEST(WindowUnits, InteractiveLessonWaitsForNextBeforeEachSayAfterTheFirst) {
 TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
   const std::string script = R"([{"export_dir": "from_script"}, {"screenshot": "a.png"},
       {"wait": 1}, {"screenshot": "/abs/b.png"}])";
-  for (const std::string& override : {std::string(), std::string("/tmp/override")}) {
+  for (const std::string& override : {std::string(), std::string("/abs/override")}) {
     UiState state;
     useCube(state);
     ScriptRunner runner(parsed(script), ScriptOptions{false, override});
