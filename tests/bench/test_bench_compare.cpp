@@ -8,11 +8,12 @@
 #include <sstream>
 
 #include "support/command.h"
+#include "support/temp_directory.h"
 
 TEST(BenchCompare, TinyRunWritesOneRowPerSideWithRatiosAgainstTheFirst) {
-  const std::string out = (std::filesystem::temp_directory_path() / "penumbra_bench_compare.md").string();
-  std::filesystem::remove(out);
-  const auto cache = std::filesystem::temp_directory_path() / "penumbra_bench_compare_cache";
+  const TempDirectory scratch("penumbra_bench_compare");
+  const std::string out = (scratch.path() / "compare.md").string();
+  const auto cache = scratch.path() / "cache";
   setenv("PENUMBRA_CACHE", cache.c_str(), 1);  // the reference's disk cache, inherited
   const CommandResult result = runPenumbra(
       "bench-compare --scene cube --width 48 --height 32 --frames 1 --warmup 0 --out " + out +
@@ -32,11 +33,14 @@ TEST(BenchCompare, TinyRunWritesOneRowPerSideWithRatiosAgainstTheFirst) {
 }
 
 TEST(BenchCompare, BadSetsAndMissingSidesAreRefused) {
-  CommandResult result = runPenumbra("bench-compare --side 'x:trace.nope=1' --out /tmp/x.md");
+  const TempDirectory scratch("penumbra_bench_compare_refused");
+  const std::string never = (scratch.path() / "never.md").string();
+  CommandResult result = runPenumbra("bench-compare --side 'x:trace.nope=1' --out " + never);
   EXPECT_EQ(result.exitCode, 2) << result.output;
   EXPECT_NE(result.output.find("nope"), std::string::npos) << result.output;
-  result = runPenumbra("bench-compare --out /tmp/x.md");
+  result = runPenumbra("bench-compare --out " + never);
   EXPECT_EQ(result.exitCode, 2) << result.output;
-  result = runPenumbra("bench-compare --scene no_such_scene --side a --out /tmp/x.md");
+  result = runPenumbra("bench-compare --scene no_such_scene --side a --out " + never);
   EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(never)) << "a refused run wrote " << never;
 }
