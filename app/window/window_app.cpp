@@ -244,6 +244,13 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
     state.status = message;
   }
   for (const std::string& assignment : options.sets) state.session.pipeline.set(assignment);
+  // A ground truth chosen by --set or --config is the user's: the live error keeps it.
+  const std::string truthKey = groundTruthChoiceKey(state.session.pipeline);
+  if (!truthKey.empty()) {
+    bool chosen = state.session.pipeline.param(truthKey).value != state.session.parameterDefaults[truthKey];
+    for (const std::string& assignment : options.sets) chosen |= assignment.rfind(truthKey + "=", 0) == 0;
+    if (chosen) keepUserTruth(state);
+  }
   if (const std::string image = finalImageOutput(state.session.pipeline); !image.empty()) state.selectOutput(image);
   else state.selectStage(state.session.pipeline.stages().back()->name());
   state.views.scrollToStage.clear();  // open on the top of the pipeline panel

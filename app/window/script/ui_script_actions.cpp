@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "window/panels/ui_export.h"
+#include "window/panels/ui_reference_progress.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_camera.h"
@@ -240,6 +241,20 @@ std::vector<ScriptActionSpec> makeTable() {
       {"print_timing", kString,
        [=](S& s, const json& a, C&) {
          printTiming(s, text(a));
+         return std::string();
+       }},
+      {"compare_with_ground_truth", kBool,
+       [](S& s, const json& a, C&) {
+         if (!a.get<bool>()) return std::string();
+         const std::string problem = compareWithReference(s);
+         if (problem.empty()) std::printf("penumbra: live error %s\n", liveTruthLine(s).c_str());
+         return problem;
+       },
+       true},
+      {"print_truth", kString,
+       [=](S& s, const json& a, C&) {
+         std::printf("truth %s: %s\n", text(a).c_str(), liveTruthLine(s).c_str());
+         std::fflush(stdout);
          return std::string();
        }},
       {"print_pick", kString,
