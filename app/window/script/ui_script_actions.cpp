@@ -251,6 +251,15 @@ std::vector<ScriptActionSpec> makeTable() {
          return problem;
        },
        true},
+      {"print_counters", kString,
+       [=](S& s, const json& a, C&) {
+         std::printf("counters %s:\n", text(a).c_str());
+         if (s.session.frame)
+           for (const auto& [name, value] : s.session.frame->counters)
+             std::printf("  %s %.9g\n", name.c_str(), value);
+         std::fflush(stdout);
+         return std::string();
+       }},
       {"print_truth", kString,
        [=](S& s, const json& a, C&) {
          std::printf("truth %s: %s\n", text(a).c_str(), liveTruthLine(s).c_str());
