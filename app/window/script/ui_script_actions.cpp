@@ -201,7 +201,8 @@ std::vector<ScriptActionSpec> makeTable() {
          activeView(s).settings.layer = a.get<int>();
          return std::string();
        }},
-      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); }},
+      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); },
+       true},  // autofit applies when the view draws: the next action sees it
       {"overlay", kBool,
        [](S& s, const json& a, C&) {
          activeView(s).settings.overlay = a.get<bool>();
