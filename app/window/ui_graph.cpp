@@ -81,6 +81,13 @@ std::string gpuGroundTruth(const Pipeline& pipeline) {
   return "";
 }
 
+std::string lightMaskOutput(const Pipeline& pipeline) {
+  for (const auto& stage : pipeline.stages())
+    if (declaresParam(*stage, "pick_x") && declaresParam(*stage, "pick_y") && hasOutput(*stage, "pickedMask"))
+      return stage->name() + ".pickedMask";
+  return "";
+}
+
 bool hasLayerOutputs(const Stage& stage) {
   return hasOutput(stage, "near") && hasOutput(stage, "far");
 }

@@ -25,6 +25,9 @@ std::string measuredMethodKey(const Pipeline& pipeline);
 // A ground truth computed on the GPU inside the frame, so timed like a method: the first
 // stage whose output is both a ground truth and a shadow method ("raster4d"); "" if none.
 std::string gpuGroundTruth(const Pipeline& pipeline);
+// The picked pixel's mask over the light's sample grid: the output "pickedMask" of a stage
+// that declares pick_x and pick_y ("raster4d.pickedMask"); "" if none.
+std::string lightMaskOutput(const Pipeline& pipeline);
 // The light's depth layers: the outputs "near" and "far" of the one stage that declares both
 // ("light_layers.near", "light_layers.far"); empty strings if none does.
 struct LayerOutputs {
