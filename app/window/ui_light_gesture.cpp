@@ -158,8 +158,8 @@ void drawLightMask(const UiState& state, const std::array<glm::vec3, 4>& corners
       const float v[4] = {float(i), float(i), float(i + 1), float(i + 1)};
       for (int k = 0; k < 4; ++k)
         visible = screen(corners[0] + (u[k] / m) * along + (v[k] / m) * upward, cell[k]) && visible;
-      if (visible)
-        draw->AddConvexPolyFilled(cell, 4, value >= 1 ? IM_COL32(230, 40, 40, 200) : IM_COL32(120, 120, 120, 200));
+      const ImU32 colour = value >= 1 ? IM_COL32(230, 40, 40, 200) : IM_COL32(120, 120, 120, 200);
+      if (visible) draw->AddConvexPolyFilled(cell, 4, colour);
     }
 }
 

@@ -247,8 +247,10 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
   // A ground truth chosen by --set or --config is the user's: the live error keeps it.
   const std::string truthKey = groundTruthChoiceKey(state.session.pipeline);
   if (!truthKey.empty()) {
-    bool chosen = state.session.pipeline.param(truthKey).value != state.session.parameterDefaults[truthKey];
-    for (const std::string& assignment : options.sets) chosen |= assignment.rfind(truthKey + "=", 0) == 0;
+    const Param& truth = state.session.pipeline.param(truthKey);
+    bool chosen = truth.value != state.session.parameterDefaults[truthKey];
+    for (const std::string& assignment : options.sets)
+      chosen |= assignment.rfind(truthKey + "=", 0) == 0;
     if (chosen) keepUserTruth(state);
   }
   if (const std::string image = finalImageOutput(state.session.pipeline); !image.empty()) state.selectOutput(image);
