@@ -11,6 +11,9 @@
 struct BenchRaster4dOptions {
   std::string out = "bench/raster4d.md";
   std::string scenes = "cube,spheres,engine";
+  // Scenes whose Table 2 variants (proj4, rejection off, row masks off, row culling off) are
+  // timed; "" = every scene. Per-sample tests on a 91k-triangle scene take many minutes.
+  std::string toggleScenes;
   int width = 256, height = 256, frames = 3;
 };
 

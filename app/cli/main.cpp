@@ -164,6 +164,8 @@ int main(int argc, char** argv) {
   benchRaster4dCommand->add_option("--out", raster4dBench.out, "Markdown file")->capture_default_str();
   benchRaster4dCommand->add_option("--scenes", raster4dBench.scenes, "comma-separated scenes")
       ->capture_default_str();
+  benchRaster4dCommand->add_option("--toggle-scenes", raster4dBench.toggleScenes,
+                                   "scenes whose Table 2 variants are timed (default: all)");
   benchRaster4dCommand->add_option("--frames", raster4dBench.frames, "timed runs per configuration")
       ->check(CLI::Range(1, 100))->capture_default_str();
   benchRaster4dCommand->add_option("--width", raster4dBench.width)->check(CLI::Range(16, 4096));

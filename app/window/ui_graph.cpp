@@ -44,9 +44,48 @@ std::string comparisonOutput(const Pipeline& pipeline) {
   return firstOutput(chooser(pipeline, kRoleGroundTruth, kRoleNone));
 }
 
+namespace {
+
+// "stage.key" of the comparison stage's choice slot over `role`.
+std::string comparisonChoice(const Pipeline& pipeline, unsigned role) {
+  const Stage* comparison = chooser(pipeline, kRoleGroundTruth, kRoleNone);
+  if (!comparison) return "";
+  for (const Input& input : comparison->inputs())
+    if (input.isChoice() && input.chooseRole == role)
+      return comparison->name() + "." + input.choiceParam;
+  return "";
+}
+
+}  // namespace
+
+std::string groundTruthChoiceKey(const Pipeline& pipeline) {
+  return comparisonChoice(pipeline, kRoleGroundTruth);
+}
+
+std::string measuredMethodKey(const Pipeline& pipeline) {
+  return comparisonChoice(pipeline, kRoleShadowMethod);
+}
+
 Stage* groundTruthStage(const Pipeline& pipeline) {
-  const std::vector<std::string> truths = pipeline.methods(kRoleGroundTruth);
-  return truths.empty() ? nullptr : &pipeline.stage(truths.front());
+  const std::string key = groundTruthChoiceKey(pipeline);
+  if (key.empty()) return nullptr;
+  const std::string& chosen = pipeline.param(key).asEnum();
+  return chosen == "none" ? nullptr : &pipeline.stage(chosen);
+}
+
+std::string gpuGroundTruth(const Pipeline& pipeline) {
+  for (const auto& stage : pipeline.stages())
+    for (const Output& output : stage->outputs())
+      if ((output.roles & kRoleGroundTruth) && (output.roles & kRoleShadowMethod))
+        return stage->name();
+  return "";
+}
+
+std::string lightMaskOutput(const Pipeline& pipeline) {
+  for (const auto& stage : pipeline.stages())
+    if (declaresParam(*stage, "pick_x") && declaresParam(*stage, "pick_y") && hasOutput(*stage, "pickedMask"))
+      return stage->name() + ".pickedMask";
+  return "";
 }
 
 bool hasLayerOutputs(const Stage& stage) {

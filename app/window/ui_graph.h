@@ -15,8 +15,19 @@ std::string finalImageOutput(const Pipeline& pipeline);
 // The comparison with the ground truth: the first output of the stage whose choice slot takes
 // a ground truth ("error.signed"); "" if none.
 std::string comparisonOutput(const Pipeline& pipeline);
-// The first stage whose output is a ground truth (the reference), nullptr if none.
+// The ground truth the comparison is set against now (its choice parameter, "reference" or
+// "raster4d"), nullptr if there is no comparison stage.
 Stage* groundTruthStage(const Pipeline& pipeline);
+// The comparison's choice parameter, "stage.key" ("error.against"), and the method it
+// measures ("error.method"); "" if none.
+std::string groundTruthChoiceKey(const Pipeline& pipeline);
+std::string measuredMethodKey(const Pipeline& pipeline);
+// A ground truth computed on the GPU inside the frame, so timed like a method: the first
+// stage whose output is both a ground truth and a shadow method ("raster4d"); "" if none.
+std::string gpuGroundTruth(const Pipeline& pipeline);
+// The picked pixel's mask over the light's sample grid: the output "pickedMask" of a stage
+// that declares pick_x and pick_y ("raster4d.pickedMask"); "" if none.
+std::string lightMaskOutput(const Pipeline& pipeline);
 // The light's depth layers: the outputs "near" and "far" of the one stage that declares both
 // ("light_layers.near", "light_layers.far"); empty strings if none does.
 struct LayerOutputs {

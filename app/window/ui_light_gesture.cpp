@@ -7,7 +7,9 @@
 #include <cstdio>
 
 #include "window/ui_camera.h"
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
+#include "window/views/texture_view.h"
 
 // 1. Geometry.
 std::array<glm::vec3, 4> lightCorners(const AreaLight& light) {
@@ -126,7 +128,42 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
   return dragging;
 }
 
-// 3. Outline: a translucent quad, its border, the centre and the axis down to the ground.
+// 3. The picked pixel's occlusion mask (raster4d, issue 10) on the light itself: cell (i, j)
+//    of the m x m grid, row i along the light's up, column j along its right from the corner
+//    -right -up (the samples' own layout), red where a triangle hides the sample, grey where
+//    it lies behind the receiver's tangent plane. Read back once per pipeline run.
+template <class Screen>
+void drawLightMask(const UiState& state, const std::array<glm::vec3, 4>& corners, const Screen& screen) {
+  static std::vector<float> mask;
+  static int maskRun = -1, maskSide = 0;
+  const std::string output = lightMaskOutput(state.session.pipeline);
+  if (output.empty() || !state.views.pick || !state.session.frame->has(output)) return;
+  if (maskRun != state.session.pipelineRuns) {
+    const GlTexture& texture = state.session.frame->texture(output);
+    maskSide = texture.width() == texture.height() ? texture.width() : 0;
+    if (maskSide > 0) mask = readRegion(texture, 0, 0, maskSide, maskSide, 0);
+    maskRun = state.session.pipelineRuns;
+  }
+  if (maskSide <= 0 || mask.size() < size_t(maskSide) * maskSide) return;
+  const float m = float(maskSide);
+  const glm::vec3 along = corners[1] - corners[0], upward = corners[3] - corners[0];
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (int i = 0; i < maskSide; ++i)
+    for (int j = 0; j < maskSide; ++j) {
+      const float value = mask[size_t(i) * maskSide + j];  // GL order: row 0 = light's -up
+      if (value <= 0) continue;
+      ImVec2 cell[4];
+      bool visible = true;
+      const float u[4] = {float(j), float(j + 1), float(j + 1), float(j)};
+      const float v[4] = {float(i), float(i), float(i + 1), float(i + 1)};
+      for (int k = 0; k < 4; ++k)
+        visible = screen(corners[0] + (u[k] / m) * along + (v[k] / m) * upward, cell[k]) && visible;
+      const ImU32 colour = value >= 1 ? IM_COL32(230, 40, 40, 200) : IM_COL32(120, 120, 120, 200);
+      if (visible) draw->AddConvexPolyFilled(cell, 4, colour);
+    }
+}
+
+// 4. Outline: a translucent quad, its border, the centre and the axis down to the ground.
 void drawLightOutline(const UiState& state, const ViewPanel& view, glm::ivec2 eyeSize,
                       glm::vec2 origin, glm::vec2 regionSize) {
   if (!state.session.frame || !state.views.showLight) return;
@@ -150,6 +187,7 @@ void drawLightOutline(const UiState& state, const ViewPanel& view, glm::ivec2 ey
     draw->AddConvexPolyFilled(corners, 4, IM_COL32(255, 200, 40, 70));
     draw->AddPolyline(corners, 4, color, ImDrawFlags_Closed, 2);
   }
+  if (all) drawLightMask(state, world, screen);
   ImVec2 centre, ground;
   const glm::vec3 forward = glm::normalize(light.forward);
   const float groundY = groundHeight(state.session.scene);

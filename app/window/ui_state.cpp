@@ -140,8 +140,10 @@ void UiState::keepPickInEye(glm::ivec2 viewRegion) {
 
 bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
   checkLight();
+  updateLiveTruth(*this);
   std::string problem;
   const bool ran = session.runIfNeeded(viewRegion, requestedOutputs(), problem);
   if (!problem.empty()) status = problem;
+  if (ran) recordLiveTruthRun(*this);
   return ran;
 }

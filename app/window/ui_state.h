@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "window/script/ui_script_io.h"
+#include "window/ui_live_truth.h"
 #include "window/ui_session.h"
 #include "window/views/ui_view_state.h"
 
@@ -16,6 +17,7 @@ public:
   ViewState views;
   ScriptIo script;
   LessonState lesson;
+  LiveTruth liveTruth;  // the live error's ground truth (ui_live_truth.h)
 
   // Messages.
   std::string status;     // the status line: what happened last

@@ -285,6 +285,15 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
     state.status = message;
   }
   for (const std::string& assignment : options.sets) state.session.pipeline.set(assignment);
+  // A ground truth chosen by --set or --config is the user's: the live error keeps it.
+  const std::string truthKey = groundTruthChoiceKey(state.session.pipeline);
+  if (!truthKey.empty()) {
+    const Param& truth = state.session.pipeline.param(truthKey);
+    bool chosen = truth.value != state.session.parameterDefaults[truthKey];
+    for (const std::string& assignment : options.sets)
+      chosen |= assignment.rfind(truthKey + "=", 0) == 0;
+    if (chosen) keepUserTruth(state);
+  }
   if (!state.views.panels[0].output.empty()) return 0;  // the views of --config
   if (const std::string image = finalImageOutput(state.session.pipeline); !image.empty()) state.selectOutput(image);
   else state.selectStage(state.session.pipeline.stages().back()->name());

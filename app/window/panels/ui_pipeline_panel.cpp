@@ -142,7 +142,8 @@ void drawStage(UiState& state, Stage& stage, int number) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();
     }
   ImGui::PopItemWidth();
-  if (&stage == groundTruthStage(state.session.pipeline)) drawReferenceProgress(state);  // issue 5
+  const std::string comparison = comparisonOutput(state.session.pipeline);
+  if (comparison.rfind(stage.name() + ".", 0) == 0) drawReferenceProgress(state);  // issues 5, 10
   if (stage.name() == "hash_stats") drawHashStatsPanel(state);  // issue 11
   ImGui::PopID();
   ImGui::Spacing();

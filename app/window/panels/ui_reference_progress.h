@@ -1,14 +1,15 @@
-// The ground-truth stage's progress in the window (issue 5): a progress bar with a Cancel
-// button while the background trace runs (app/reference/reference_trace.h
-// referenceStageProgress()), and a "compare with reference" button putting the comparison's
-// first output (window/ui_graph.h comparisonOutput: error.signed) beside the method.
+// The live error in the window (issues 5 and 10): a "compare with ground truth" button putting
+// the comparison's first output (window/ui_graph.h comparisonOutput: error.signed) beside the
+// method, the ground truth in use and why (window/ui_live_truth.h: raster4d when interactive,
+// else Embree; the user's choice kept), and, while Embree traces in the background, a
+// progress bar with a Cancel button (app/reference/reference_trace.h referenceStageProgress()).
 #pragma once
 #include <string>
 
 class UiState;
 
-// Enables the ground truth ("<stage>.enabled") and shows the comparison in view B; "" or
-// the problem.
+// Chooses the ground truth (the automatic rule, unless the user chose), enables it
+// ("<stage>.enabled") and shows the comparison in view B; "" or the problem.
 std::string compareWithReference(UiState& state);
-// Drawn under the ground-truth stage in the pipeline panel.
+// Drawn under the comparison stage (error) in the pipeline panel.
 void drawReferenceProgress(UiState& state);

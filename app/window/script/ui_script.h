@@ -15,6 +15,10 @@
 //   {"run_every_frame": true}                {"print_timing": "label"}  (stdout)
 //   {"print_pick": "label"}  (stdout: the pick's values in every output of its size, and
 //                             the number of steps the ray trace panel shows)
+//   {"compare_with_ground_truth": true}  (the pipeline panel's button: view B shows the
+//                             error against the live ground truth, ui_live_truth.h)
+//   {"print_truth": "label"} (stdout: the ground truth in use and why)
+//   {"print_counters": "label"} (stdout: every counter of the last run, as the inspector)
 //   {"camera_moving": true}  (as while dragging the camera: the preview resolution)
 //   {"trace_window": true}   (the ray trace panel in its own large window)
 //   {"mouse": [x, y]}        (moves the mouse there, window pixels: hover readouts)

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "window/panels/ui_export.h"
+#include "window/panels/ui_reference_progress.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_camera.h"
@@ -216,7 +217,8 @@ std::vector<ScriptActionSpec> makeTable() {
          activeView(s).settings.layer = a.get<int>();
          return std::string();
        }},
-      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); }},
+      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); },
+       true},  // autofit applies when the view draws: the next action sees it
       {"overlay", kBool,
        [](S& s, const json& a, C&) {
          activeView(s).settings.overlay = a.get<bool>();
@@ -277,6 +279,29 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        },
        true},
+      {"compare_with_ground_truth", kBool,
+       [](S& s, const json& a, C&) {
+         if (!a.get<bool>()) return std::string();
+         const std::string problem = compareWithReference(s);
+         if (problem.empty()) std::printf("penumbra: live error %s\n", liveTruthLine(s).c_str());
+         return problem;
+       },
+       true},
+      {"print_counters", kString,
+       [=](S& s, const json& a, C&) {
+         std::printf("counters %s:\n", text(a).c_str());
+         if (s.session.frame)
+           for (const auto& [name, value] : s.session.frame->counters)
+             std::printf("  %s %.9g\n", name.c_str(), value);
+         std::fflush(stdout);
+         return std::string();
+       }},
+      {"print_truth", kString,
+       [=](S& s, const json& a, C&) {
+         std::printf("truth %s: %s\n", text(a).c_str(), liveTruthLine(s).c_str());
+         std::fflush(stdout);
+         return std::string();
+       }},
       {"print_pick", kString,
        [=](S& s, const json& a, C&) {
          printPick(s, text(a));

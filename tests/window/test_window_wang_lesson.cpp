@@ -1,0 +1,77 @@
+// The 4D rasterization lesson (lessons/wang_tables.json) played through under Xvfb: its 16
+// figures exist and show what its texts say: more pairs per FB pixel with the early rejection
+// off (the same colour range), the same image with row masks off, banding at 8x8 light
+// samples that 64x64 smooths, more pairs with a bigger light, a mask with both hidden and
+// lit cells, and a black error against Embree at the same samples.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "support/command.h"
+#include "support/window_test.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Mean of R + G + B over the image, in [0, 3].
+double brightness(const fs::path& png) {
+  OIIO::ImageBuf image(png.string());
+  EXPECT_TRUE(image.read()) << png << ": " << image.geterror();
+  const int width = image.spec().width, height = image.spec().height;
+  std::vector<float> rgb(size_t(width) * height * 3);
+  image.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rgb.data());
+  double sum = 0;
+  for (float v : rgb) sum += v;
+  return sum / (double(width) * height);
+}
+
+// Number of distinct grey levels (red channel, 8 bits): banding has few.
+int greyLevels(const fs::path& png) {
+  OIIO::ImageBuf image(png.string());
+  EXPECT_TRUE(image.read()) << png;
+  const int width = image.spec().width, height = image.spec().height;
+  std::vector<unsigned char> rgb(size_t(width) * height * 3);
+  image.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8, rgb.data());
+  bool seen[256] = {};
+  int levels = 0;
+  for (size_t i = 0; i < rgb.size(); i += 3) levels += !seen[rgb[i]], seen[rgb[i]] = true;
+  return levels;
+}
+
+}  // namespace
+
+TEST(WindowWangLesson, FiguresShowWhatTheTextsSay) {
+  REQUIRE_DISPLAY();
+  const fs::path dir = scratchDirectory("lesson_wang");
+  const auto result = runPenumbra("lesson " + std::string(PENUMBRA_SOURCE_DIR) +
+                                  "/lessons/wang_tables.json --export " + dir.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  EXPECT_NE(result.output.find("lesson step 8/8"), std::string::npos) << result.output;
+  for (const char* name :
+       {"a_visibility.png", "b_fb_triangles.png", "c_fb_samples_L0.png", "d_fb_samples_proj4.png",
+        "e_fb_pairs_rejection_off.png", "f_fb_pairs_rejection_on.png",
+        "g_visibility_row_masks_off.png", "h_visibility_8x8.png", "i_visibility_16x16.png",
+        "j_visibility_64x64.png", "k_visibility_light_half.png", "l_fb_pairs_light_half.png",
+        "m_fb_pairs_light_double.png", "n_visibility_light_double.png",
+        "o_mask_of_one_pixel.png", "p_error_against_embree.png"})
+    ASSERT_TRUE(fs::exists(dir / name)) << name;
+  // Table 2 / 7: the same range, fewer pairs with the rejection on; Table 5: more with a
+  // bigger light. The perceptual colormap brightens with the count.
+  EXPECT_GT(brightness(dir / "e_fb_pairs_rejection_off.png"), brightness(dir / "f_fb_pairs_rejection_on.png"));
+  EXPECT_GT(brightness(dir / "m_fb_pairs_light_double.png"), brightness(dir / "l_fb_pairs_light_half.png"));
+  // Row masks change the work, not the image.
+  EXPECT_DOUBLE_EQ(brightness(dir / "g_visibility_row_masks_off.png"), brightness(dir / "a_visibility.png"));
+  // Table 4: 8x8 samples quantise visibility to 65 levels; 64x64 has many more.
+  EXPECT_LE(greyLevels(dir / "h_visibility_8x8.png"), 65);
+  EXPECT_GT(greyLevels(dir / "j_visibility_64x64.png"), 2 * greyLevels(dir / "h_visibility_8x8.png"));
+  // One penumbra pixel: hidden and lit cells both; the error against Embree: black.
+  const double mask = brightness(dir / "o_mask_of_one_pixel.png");
+  EXPECT_GT(mask, 0.3);
+  EXPECT_LT(mask, 2.7);
+  EXPECT_EQ(greyLevels(dir / "p_error_against_embree.png"), 1);  // the colormap's 0 everywhere
+  fs::remove_all(dir);
+}
