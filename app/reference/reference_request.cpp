@@ -15,8 +15,10 @@ ReferenceRequest makeReferenceRequest(const Frame& frame, const GlTexture& wsPos
   request.wsLightUp = frame.light.up;
   request.halfWidth = 0.5f * frame.scene.light.width;
   request.halfHeight = 0.5f * frame.scene.light.height;
-  const Bounds bounds = frame.scene.bounds();
-  request.epsilon =
-      kRelativeEpsilon * (bounds.empty() ? 1.0f : glm::length(bounds.max - bounds.min));
+  // Only the occluders are in the Embree scene (reference_trace.h, "Origin").
+  const Bounds occluders = frame.scene.bounds(/*occludersOnly=*/true);
+  request.relativeEpsilon = kRelativeEpsilon;
+  request.minimumEpsilon =
+      kRelativeEpsilon * 0.1f * (occluders.empty() ? 1.0f : glm::length(occluders.max - occluders.min));
   return request;
 }

@@ -1,5 +1,6 @@
 #include "support/analytic_scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
@@ -69,8 +70,12 @@ std::vector<double> analyticImage(const PipelineRun& run) {
   for (size_t i = 0; i < exact.size(); ++i) {
     if (positions[4 * i + 3] == 0) continue;
     const glm::dvec3 p{positions[4 * i], positions[4 * i + 1], positions[4 * i + 2]};
-    const glm::dvec3 n{normals[4 * i], normals[4 * i + 1], normals[4 * i + 2]};
-    exact[i] = analyticVisibility(light, occluders, p, glm::normalize(n));
+    const glm::dvec3 n = glm::normalize(glm::dvec3(normals[4 * i], normals[4 * i + 1], normals[4 * i + 2]));
+    // The G-buffer's point is float: on an occluder (a plate's top) it may lie a rounding
+    // step behind the surface, which would then hide the light. It is moved off the surface
+    // by far more than that rounding (1e-5 x its largest coordinate, at least 1e-5).
+    const double offset = 1e-5 * std::max({1.0, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    exact[i] = analyticVisibility(light, occluders, p + offset * n, n);
   }
   return exact;
 }

@@ -17,7 +17,7 @@ std::vector<std::string> analyticSceneNames();
 Scene makeAnalyticScene(const std::string& name);
 
 // The exact visibility of every covered pixel of a run (GL order; -1 where no receiver),
-// from its gbuffer.wsPosition / wsNormal.
+// from its gbuffer.wsPosition / wsNormal (the point moved 1e-5 x max(1, |p|) along n).
 std::vector<double> analyticImage(const PipelineRun& run);
 
 struct AnalyticError {
