@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 #include "support/analytic_scenes.h"
 #include "support/gl_test.h"
@@ -22,8 +23,13 @@ void report(const std::string& scene, const std::string& output, const AnalyticE
 // [0, 1], no NaN, in any method's output.
 TEST(AccuracySuite, DefaultsHoldOnEveryCase) {
   for (const std::string& name : analyticSceneNames()) {
-    PipelineRun run(makeAnalyticScene(name),
-                    {"reference.enabled=true", "reference.cache=false"}, 256, 192);
+    std::vector<std::string> sets = {"reference.enabled=true", "reference.cache=false"};
+    // Measurements: PENUMBRA_SUITE_SETS="stage.key=value stage.key=value" (not in CI).
+    if (const char* extra = std::getenv("PENUMBRA_SUITE_SETS")) {
+      std::istringstream words(extra);
+      for (std::string word; words >> word;) sets.push_back(word);
+    }
+    PipelineRun run(makeAnalyticScene(name), sets, 256, 192);
     const std::vector<double> exact = analyticImage(run);
     for (const char* output :
          {"filter.visibility", "trace.visibility", "reference.visibility", "hard_shadow.visibility"}) {
@@ -34,15 +40,19 @@ TEST(AccuracySuite, DefaultsHoldOnEveryCase) {
         const auto positions = run.read("gbuffer.wsPosition");
         const auto normals = run.read("gbuffer.wsNormal");
         for (size_t i = 0; i < exact.size(); ++i)
-          if (exact[i] >= 0 && std::fabs(values[i] - exact[i]) > 0.5)
+          if (exact[i] >= 0 && std::fabs(values[i] - exact[i]) > std::atof(std::getenv("PENUMBRA_SUITE_WORST")))
             std::printf("  px %zu,%zu p %.4f %.4f %.4f n %.3f %.3f %.3f exact %.3f got %.3f\n",
                         i % 256, i / 256, positions[4 * i], positions[4 * i + 1], positions[4 * i + 2],
                         normals[4 * i], normals[4 * i + 1], normals[4 * i + 2], exact[i], values[i]);
       }
       EXPECT_EQ(e.outOfRange, 0u) << name << " " << output;
       EXPECT_GT(e.pixelsInShadow, 200u) << name << ": the camera should see the shadow";
-      if (output == std::string("filter.visibility")) EXPECT_LE(e.meanAbsInShadow, 0.03) << name;
-      if (output == std::string("reference.visibility")) EXPECT_LE(e.meanAbsInShadow, 0.01) << name;
+      if (output == std::string("filter.visibility")) {
+        EXPECT_LE(e.meanAbsInShadow, 0.03) << name;
+      }
+      if (output == std::string("reference.visibility")) {
+        EXPECT_LE(e.meanAbsInShadow, 0.01) << name;
+      }
     }
   }
 }

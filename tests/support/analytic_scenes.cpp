@@ -95,7 +95,7 @@ AnalyticError compareWithAnalytic(const std::vector<float>& method,
     e.maxAbs = std::max(e.maxAbs, std::fabs(error));
     ++e.pixelsInShadow;
     if (exact[i] < 0.1) {
-      umbraSum += value;
+      umbraSum += error;
       ++e.pixelsInUmbra;
     }
   }

@@ -24,7 +24,7 @@ struct AnalyticError {
   double meanAbsInShadow = 0;  // over pixels with exact visibility < 1 - 1e-9
   double maxAbs = 0;
   double meanSigned = 0;       // over the same pixels: > 0 too bright
-  double meanInUmbra = 0;      // mean method value where exact visibility < 0.1
+  double meanInUmbra = 0;      // mean (method - exact) where exact visibility < 0.1: a leak
   size_t pixelsInShadow = 0, pixelsInUmbra = 0;
   size_t outOfRange = 0;       // NaN, Inf or outside [0, 1]
 };
