@@ -36,8 +36,8 @@ shared uint groupCounts[CLASSIFY_CLASS_COUNT];
 shared uint groupListBase;  // this group's first slot in tracedPixels
 
 bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
-  vec3 right = frame.wsLightRight.w * frame.wsLightRight.xyz, up = frame.wsLightUp.w * frame.wsLightUp.xyz;
-  vec3 toCenter = frame.wsLightCenter.xyz - wsPosition;
+  vec3 right = light.wsLightRight.w * light.wsLightRight.xyz, up = light.wsLightUp.w * light.wsLightUp.xyz;
+  vec3 toCenter = light.wsLightCenter.xyz - wsPosition;
   float centre = dot(wsNormal, toCenter), spread = abs(dot(wsNormal, right)) + abs(dot(wsNormal, up));
   return centre - spread > 0.0;  // the least n . (corner - p) over the four corners
 }

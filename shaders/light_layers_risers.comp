@@ -9,11 +9,12 @@
 // step of each pair now spans the gap. Texels of closed or thick occluders (far > near)
 // are copied unchanged.
 #include "shared/frame.glsl"
+#include "shared/light_layers_layout.h"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0) uniform sampler2D nearLayer;
-layout(binding = 1) uniform sampler2D farLayer;  // as rasterized
-layout(binding = 0, r32f) uniform writeonly image2D farImage;
-layout(location = 0) uniform bool uCloseRisers;
+layout(binding = RISERS_NEAR_UNIT) uniform sampler2D nearLayer;
+layout(binding = RISERS_FAR_UNIT) uniform sampler2D farLayer;  // as rasterized
+layout(binding = RISERS_FAR_IMAGE, r32f) uniform writeonly image2D farImage;
+layout(location = RISERS_CLOSE_LOCATION) uniform bool uCloseRisers;
 
 const float kSheet = 1e-6, kMaxSlope = 6.0;
 
@@ -27,8 +28,8 @@ void main() {
   if (uCloseRisers && isSheet(nearDepth, farDepth)) {
     // One texel's width in world units at this depth, in lsDepth units.
     float z = lsDepthToZ(farDepth);
-    float texelWorld = 2.0 * z * max(frame.lightDepthRange.z, frame.lightDepthRange.w) / float(size.x);
-    float cap = kMaxSlope * texelWorld / (frame.lightDepthRange.y - frame.lightDepthRange.x);
+    float texelWorld = 2.0 * z * max(light.lightDepthRange.z, light.lightDepthRange.w) / float(size.x);
+    float cap = kMaxSlope * texelWorld / (light.lightDepthRange.y - light.lightDepthRange.x);
     const ivec2 kSteps[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
     for (int k = 0; k < 4; ++k) {
       ivec2 at = texel + kSteps[k];

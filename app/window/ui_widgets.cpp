@@ -22,6 +22,16 @@ void helpMarker(const std::string& text) {
 bool drawParam(Param& param) {
   bool changed = false;
   const char* label = param.key.c_str();
+  // `auto` (app/scene/auto_settings.h): a checkbox before the widget, which is then greyed.
+  if (param.allowsAuto) {
+    bool automatic = param.automatic;
+    if (ImGui::Checkbox(("auto##" + param.key).c_str(), &automatic)) {
+      param.automatic = automatic;
+      changed = true;
+    }
+    ImGui::SameLine();
+  }
+  ImGui::BeginDisabled(param.automatic);
   switch (param.type) {
     case Param::Type::Bool: {
       bool value = param.asBool();
@@ -55,6 +65,7 @@ bool drawParam(Param& param) {
       break;
     }
   }
+  ImGui::EndDisabled();
   helpMarker(param.doc + "\nRange: " + param.rangeText() + "\nCtrl+click a slider to type.");
   return changed;
 }

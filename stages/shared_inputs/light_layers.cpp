@@ -7,7 +7,11 @@
 // the `plate` scene) as occluders with near == far instead of losing them from the far layer.
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
+#include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
+#include "shared/light_layers_layout.h"
+
+static_assert(gpu::distinctBelow({RISERS_NEAR_UNIT, RISERS_FAR_UNIT}, gpu::kTextureUnits));
 
 namespace {
 
@@ -47,10 +51,10 @@ public:
     // The far layer of sheets closes the risers between texels (light_layers_risers.comp).
     GlTexture& far = frame.output(*this, "far", size, size);
     risers_.use();
-    glUniform1i(0, param("close_risers").asBool() ? 1 : 0);
-    glBindTextureUnit(0, frame.output(*this, "near", size, size).id());
-    glBindTextureUnit(1, farRasterized_.id());
-    glBindImageTexture(0, far.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glUniform1i(RISERS_CLOSE_LOCATION, param("close_risers").asBool() ? 1 : 0);
+    glBindTextureUnit(RISERS_NEAR_UNIT, frame.output(*this, "near", size, size).id());
+    glBindTextureUnit(RISERS_FAR_UNIT, farRasterized_.id());
+    glBindImageTexture(RISERS_FAR_IMAGE, far.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute(GLuint(size + 7) / 8, GLuint(size + 7) / 8, 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
   }

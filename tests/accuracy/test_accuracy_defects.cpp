@@ -96,7 +96,7 @@ TEST(AccuracyDefects, FilterDoesNotBleedAcrossContactEdges) {
 //    and a 2048^2 map, the mean visibility error where the exact visibility is below 0.1
 //    (before: +0.0105; measured with close_risers off to show the test sees the leak).
 TEST(AccuracyDefects, TiltedSheetDoesNotLeak) {
-  const std::vector<std::string> sets = {"light_layers.resolution=2048", "trace.rays=8"};
+  const std::vector<std::string> sets = {"light.resolution=2048", "trace.rays=8"};
   const AnalyticError fixed = measure("tilted_plate", sets, "trace.visibility", 128, 96);
   EXPECT_GT(fixed.pixelsInUmbra, 200u);
   EXPECT_LE(fixed.meanInUmbra, 0.003);
@@ -115,10 +115,10 @@ namespace {
 //    shadow 0.029 against 0.0087 with two, max 0.60; stacked plates +0.070 in the umbra.
 TEST(AccuracyDefects, ThreeLayersDoNotLeakAtSilhouettes) {
   const auto two = [](const std::string& scene) {
-    return measure(scene, {"trace.layers=two", "trace.rays=4"}, "trace.visibility");
+    return measure(scene, {"light.layers=two", "trace.rays=4"}, "trace.visibility");
   };
   const auto three = [](const std::string& scene) {
-    return measure(scene, {"trace.layers=three", "trace.rays=4"}, "trace.visibility");
+    return measure(scene, {"light.layers=three", "trace.rays=4"}, "trace.visibility");
   };
   const AnalyticError tinyTwo = two("tiny_light"), tinyThree = three("tiny_light");
   EXPECT_LE(tinyThree.meanAbsInShadow, 1.2 * tinyTwo.meanAbsInShadow);

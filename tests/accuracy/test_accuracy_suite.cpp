@@ -31,6 +31,11 @@ TEST(AccuracySuite, DefaultsHoldOnEveryCase) {
     }
     PipelineRun run(makeAnalyticScene(name), sets, 256, 192);
     const std::vector<double> exact = analyticImage(run);
+    const AutoSettings& chosen = run.frame->autoSettings;
+    std::printf("%-15s auto: map %d, %d layers, %dx%d rays", name.c_str(), chosen.resolution,
+                chosen.layers, chosen.raysPerSide, chosen.raysPerSide);
+    for (const std::string& reason : chosen.reasons) std::printf("; %s", reason.c_str());
+    std::printf("\n");
     for (const char* output :
          {"filter.visibility", "trace.visibility", "reference.visibility", "hard_shadow.visibility"}) {
       const AnalyticError e = compareWithAnalytic(run.read(output), exact);

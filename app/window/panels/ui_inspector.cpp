@@ -110,6 +110,9 @@ void drawCounters(const UiState& state) {
     return;
   }
   for (const auto& [name, value] : state.session.frame->counters) ImGui::Text("%s  %.6g", name.c_str(), value);
+  // What `auto` parameters chose and why (app/scene/auto_settings.h).
+  for (const std::string& reason : state.session.frame->autoSettings.reasons)
+    ImGui::TextWrapped("auto: %s", reason.c_str());
 }
 
 // 4. The ray trace hook: the picked eye pixel, ray i of n x n.
