@@ -39,7 +39,7 @@ public:
         Input::texture("wsNormal", "Receiver normals (Eq 3.2 bias, back-face early out).",
                        GL_RGBA32F),
         Input::texture("near", "Near layer (§3.2).", GL_DEPTH_COMPONENT32F),
-        Input::texture("far", "Far layer (§3.3).", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer (§3.3).", GL_R32F),
         hierarchyInput(),
         Input::texture("mask", "Classes of §3.6 (lit and umbra pixels are not traced).", GL_R32F),
         Input::texture("zRange", "Occluder depth bounds per pixel (ray shortening, §3.7).",

@@ -13,7 +13,7 @@ public:
   MinMaxStage() {
     inputs_ = {
         Input::texture("near", "Near layer: zNearMin and zNearMax.", GL_DEPTH_COMPONENT32F),
-        Input::texture("far", "Far layer: zFarMax.", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer: zFarMax.", GL_R32F),
     };
     outputs_ = {{"levels",
                  "Min-max mipmap, every level in one atlas: level 0 at the left, level n >= 1 "
