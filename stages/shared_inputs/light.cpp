@@ -26,7 +26,9 @@ public:
             "depth-map method (thesis §4.1, Atty 2006 §4.2): a penumbra narrower than a few "
             "texels is lost. A plate 0.06 above the ground under a 1x1 light 3 units up casts "
             "a 0.0204-wide contact penumbra; at fov 90 one texel there is 0.054 wide at 128^2 "
-            "(the penumbra is 0.38 texel), 0.013 at 512^2, 0.0034 at 2048^2 (6 texels).",
+            "(the penumbra is 0.38 texel), 0.013 at 512^2, 0.0034 at 2048^2 (6 texels). "
+            "Measured there (trace, 8x8 rays, 256x192): mean |error| in shadow 0.094, all "
+            "too bright, at 128^2; 0.0125 at 2048^2.",
             512, 128, 2048),
         Param::real("fov_degrees",
                     "Field of view of the light's frustum (Eq 3.1). Wider covers more of the "
