@@ -16,9 +16,7 @@ ReferenceRequest makeReferenceRequest(const Frame& frame, const GlTexture& wsPos
   request.halfWidth = 0.5f * frame.scene.light.width;
   request.halfHeight = 0.5f * frame.scene.light.height;
   // Only the occluders are in the Embree scene (reference_trace.h, "Origin").
-  const Bounds occluders = frame.scene.bounds(/*occludersOnly=*/true);
   request.relativeEpsilon = kRelativeEpsilon;
-  request.minimumEpsilon =
-      kRelativeEpsilon * 0.1f * (occluders.empty() ? 1.0f : glm::length(occluders.max - occluders.min));
+  request.minimumEpsilon = referenceMinimumOffset(frame.scene);
   return request;
 }

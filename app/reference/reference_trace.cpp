@@ -67,6 +67,11 @@ glm::vec2 referenceSampleUnit(int x, int y, int k, int samplesPerSide, bool stra
   return (cell + glm::vec2(unitFloat(a), unitFloat(b))) / float(m);
 }
 
+float referenceMinimumOffset(const Scene& scene) {
+  const Bounds occluders = scene.bounds(/*occludersOnly=*/true);
+  return kRelativeEpsilon * 0.1f * (occluders.empty() ? 1.0f : glm::length(occluders.max - occluders.min));
+}
+
 float referenceOriginOffset(const ReferenceRequest& request, const glm::vec3& p) {
   const glm::vec3 size = glm::abs(p);
   return std::max(request.minimumEpsilon,

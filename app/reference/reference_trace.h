@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "shared/reference_origin.h"
 
 // The receivers and the light sampling of one reference image.
 struct ReferenceRequest {
@@ -67,8 +68,10 @@ struct ReferenceProgress {
 // draw it and request a cancel; the stage resets it when a computation starts.
 ReferenceProgress& referenceStageProgress();
 
-// Relative origin offset (see "Origin" above).
-inline constexpr float kRelativeEpsilon = 1e-5f;
+// Relative origin offset (see "Origin" above; shared with raster4d's shaders).
+inline constexpr float kRelativeEpsilon = float(REFERENCE_RELATIVE_OFFSET);
+// The smallest offset: kRelativeEpsilon x 0.1 x the occluders' diagonal (world units).
+float referenceMinimumOffset(const Scene& scene);
 // The offset at p (world units).
 float referenceOriginOffset(const struct ReferenceRequest& request, const glm::vec3& p);
 
