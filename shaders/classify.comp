@@ -47,6 +47,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   ivec3 size = textureSize(nbufferLevels, 0);
   // The coarsest level's window is the whole map: the starting bounds (§3.6).
   vec3 bounds = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
+  wsPosition = normalOffsetPoint(wsPosition, wsNormal);
   vec3 map = lightMapCoords(wsPosition);
   float receiverLsDepth = zToLsDepth(map.z);
   zRange = vec4(bounds, receiverLsDepth);

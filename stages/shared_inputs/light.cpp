@@ -42,6 +42,15 @@ public:
         Param::real("min_cosine", "Lower clamp of n.l in Eq 3.2, so grazing surfaces get a "
                                   "large but finite bias (\"limited to some small, non-zero "
                                   "value\", §3).", 0.1, 0.001, 1),
+        Param::real("normal_offset",
+                    "Normal offset (classify and the trace): a receiver point moves this many "
+                    "texel widths (at its depth) along its normal before its rays start. Rays "
+                    "from a face almost parallel to them (a box's side towards the part of the "
+                    "light in front of it) otherwise stay inside the occluder's own near/far "
+                    "interval for texels and are blocked (issue 12's box: side faces 0.07 too "
+                    "dark, mean |error| in shadow 0.042 at 0, 0.029 at 1, 0.028 at 1.5, while "
+                    "the contact plate goes 0.014 -> 0.018 -> 0.023).",
+                    1.0, 0, 4),
         Param::choiceOrAuto("layers", "Depth layers that model the occluders, for classification and "
                                 "the trace: one (near only, §3.2), two (near + far, §3.3) or "
                                 "three (+ the eye's depth: a point seen by the eye is free "
@@ -103,7 +112,7 @@ public:
     u.lightDepthRange = glm::vec4(l.zNear, l.zFar, l.tanHalfFovX, l.tanHalfFovY);
     u.mapSize = glm::uvec4(size, size, unsigned(frame.light.layers), 0);
     u.bias = glm::vec4(param("bias").asFloat(), param("adaptive_bias").asBool() ? 1.f : 0.f,
-                       param("min_cosine").asFloat(), 0);
+                       param("min_cosine").asFloat(), param("normal_offset").asFloat());
     // The option index is the HashKind, which equals the GLSL HASH_* number (hash_kind.h).
     u.sampling = glm::uvec4(unsigned(param("hash").asInt()), 0, 0, 0);
     frame.outputBuffer(*this, "light").upload(&u, sizeof u);
