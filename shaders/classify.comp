@@ -35,11 +35,19 @@ layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
 shared uint groupCounts[CLASSIFY_CLASS_COUNT];
 shared uint groupListBase;  // this group's first slot in tracedPixels
 
+bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
+  vec3 right = light.wsLightRight.w * light.wsLightRight.xyz, up = light.wsLightUp.w * light.wsLightUp.xyz;
+  vec3 toCenter = light.wsLightCenter.xyz - wsPosition;
+  float centre = dot(wsNormal, toCenter), spread = abs(dot(wsNormal, right)) + abs(dot(wsNormal, up));
+  return centre - spread > 0.0;  // the least n . (corner - p) over the four corners
+}
+
 // Writes the bounds (zNearMin, zNearMax, zFarMax, receiver lsDepth) and returns the class.
 int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   ivec3 size = textureSize(nbufferLevels, 0);
   // The coarsest level's window is the whole map: the starting bounds (§3.6).
   vec3 bounds = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
+  wsPosition = normalOffsetPoint(wsPosition, wsNormal);
   vec3 map = lightMapCoords(wsPosition);
   float receiverLsDepth = zToLsDepth(map.z);
   zRange = vec4(bounds, receiverLsDepth);
@@ -61,7 +69,11 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
     bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
   }
   zRange.xyz = bounds;
-  if (endLsDepth <= bounds.x) return CLASS_LIT;
+  // Lit also needs the whole light in front of the tangent plane: a sample behind it is
+  // blocked (the trace's backface early out, the reference), so a pixel that sees only part
+  // of the light (a box's side face) is penumbra, not lit (issue 12's oracle: side faces of
+  // a box were 0.8 too bright).
+  if (endLsDepth <= bounds.x && wholeLightInFront(wsPosition, wsNormal)) return CLASS_LIT;
   if (uUmbraTest && shallowestEnd >= bounds.y) return CLASS_UMBRA;
   return CLASS_PENUMBRA;
 }

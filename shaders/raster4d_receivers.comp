@@ -4,6 +4,7 @@
 // are kept as (x -+ a)/d so that they do not depend on D, the depth of P, which is the
 // farthest receiver's depth (P must lie behind every receiver, Appendix proof).
 #include "shared/raster4d.glsl"
+#include "shared/reference_origin.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D wsPositionTexture;
 layout(binding = 1) uniform sampler2D wsNormalTexture;
@@ -20,7 +21,10 @@ void main() {
     return;
   }
   vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
-  vec3 lsReceiver = lightSpace(wsPosition.xyz + r4d.plane.z * wsNormal);
+  // The reference's origin offset (reference_trace.h, "Origin"), computed the same way.
+  vec3 size = abs(wsPosition.xyz);
+  float offset = max(r4d.plane.z, float(REFERENCE_RELATIVE_OFFSET) * max(size.x, max(size.y, size.z)));
+  vec3 lsReceiver = lightSpace(wsPosition.xyz + offset * wsNormal);
   if (lsReceiver.z <= r4d.plane.w) {  // at or behind the light plane: the light faces away
     receivers[index] = vec4(lsReceiver, 2.0);
     atomicAdd(state.counts.y, 1u);

@@ -131,9 +131,20 @@ void append(std::vector<BenchConfig>& to, std::vector<BenchConfig> more) {
   for (BenchConfig& config : more) to.push_back(std::move(config));
 }
 
+// The Monte Carlo method as it ships: hierarchical, deferred, filtered, with `auto` choosing
+// the map, the layers and the rays (issue 12), to be seen against the fixed ones' frontier.
+BenchConfig monteCarloAuto() {
+  BenchConfig config{"hierarchical auto", "filter", "hierarchical auto",
+                     {"trace.search=hierarchical", "light.layers=auto", "trace.rays=auto",
+                      "trace.deferred=true", "filter.enabled=true", "light.resolution=auto"}};
+  chooseMethod(config);
+  return config;
+}
+
 std::vector<BenchConfig> defaultConfigs(const Methods& methods) {
   std::vector<BenchConfig> configs = withDefaults(methods, 512);
   if (methods.monteCarlo) {
+    configs.push_back(monteCarloAuto());
     for (int rays = 1; rays <= 4; ++rays) {
       configs.push_back(monteCarlo("linear", 2, rays));
       configs.push_back(monteCarlo("linear_binary", 2, rays));

@@ -10,8 +10,8 @@
 // Presets:
 //   default           every other method at map 512, 128, 1024; Monte Carlo linear,
 //                     linear_binary (2 and 3 layers), hierarchical at 1, 4, 9, 16 rays;
-//                     filter off; forward; map 128..1024 (one setup, small enough for a few
-//                     minutes on llvmpipe)
+//                     filter off; forward; map 128..1024; `auto` (map, layers, rays; issue
+//                     12) (one setup, small enough for a few minutes on llvmpipe)
 //   minimal           every other method and hierarchical 2x2 (for sweeps and CI)
 //   thesis-table-4.1  the thesis's table shapes (Tables 4.1-4.4): search type x rays x
 //                     deferred against shadow-map size 256/512/1024 at the main eye size,

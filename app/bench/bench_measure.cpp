@@ -55,6 +55,7 @@ bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchCon
   pipeline.set("reference.samples=" + std::to_string(referenceSamples));
   frame.frameKey = 0;
   pipeline.run(frame, {"error.absolute"});
+  if (pipeline.hasStage("light")) r.map = frame.light.mapSize;  // light.resolution may be auto
   const auto& c = frame.counters;
   if (c.count("reference.pending")) return false;
   if (!c.count("error.rmse"))

@@ -103,5 +103,16 @@ int runExport(const ExportOptions& options) {
     std::printf("  %-14s %8.2f ms\n", time.stage.c_str(), time.milliseconds);
   std::printf("wrote %zu files into %s\n", written.size(),
               std::filesystem::absolute(options.outDirectory).c_str());
+  // An empty frame (no receiver pixel) is the scene's or the camera's fault: the files are
+  // written (to look at), and the exit status is 2 as for any bad input (issue 12).
+  const std::vector<float> positions = frame.texture("gbuffer.wsPosition").readFloats();
+  size_t covered = 0;
+  for (size_t i = 3; i < positions.size(); i += 4) covered += positions[i] != 0;
+  if (covered == 0) {
+    std::fprintf(stderr, "penumbra export: ERROR: the frame has no covered pixel: the camera "
+                         "of scene '%s' sees no geometry (exit status 2)\n",
+                 printable(session.scene.name).c_str());
+    return 2;
+  }
   return 0;
 }

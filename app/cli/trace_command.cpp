@@ -1,5 +1,7 @@
 #include "cli/trace_command.h"
 
+#include "core/auto_params.h"
+
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -25,10 +27,10 @@ std::string traceStepsJson(const Frame& frame, int x, int y) {
   glGetTextureSubImage(visibility.id(), 0, x, glY, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof value,
                        &value);
   result["visibility"] = value;
-  result["rays"] = frame.pipeline.param("trace.rays").asInt() *
-                   frame.pipeline.param("trace.rays").asInt();
+  const int raysPerSide = effectiveRays(frame.pipeline.param("trace.rays"), frame.autoSettings);
+  result["rays"] = raysPerSide * raysPerSide;
   result["search"] = frame.pipeline.param("trace.search").asEnum();
-  result["layers"] = frame.pipeline.param("light.layers").asEnum();
+  result["layers"] = frame.pipeline.param("light.layers").options.at(size_t(frame.light.layers - 1));
   nlohmann::json steps = nlohmann::json::array();
   for (const gpu::TraceStep& step : frame.traceSteps)
     steps.push_back({{"ray", step.header.x},

@@ -12,6 +12,7 @@
 #include "gl/gl_texture.h"
 #include "gl/gpu_layout_trace.h"
 #include "gl/gpu_scene.h"
+#include "scene/auto_settings.h"
 #include "scene/light_frame.h"
 
 class Pipeline;
@@ -30,6 +31,7 @@ struct Frame {
 
   std::map<std::string, GlTexture> textures;  // "stage.output"
   std::map<std::string, double> counters;     // statistics for people: "trace.rays", ...
+  AutoSettings autoSettings;  // what `auto` parameters chose (stage `light`; issue 12)
   std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
   std::map<std::string, std::unique_ptr<GlBuffer>> buffers;  // buffer outputs, "stage.output"
 

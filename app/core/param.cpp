@@ -21,7 +21,20 @@ Param Param::choice(std::string key, std::string doc, std::vector<std::string> o
   return {std::move(key), std::move(doc), Type::Enum, double(value), 0, last, std::move(options)};
 }
 
+Param Param::integerOrAuto(std::string key, std::string doc, int value, int min, int max) {
+  Param param = integer(std::move(key), std::move(doc), value, min, max);
+  param.allowsAuto = param.automatic = true;
+  return param;
+}
+Param Param::choiceOrAuto(std::string key, std::string doc, std::vector<std::string> options,
+                          int value) {
+  Param param = choice(std::move(key), std::move(doc), std::move(options), value);
+  param.allowsAuto = param.automatic = true;
+  return param;
+}
+
 std::string Param::toString() const {
+  if (automatic) return "auto";
   switch (type) {
     case Type::Bool: return asBool() ? "true" : "false";
     case Type::Int: return std::to_string(asInt());
@@ -37,6 +50,7 @@ std::string Param::toString() const {
 
 std::string Param::rangeText() const {
   std::ostringstream out;
+  if (allowsAuto) out << "auto or ";
   switch (type) {
     case Type::Bool: return "true or false";
     case Type::Enum:
@@ -79,6 +93,18 @@ bool isDecimal(const std::string& text) {
 }  // namespace
 
 std::string Param::set(const std::string& text) {
+  if (allowsAuto && text == "auto") {
+    automatic = true;
+    return "";
+  }
+  const bool wasAutomatic = automatic;
+  automatic = false;  // a value given: fixed from now on (restored below if invalid)
+  const std::string problem = setFixed(text);
+  if (!problem.empty()) automatic = wasAutomatic;
+  return problem;
+}
+
+std::string Param::setFixed(const std::string& text) {
   const auto invalid = [&] {
     std::string message(1, '\'');
     return message.append(printable(text)).append("' is not valid for ").append(key)

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "scene/eye_frustum.h"
+
 namespace {
 
 std::string joined(const std::vector<std::string>& items) {
@@ -293,11 +295,8 @@ void Pipeline::prepareCamera(Frame& frame) const {
   const Scene& scene = frame.scene;
   gpu::FrameUniforms& u = frame.uniforms;
   const float aspect = float(frame.eyeWidth) / float(frame.eyeHeight);
-  const Bounds bounds = scene.bounds();
-  const float sceneSize = bounds.empty() ? 10.0f : glm::length(bounds.max - bounds.min);
-  const float distance = glm::length(scene.camera.target - scene.camera.position);
-  const float eyeNear = std::max(1e-3f * sceneSize, 0.02f * distance);
-  const float eyeFar = distance + 2.0f * sceneSize;
+  const EyeDepthRange eyeDepths = eyeDepthRangeOrWarn(scene, aspect);  // scene/eye_frustum.h
+  const float eyeNear = eyeDepths.eyeNear, eyeFar = eyeDepths.eyeFar;
   const glm::mat4 viewFromWorld =
       glm::lookAt(scene.camera.position, scene.camera.target, scene.camera.up);
   const glm::mat4 clipFromView =

@@ -66,7 +66,8 @@ std::string referenceCacheKey(const Scene& scene, const ReferenceRequest& reques
   hash.value(request.samplesPerSide); hash.value(request.stratified);
   hash.value(request.wsLightCenter); hash.value(request.wsLightRight); hash.value(request.wsLightUp);
   hash.value(request.halfWidth); hash.value(request.halfHeight);
-  hash.value(request.epsilon);
+  hash.value(request.relativeEpsilon);
+  hash.value(request.minimumEpsilon);
   hash.bytes(request.wsPosition.data(), request.wsPosition.size() * sizeof(float));
   hash.bytes(request.wsNormal.data(), request.wsNormal.size() * sizeof(float));
   return hash.hex();
@@ -112,7 +113,7 @@ void storeCachedReference(const std::string& key, const std::vector<float>& visi
                             {"eye_size", {request.width, request.height}},
                             {"samples_per_side", request.samplesPerSide},
                             {"sampling", request.stratified ? "stratified" : "uniform"},
-                            {"epsilon", request.epsilon},
+                            {"relative_epsilon", request.relativeEpsilon}, {"minimum_epsilon", request.minimumEpsilon},
                             {"seconds", seconds}};
     writeTextFile(directory / (key + ".json"), about.dump(2) + "\n");
   } catch (const std::exception& error) {

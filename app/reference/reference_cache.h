@@ -28,7 +28,7 @@ private:
 };
 
 // The key: a version tag of the algorithm, the scene's content (every triangle with its
-// receiver-only flag, the light, the camera), the eye size, m, the sampling, epsilon, and
+// receiver-only flag, the light, the camera), the eye size, m, the sampling, the origin offsets, and
 // the receivers themselves (the G-buffer positions and normals read back), so a change of
 // camera, resolution or driver can never reuse a stale image.
 std::string referenceCacheKey(const Scene& scene, const ReferenceRequest& request);

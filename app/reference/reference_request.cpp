@@ -15,8 +15,8 @@ ReferenceRequest makeReferenceRequest(const Frame& frame, const GlTexture& wsPos
   request.wsLightUp = frame.light.up;
   request.halfWidth = 0.5f * frame.scene.light.width;
   request.halfHeight = 0.5f * frame.scene.light.height;
-  const Bounds bounds = frame.scene.bounds();
-  request.epsilon =
-      kRelativeEpsilon * (bounds.empty() ? 1.0f : glm::length(bounds.max - bounds.min));
+  // Only the occluders are in the Embree scene (reference_trace.h, "Origin").
+  request.relativeEpsilon = kRelativeEpsilon;
+  request.minimumEpsilon = referenceMinimumOffset(frame.scene);
   return request;
 }

@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -66,6 +67,17 @@ glm::vec2 referenceSampleUnit(int x, int y, int k, int samplesPerSide, bool stra
   return (cell + glm::vec2(unitFloat(a), unitFloat(b))) / float(m);
 }
 
+float referenceMinimumOffset(const Scene& scene) {
+  const Bounds occluders = scene.bounds(/*occludersOnly=*/true);
+  return kRelativeEpsilon * 0.1f * (occluders.empty() ? 1.0f : glm::length(occluders.max - occluders.min));
+}
+
+float referenceOriginOffset(const ReferenceRequest& request, const glm::vec3& p) {
+  const glm::vec3 size = glm::abs(p);
+  return std::max(request.minimumEpsilon,
+                  request.relativeEpsilon * std::max({size.x, size.y, size.z}));
+}
+
 struct ReferenceTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -80,7 +92,7 @@ struct ReferenceTracer::Impl {
   int visibleSamples(const ReferenceRequest& r, const glm::vec3& p, const glm::vec3& n, int x,
                      int y, Occluded occluded, std::uint8_t* blocked) const {
     const int m = r.samplesPerSide, total = m * m;
-    const glm::vec3 origin = p + r.epsilon * n;
+    const glm::vec3 origin = p + referenceOriginOffset(r, p) * n;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // one origin, one light: coherent

@@ -7,10 +7,15 @@
 // - Occluders: the objects that are not receiver-only, exactly the set the methods put in
 //   their depth layers (light_layers excludes receiver-only objects, thesis §3.3). A
 //   receiver-only ground casts no shadow in any method, so it casts none here either.
-// - Origin: the receiver point moved kRelativeEpsilon x the scene's diagonal along its
-//   normal. The methods need the large bias of Eq 3.2 to survive depth-map resolution;
-//   the reference only needs to leave the surface's own triangle (float round-off), so
-//   the offset is tiny and does not detach contact shadows.
+// - Origin: the receiver point moved along its normal by an offset from the point's own
+//   coordinates: kRelativeEpsilon x its largest coordinate (float round-off of the G-buffer
+//   point and of Embree's hit test grows with the coordinates' size, not with the scene's),
+//   at least kRelativeEpsilon x 0.1 x the diagonal of the occluders (the only triangles in
+//   the Embree scene: a receiver-only ground of any size does not count). The methods need
+//   the large bias of Eq 3.2 to survive depth-map resolution; the reference only needs to
+//   leave the surface's own triangle, so the offset stays tiny near the occluders and does
+//   not detach contact shadows (issue 12: with 1e-5 x the whole scene's diagonal, a plate
+//   0.06 above a 1000-unit ground was 0.066 too bright in shadow).
 // - A light sample behind the receiver's tangent plane (n . (s - p) <= 0) is blocked: an
 //   opaque surface cannot see through itself. This is what the methods' backface early
 //   out (§3.7) and the Lambert term assume; for closed meshes the triangles agree anyway.
@@ -33,6 +38,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "shared/reference_origin.h"
 
 // The receivers and the light sampling of one reference image.
 struct ReferenceRequest {
@@ -43,7 +49,9 @@ struct ReferenceRequest {
   bool stratified = true;         // false: cell centres
   glm::vec3 wsLightCenter{0}, wsLightRight{1, 0, 0}, wsLightUp{0, 0, 1};  // right/up unit
   float halfWidth = 0.5f, halfHeight = 0.5f;
-  float epsilon = 1e-4f;  // origin offset along the normal, world units
+  // Origin offset along the normal: max(minimumEpsilon, relativeEpsilon x max|p_i|).
+  float relativeEpsilon = 1e-5f;
+  float minimumEpsilon = 1e-5f;  // world units
 };
 
 // Shared with whoever shows progress or wants to stop a computation (the window later):
@@ -60,8 +68,12 @@ struct ReferenceProgress {
 // draw it and request a cancel; the stage resets it when a computation starts.
 ReferenceProgress& referenceStageProgress();
 
-// Relative origin offset: epsilon = kRelativeEpsilon x scene diagonal.
-inline constexpr float kRelativeEpsilon = 1e-5f;
+// Relative origin offset (see "Origin" above; shared with raster4d's shaders).
+inline constexpr float kRelativeEpsilon = float(REFERENCE_RELATIVE_OFFSET);
+// The smallest offset: kRelativeEpsilon x 0.1 x the occluders' diagonal (world units).
+float referenceMinimumOffset(const Scene& scene);
+// The offset at p (world units).
+float referenceOriginOffset(const struct ReferenceRequest& request, const glm::vec3& p);
 
 class ReferenceTracer {
 public:

@@ -22,15 +22,28 @@ void helpMarker(const std::string& text) {
 //    for the line (narrow panel, large UI scale) goes on its own line above the widget.
 bool drawParam(Param& param) {
   bool changed = false;
-  const float nameWidth = ImGui::CalcTextSize(param.key.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  // `auto` (app/scene/auto_settings.h): a checkbox before the widget, which is then greyed.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float autoWidth = param.allowsAuto ? ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+                                                 ImGui::CalcTextSize("auto").x + style.ItemSpacing.x
+                                           : 0.0f;
+  const float nameWidth = ImGui::CalcTextSize(param.key.c_str()).x + style.ItemInnerSpacing.x;
   const bool nameAbove = param.type != Param::Type::Bool &&
-                         ImGui::CalcItemWidth() + nameWidth + buttonsWidth({"(?)"}) > ImGui::GetContentRegionAvail().x;
+                         autoWidth + ImGui::CalcItemWidth() + nameWidth + buttonsWidth({"(?)"}) >
+                             ImGui::GetContentRegionAvail().x;
   const std::string hidden = "##" + param.key;
-  if (nameAbove) {
-    ImGui::TextUnformatted(param.key.c_str());
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"(?)"}));
+  if (nameAbove) ImGui::TextUnformatted(param.key.c_str());
+  if (param.allowsAuto) {
+    bool automatic = param.automatic;
+    if (ImGui::Checkbox(("auto##" + param.key).c_str(), &automatic)) {
+      param.automatic = automatic;
+      changed = true;
+    }
+    ImGui::SameLine();
   }
+  if (nameAbove) ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"(?)"}));
   const char* label = nameAbove ? hidden.c_str() : param.key.c_str();
+  ImGui::BeginDisabled(param.automatic);
   switch (param.type) {
     case Param::Type::Bool: {
       bool value = param.asBool();
@@ -64,6 +77,7 @@ bool drawParam(Param& param) {
       break;
     }
   }
+  ImGui::EndDisabled();
   helpMarker(param.doc + "\nRange: " + param.rangeText() + "\nCtrl+click a slider to type.");
   return changed;
 }

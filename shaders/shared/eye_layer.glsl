@@ -3,6 +3,15 @@
 // the visible surface at its pixel by more than the tolerance. A point on the visible
 // surface itself (a sheet, the face the eye sees) stays solid. Outside the eye's view
 // nothing is known, and the point stays solid, as with two layers.
+//
+// Silhouettes (issue 12): a point on an occluder within a pixel of its outline in the eye's
+// image may fall in a pixel that shows what lies behind the occluder (the ground, or the
+// background); one fetch then called the occluder's own point "seen in front of the
+// surface", i.e. free, and light leaked around every silhouette (a 0.05-wide light over a
+// plate, 2x2 rays: mean |error| in shadow 0.0087 with two layers, 0.029 with three, maximum
+// 0.28 and 0.60). The point is now free only if it lies in front of the visible surface at
+// every covered pixel of the 3x3 block around its projection: within a pixel of an outline
+// the occluder's own pixels keep it solid.
 layout(binding = TRACE_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 
 bool hiddenFromEye(vec3 wsPoint) {
@@ -10,11 +19,17 @@ bool hiddenFromEye(vec3 wsPoint) {
   if (clip.w <= 0.0) return true;
   vec2 ndc = clip.xy / clip.w;
   if (any(greaterThan(abs(ndc), vec2(1.0)))) return true;
-  ivec2 pixel = clamp(ivec2((ndc * 0.5 + 0.5) * vec2(frame.sizes.xy)), ivec2(0),
-                      ivec2(frame.sizes.xy) - 1);
-  gFetches += 1u;
-  vec4 surface = texelFetch(wsPositionTexture, pixel, 0);
-  if (surface.w == 0.0) return false;  // the eye sees the background through this point
+  ivec2 size = ivec2(frame.sizes.xy);
+  ivec2 pixel = clamp(ivec2((ndc * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
   vec3 eye = frame.wsEyePosition.xyz;
-  return distance(wsPoint, eye) > distance(surface.xyz, eye) - trace.eye.x;
+  float pointDistance = distance(wsPoint, eye);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 at = clamp(pixel + ivec2(dx, dy), ivec2(0), size - 1);
+      gFetches += 1u;
+      vec4 surface = texelFetch(wsPositionTexture, at, 0);
+      if (surface.w == 0.0) continue;  // background: the eye sees through this pixel
+      if (pointDistance > distance(surface.xyz, eye) - trace.eye.x) return true;
+    }
+  return false;
 }

@@ -8,6 +8,10 @@
 #define FILTER_DEPTH_SCALE_LOCATION 3
 #define FILTER_NORMAL_POWER_LOCATION 4
 #define FILTER_TILED_LOCATION 5
+#define FILTER_PLANE_SIGMA_LOCATION 6
+#define FILTER_PIXEL_ANGLE_LOCATION 7
+#define FILTER_PENUMBRA_SCALE_LOCATION 8
+#define FILTER_ZRANGE_UNIT 3
 
 // The tiles the filter runs on (issue 14; filter_tiles.comp writes it, filter.comp reads
 // it): a std430 storage buffer holding a glDispatchComputeIndirect command (groups x, y, z:

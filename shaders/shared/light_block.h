@@ -26,6 +26,6 @@ struct LightUniforms {
   uvec4 mapSize;            // xy = light maps (texels), z = depth layers (1-3, §3.2-3.4),
                             // w unused
   vec4 bias;                // Eq 3.2 group: x = constant (world), y = adaptive (0/1),
-                            // z = min cosine, w unused
+                            // z = min cosine, w = normal offset (texels; bias.glsl)
   uvec4 sampling;           // x = light-sample hash (HASH_*), yzw unused
 };

@@ -65,8 +65,9 @@
 struct Raster4dParams {
   mat4 lsFromWorld;  // world -> light space (rows: right, up, forward; origin the centre)
   vec4 light;        // x = a, y = b (offset of the outer samples), z = du, w = dv
-  vec4 plane;        // x = D (depth of P), y = tolerance in P space (conservative), z = origin
-                     // offset along the normal (world), w = smallest receiver/occluder depth
+  vec4 plane;        // x = D (depth of P), y = tolerance in P space (conservative), z = smallest
+                     // origin offset along the normal (world; reference_origin.h), w = smallest
+                     // receiver/occluder depth
   vec4 fb;           // xy = P-space minimum of FB, zw = FB pixels per P-space unit
   ivec4 sizes;       // x, y = FB pixels; z, w = eye image
   ivec4 band;        // x = first FB row, y = end row (exclusive); z = sample entry base,

@@ -73,9 +73,15 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
     if (mayHit && level == 0) {
       bool hit = !threeLayers;
       if (threeLayers) {
-        // Test the first point of the texel's part of the ray that lies in [near, far].
-        float sHit = depthIn < bounds.x ? raySAtLsDepth(ray, bounds.x) : s;
-        hit = hiddenFromEye(rayWorldPoint(ray, clamp(sHit, s, sExit)));
+        // Test both ends of the texel's part of the ray that lies in [near, far]: where it
+        // enters (at the near surface or the texel's edge) and where it leaves (at the far
+        // surface or the edge). Testing the entry alone let a ray that entered in free space
+        // the eye sees (between two stacked plates) skip the far surface it meets in the
+        // same texel (issue 12).
+        float sIn = depthIn < bounds.x ? raySAtLsDepth(ray, bounds.x) : s;
+        float sOut = depthOut > bounds.z ? raySAtLsDepth(ray, bounds.z) : sExit;
+        hit = hiddenFromEye(rayWorldPoint(ray, clamp(sIn, s, sExit))) ||
+              hiddenFromEye(rayWorldPoint(ray, clamp(sOut, s, sExit)));
       }
       recordStep(level, hit ? STEP_HIT : STEP_EYE_VISIBLE, iteration, window,
                  vec4(bounds.x, bounds.z, depthIn, depthOut), vec4(s, s, rayPoint(ray, s)));

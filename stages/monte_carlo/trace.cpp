@@ -39,7 +39,7 @@ public:
         Input::texture("wsNormal", "Receiver normals (Eq 3.2 bias, back-face early out).",
                        GL_RGBA32F),
         Input::texture("near", "Near layer (§3.2).", GL_DEPTH_COMPONENT32F),
-        Input::texture("far", "Far layer (§3.3).", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer (§3.3).", GL_R32F),
         hierarchyInput(),
         Input::texture("mask", "Classes of §3.6 (lit and umbra pixels are not traced).", GL_R32F),
         Input::texture("zRange", "Occluder depth bounds per pixel (ray shortening, §3.7).",
@@ -57,8 +57,10 @@ public:
          {0, 0, 200, Colormap::Perceptual}},
     };
     params_ = {
-        Param::integer("rays", "Rays per pixel along each side of the light: n x n rays (§3.1).",
-                       2, 1, 8),
+        Param::integerOrAuto("rays", "Rays per pixel along each side of the light: n x n rays "
+                                     "(§3.1). auto: more where the smallest penumbra in view is "
+                                     "too narrow for the filter to average (auto.* counters).",
+                             2, 1, 8),
         Param::choice("sampling", "jittered: one random sample in each cell of an n x n grid on "
                                   "the light; random: anywhere on the light (§3.1, Fig 3.3).",
                       {"jittered", "random"}, 0),
@@ -118,8 +120,9 @@ public:
     gpu::TraceParams params{};
     const int recordY = param("record_y").asInt();
     bindLightInput(frame, *this);
-    params.config = {param("rays").asInt(), param("sampling").asInt(), param("search").asInt(),
-                     frame.light.layers};
+    // `auto` rays: what the scene and view need (stage `light`, scene/auto_settings.h).
+    const int rays = param("rays").automatic ? frame.autoSettings.raysPerSide : param("rays").asInt();
+    params.config = {rays, param("sampling").asInt(), param("search").asInt(), frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
                        param("early_out_region").asBool(), param("shorten_rays").asBool()};
     const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array

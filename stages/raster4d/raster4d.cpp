@@ -243,9 +243,9 @@ private:
                                         frame.light.forward);
     const float du = 2 * halfWidth / float(m), dv = 2 * halfHeight / float(m);
     p.light = glm::vec4(halfWidth - 0.5f * du, halfHeight - 0.5f * dv, du, dv);
-    // The reference's origin offset (reference_trace.h), and the nearest depth that still
-    // has a bounded Proj4.
-    p.plane = glm::vec4(0, 0, kRelativeEpsilon * diagonal, kRelativeEpsilon * diagonal);
+    // The reference's smallest origin offset (reference_trace.h, "Origin"; the shader adds
+    // the relative part), and the nearest depth that still has a bounded Proj4.
+    p.plane = glm::vec4(0, 0, referenceMinimumOffset(frame.scene), kRelativeEpsilon * diagonal);
     p.sizes = glm::ivec4(fb, fb, frame.eyeWidth, frame.eyeHeight);
     p.modes = glm::ivec4(param("sample_assignment").asEnum() == "L0" ? RASTER4D_ASSIGN_L0
                                                                       : RASTER4D_ASSIGN_PROJ4,

@@ -14,7 +14,7 @@ public:
   MinMaxStage() {
     inputs_ = {
         Input::texture("near", "Near layer: zNearMin and zNearMax.", GL_DEPTH_COMPONENT32F),
-        Input::texture("far", "Far layer: zFarMax.", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer: zFarMax.", GL_R32F),
     };
     outputs_ = {{"levels",
                  "Min-max mipmap, levels n >= 1 stacked in one atlas (level 0 is the light "

@@ -11,7 +11,7 @@ public:
   NBufferStage() {
     inputs_ = {
         Input::texture("near", "Near layer: zNearMin and zNearMax.", GL_DEPTH_COMPONENT32F),
-        Input::texture("far", "Far layer: zFarMax.", GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer: zFarMax.", GL_R32F),
     };
     outputs_ = {{"levels",
                  "N-buffer: layer n holds min/max light depths over a 2^n x 2^n window "

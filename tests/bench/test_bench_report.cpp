@@ -16,6 +16,7 @@
 
 #include "bench/bench_configs.h"
 #include "bench/bench_json.h"
+#include "bench/bench_measure.h"
 #include "bench/bench_output.h"
 #include "bench/pareto.h"
 #include "bench/plot.h"
@@ -174,6 +175,16 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   // Every method reads the light stage, so each is swept over both resolutions.
   EXPECT_EQ(swept[0].configs.size(), 2u * (1u + others));
   EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}, graph), std::invalid_argument);
+  // The default preset measures `auto` (issue 12) beside the fixed configurations; its
+  // assignments apply and leave map, layers and rays automatic.
+  const auto defaults = makeBenchPlan(plate, {"default", {}, 0, 0}, graph);
+  const auto automatic = std::find_if(defaults[0].configs.begin(), defaults[0].configs.end(),
+                                      [](const BenchConfig& c) { return c.label == "hierarchical auto"; });
+  ASSERT_NE(automatic, defaults[0].configs.end());
+  Pipeline measured;
+  EXPECT_EQ(applySets(measured, automatic->sets), "");
+  for (const char* key : {"light.resolution", "light.layers", "trace.rays"})
+    EXPECT_TRUE(measured.param(key).automatic) << key;
 }
 
 // Oracles from the plate's geometry: ground at y = 0, light 1 x 1 at y = 3 facing down.

@@ -60,7 +60,10 @@ TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
   EXPECT_EQ(matchingResult(results, window), int(results.size()) - 1);
   ASSERT_EQ(window.set("trace.rays=4"), "");  // changed since: not measured
   EXPECT_EQ(matchingResult(results, window), -1);
-  ASSERT_EQ(window.set("trace.rays=2"), "");  // the preset's hierarchical 2x2 map 512
+  // The preset's hierarchical 2x2 map 512, two layers (the window's defaults are `auto`).
+  ASSERT_EQ(window.set("trace.rays=2"), "");
+  ASSERT_EQ(window.set("light.resolution=512"), "");
+  ASSERT_EQ(window.set("light.layers=two"), "");
   const int match = matchingResult(results, window);
   ASSERT_GE(match, 0);
   EXPECT_EQ(results[size_t(match)].params.at("trace.rays"), "2");

@@ -74,6 +74,21 @@ TEST(Cli, BadFlagsAndScenesExit2) {
   EXPECT_FALSE(fs::exists(never));
 }
 
+// A camera that sees nothing: the files are written, a loud message, exit status 2 (issue 12).
+TEST(Cli, ExportOfAnEmptyFrameExits2) {
+  const fs::path directory = fs::temp_directory_path() / "penumbra_cli_empty_frame";
+  fs::create_directories(directory);
+  std::ofstream(directory / "away.json") << R"({"objects": [{"ground": {"size": 4}}],
+    "light": {"center": [0, 4, 0], "forward": [0, -1, 0], "up": [0, 0, -1], "width": 1, "height": 1},
+    "camera": {"position": [0, 1, 0], "target": [0, 5, 0.1], "up": [0, 0, 1]}})";
+  const auto result = runPenumbra("export --scene " + (directory / "away.json").string() +
+                                   " --out " + (directory / "out").string() + " --width 32 --height 24");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("sees no geometry"), std::string::npos) << result.output;
+  EXPECT_TRUE(fs::exists(directory / "out" / "run.json"));
+  fs::remove_all(directory);
+}
+
 TEST(Window, ScreenshotUnderXvfbIsNotBlank) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no DISPLAY: run under xvfb-run (make test does)";
   const TempDirectory scratch("penumbra_window_smoke");

@@ -87,6 +87,8 @@ Agreement compareWithEmbree(const std::string& scene, int m, int width = kWidth,
                                                         /*stratified=*/false);
   const ReferenceTracer tracer(run.scene);
   const glm::vec3 centre = run.scene.light.center, forward = run.frame->light.forward;
+  const Bounds bounds = run.scene.bounds();  // raster4d's nearest depth (plane.w)
+  const float diagonal = glm::length(bounds.max - bounds.min);
   Agreement agreement;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -95,7 +97,8 @@ Agreement compareWithEmbree(const std::string& scene, int m, int width = kWidth,
       const float* n = &request.wsNormal[4 * i];
       if (p[3] <= 0) continue;
       const glm::vec3 position(p[0], p[1], p[2]), normal(n[0], n[1], n[2]);
-      if (glm::dot(position + request.epsilon * normal - centre, forward) <= request.epsilon) {
+      const float offset = referenceOriginOffset(request, position);
+      if (glm::dot(position + offset * normal - centre, forward) <= kRelativeEpsilon * diagonal) {
         ++agreement.behindLight;  // raster4d: unlit; not a question of bits
         continue;
       }
@@ -115,7 +118,7 @@ Agreement compareWithEmbree(const std::string& scene, int m, int width = kWidth,
           std::printf("  pixel (%d, %d) sample (row %d, column %d): occluded for %s; the closest "
                       "triangle's barycentric margin %.3g\n",
                       x, height - 1 - y, k / m, k % m, raster4d ? "raster4d" : "Embree",
-                      closestHitMargin(run.scene, glm::dvec3(position + request.epsilon * normal),
+                      closestHitMargin(run.scene, glm::dvec3(position + offset * normal),
                                        glm::dvec3(sample)));
         }
       }

@@ -19,7 +19,7 @@ constexpr int kEye = 48;
 // the stage runs with the same: constant bias, no Eq 3.2, no back-face early out.
 const std::vector<std::string> kSameModel = {
     "light.resolution=256", "light.adaptive_bias=false", "light.bias=0.01",
-    "trace.early_out_backface=false", "light.layers=two"};
+    "light.normal_offset=0", "trace.early_out_backface=false", "light.layers=two"};
 constexpr float kBias = 0.01f;
 
 struct Dense {

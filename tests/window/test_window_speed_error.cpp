@@ -88,7 +88,8 @@ TEST(SpeedErrorPanel, FrontierIsExactlyTheNonDominatedPoints) {
 
 TEST(SpeedErrorPanel, MatchesTheCurrentPipelineParameters) {
   const std::vector<BenchResult> points = {
-      resultOf({"composite.shadow=hard_shadow"}, 2, 0.2),
+      // The light's parameters matter to every method (fixed here: their default is auto).
+      resultOf({"composite.shadow=hard_shadow", "light.layers=two", "light.resolution=512"}, 2, 0.2),
       resultOf({"composite.shadow=filter", "trace.search=hierarchical", "light.layers=two",
                 "trace.rays=2", "light.resolution=512"}, 8, 0.05),
       resultOf({"composite.shadow=filter", "trace.search=hierarchical", "light.layers=two",

@@ -95,13 +95,22 @@ TEST(WindowUnits, SettingsRoundTripEveryParameterCameraLightAndEye) {
     Param& param = original.session.pipeline.param(key);
     param.value = param.type == Param::Type::Float ? param.min + (param.max - param.min) / 3.0
                                                    : param.max;  // exactly representable
+    param.automatic = false;  // `auto` (issue 12) is saved as "auto", not as the value
   }
   const json saved = settingsJson(original);
   UiState loaded;
   useCube(loaded);
   ASSERT_EQ(applySettingsJson(loaded, json::parse(saved.dump())), "");
-  for (const std::string& key : original.session.pipeline.paramKeys())
+  for (const std::string& key : original.session.pipeline.paramKeys()) {
     EXPECT_EQ(loaded.session.pipeline.param(key).value, original.session.pipeline.param(key).value) << key;
+    EXPECT_FALSE(loaded.session.pipeline.param(key).automatic) << key;
+  }
+  // And `auto` round-trips as itself.
+  original.session.pipeline.param("light.resolution").automatic = true;
+  UiState reloaded;
+  useCube(reloaded);
+  ASSERT_EQ(applySettingsJson(reloaded, json::parse(settingsJson(original).dump())), "");
+  EXPECT_TRUE(reloaded.session.pipeline.param("light.resolution").automatic);
   EXPECT_EQ(loaded.session.scene.camera.position, original.session.scene.camera.position);
   EXPECT_EQ(loaded.session.scene.light.width, 0.75f);
   EXPECT_FALSE(loaded.session.eye.fitView);

@@ -124,6 +124,16 @@ void drawCounters(const UiState& state) {
   for (const auto& [name, value] : state.session.frame->counters) ImGui::TextWrapped("%s  %.6g", name.c_str(), value);
 }
 
+// What the parameters set to `auto` chose for this scene and view, and why
+// (app/scene/auto_settings.h; issue 12). Whether there are reasons to show.
+bool hasAutoReasons(const UiState& state) {
+  return state.session.frame && !state.session.frame->autoSettings.reasons.empty();
+}
+void drawAutoReasons(const UiState& state) {
+  for (const std::string& reason : state.session.frame->autoSettings.reasons)
+    ImGui::TextWrapped("%s", reason.c_str());
+}
+
 // 4. The ray trace hook: the picked eye pixel, ray i of n x n.
 void drawRayTrace(UiState& state) {
   state.views.overlays.clear();
@@ -202,6 +212,9 @@ void drawInspector(UiState& state) {
   state.views.traceShown = ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen);
   if (state.views.traceShown) drawRayTrace(state);
   else state.views.overlays.clear();
+  if (hasAutoReasons(state) && ImGui::CollapsingHeader("auto: what this view needs",
+                                                       ImGuiTreeNodeFlags_DefaultOpen))
+    drawAutoReasons(state);
   if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) drawTimings(state);
   if (ImGui::CollapsingHeader("Counters", ImGuiTreeNodeFlags_DefaultOpen)) drawCounters(state);
 }

@@ -83,6 +83,10 @@ json settingsJson(const UiState& state) {
   for (const auto& stage : state.session.pipeline.stages())
     for (const Param& param : stage->params()) {
       const std::string key = stage->name() + "." + param.key;
+      if (param.automatic) {
+        parameters[key] = "auto";
+        continue;
+      }
       switch (param.type) {
         case Param::Type::Bool: parameters[key] = param.asBool(); break;
         case Param::Type::Int: parameters[key] = param.asInt(); break;

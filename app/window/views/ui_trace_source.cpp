@@ -1,4 +1,5 @@
 #include "window/views/ui_trace_source.h"
+#include "core/auto_params.h"
 
 #include <cstdio>
 
@@ -64,7 +65,7 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
   RayTraceInfo info;
   const Stage* recorder = recordingStage(frame.pipeline);
   if (!recorder) return info;
-  const int n = recorder->param("rays").asInt();
+  const int n = effectiveRays(recorder->param("rays"), frame.autoSettings);
   info.raysPerPixel = n * n;
   const int recordX = recorder->param("record_x").asInt();
   const int recordY = recorder->param("record_y").asInt();

@@ -1,0 +1,226 @@
+#include "scene/auto_settings.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+#include <memory>
+#include <mutex>
+
+namespace {
+
+// Every triangle of the scene (receivers too: the penumbra falls on them), with which
+// geometry ids are occluders.
+struct SceneRays {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<bool> occluder;  // by geometry id
+  explicit SceneRays(const Scene& source) {
+    device = rtcNewDevice(nullptr);
+    scene = rtcNewScene(device);
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    for (const SceneObject& object : source.objects) {
+      const Mesh& mesh = object.mesh;
+      RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+          std::max<size_t>(mesh.positions.size(), 1)));
+      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+          geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+          mesh.triangleCount()));
+      for (size_t i = 0; i < mesh.positions.size(); ++i)
+        for (int c = 0; c < 3; ++c) vertices[3 * i + c] = mesh.positions[i][c];
+      for (size_t i = 0; i < mesh.indices.size(); ++i) indices[i] = mesh.indices[i];
+      rtcCommitGeometry(geometry);
+      occluder.push_back(!object.receiverOnly);
+      rtcAttachGeometry(scene, geometry);  // ids 0, 1, ... in order
+      rtcReleaseGeometry(geometry);
+    }
+    rtcCommitScene(scene);
+  }
+  ~SceneRays() {
+    rtcReleaseScene(scene);
+    rtcReleaseDevice(device);
+  }
+  // Nearest hit along origin + t direction, t in (tNear, inf): t (inf: none), geometry id.
+  float hit(const glm::vec3& origin, const glm::vec3& direction, float tNear, unsigned& geometry) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit query{};
+    query.ray.org_x = origin.x; query.ray.org_y = origin.y; query.ray.org_z = origin.z;
+    query.ray.dir_x = direction.x; query.ray.dir_y = direction.y; query.ray.dir_z = direction.z;
+    query.ray.tnear = tNear;
+    query.ray.tfar = std::numeric_limits<float>::infinity();
+    query.ray.mask = 0xffffffffu;
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &query);
+    geometry = query.hit.geomID;
+    return geometry == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
+                                               : query.ray.tfar;
+  }
+};
+
+double percentile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0;
+  const size_t k = std::min(values.size() - 1, size_t(fraction * double(values.size())));
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+  return values[k];
+}
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0) {
+  char text[256];
+  std::snprintf(text, sizeof text, pattern, a, b, c);
+  return text;
+}
+
+AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame& light,
+                     int eyeWidth, int eyeHeight) {
+  AutoSettings out;
+  const Camera& camera = scene.camera;
+  const glm::mat4 viewFromWorld = glm::lookAt(camera.position, camera.target, camera.up);
+  const float tanY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
+  const float tanX = tanY * float(eyeWidth) / float(std::max(eyeHeight, 1));
+  const float pixelAngle = 2.0f * tanY / float(std::max(eyeHeight, 1));
+  const float lightSide = std::min(scene.light.width, scene.light.height);
+  const float tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
+  size_t triangles = 0;
+  for (const SceneObject& object : scene.objects)
+    if (!object.receiverOnly) triangles += object.mesh.triangleCount();
+  const size_t stride = std::max<size_t>(1, 3 * triangles / kMaxProbes);
+
+  // 1-2. Probes along the occluders' edges (t = 0, 1/4, 1/2, 3/4 of each edge).
+  std::vector<double> widthsWorld, texelsPerResolution, widthsPixels;
+  size_t seen = 0;
+  for (unsigned id = 0; id < scene.objects.size(); ++id) {
+    const SceneObject& object = scene.objects[id];
+    if (object.receiverOnly) continue;
+    const Mesh& mesh = object.mesh;
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      if (seen++ % stride != 0) continue;
+      for (int e = 0; e < 3; ++e)
+        for (float along : {0.0f, 0.25f, 0.5f, 0.75f}) {
+          const glm::vec3 a = mesh.positions[mesh.indices[t + e]];
+          const glm::vec3 b = mesh.positions[mesh.indices[t + (e + 1) % 3]];
+          const glm::vec3 q = a + along * (b - a);
+          const glm::vec3 fromLight = q - scene.light.center;
+          const float occluderDepth = glm::dot(fromLight, light.forward);
+          if (occluderDepth <= 0) continue;  // not in front of the light
+          const glm::vec3 direction = glm::normalize(fromLight);
+          // The next surface past the occluder along the light's ray, and the occluder
+          // surfaces the whole ray crosses from the light (depth complexity).
+          const float epsilon = 1e-4f * std::max(1.0f, glm::length(q));
+          unsigned geometry;
+          const float t1 = rays.hit(q, direction, epsilon, geometry);
+          if (!std::isfinite(t1)) continue;
+          const glm::vec3 receiver = q + t1 * direction;
+          int crossings = 0;
+          float tFrom = 0;
+          for (int k = 0; k < 8; ++k) {
+            unsigned g;
+            const float tk = rays.hit(scene.light.center, direction, tFrom, g);
+            if (!std::isfinite(tk) || !rays.occluder[g]) break;
+            ++crossings;
+            tFrom = tk + 1e-4f * std::max(1.0f, tk);
+          }
+          out.depthComplexity = std::max(out.depthComplexity, crossings);
+          // 2. Only what the camera sees.
+          const glm::vec3 view = glm::vec3(viewFromWorld * glm::vec4(receiver, 1));
+          const float eyeDepth = -view.z;
+          if (eyeDepth <= 0 || std::fabs(view.x) > tanX * eyeDepth ||
+              std::fabs(view.y) > tanY * eyeDepth)
+            continue;
+          const float gap = glm::dot(receiver - q, light.forward);
+          const double width = double(lightSide) * gap / occluderDepth;
+          const float receiverZ = glm::dot(receiver - light.wsProjectionPoint, light.forward);
+          widthsWorld.push_back(width);
+          texelsPerResolution.push_back(width / (2.0 * receiverZ * tanHalfFov));
+          widthsPixels.push_back(width / (glm::length(receiver - camera.position) * pixelAngle));
+        }
+    }
+  }
+  out.probes = int(widthsWorld.size());
+  if (widthsWorld.empty()) {
+    out.reasons.push_back("no occluder's shadow falls in view: fixed defaults (512, two layers, 2x2)");
+    return out;
+  }
+  // 3. Resolution.
+  const double perResolution = percentile(texelsPerResolution, 0.02);
+  out.smallestPenumbraWorld = percentile(widthsWorld, 0.02);
+  const double needed = kPenumbraTexels / std::max(perResolution, 1e-9);
+  out.resolution = int(std::clamp(std::ceil(needed / 128.0) * 128.0, 256.0, 2048.0));
+  out.smallestPenumbraTexels = perResolution * out.resolution;
+  out.reasons.push_back(format(
+      "map %.0f: the smallest penumbra in view is %.3g world units wide, %.2g texels at this "
+      "resolution",
+      out.resolution, out.smallestPenumbraWorld, out.smallestPenumbraTexels));
+  if (needed > 2048.0)
+    out.reasons.push_back(format("the %.0f texels that would give it %.0f texels exceed the "
+                                 "2048 limit: expect its shadow too sharp or too bright",
+                                 needed, kPenumbraTexels));
+  // 4. Rays.
+  out.smallestPenumbraPixels = percentile(widthsPixels, 0.02);
+  const double sigma = std::min(2.0, 0.5 * out.smallestPenumbraPixels);
+  const double filterPixels = std::max(1.0, M_PI * sigma * sigma);
+  out.raysPerSide = 2;
+  while (out.raysPerSide < 8 && out.raysPerSide * out.raysPerSide * filterPixels < kEffectiveSamples)
+    ++out.raysPerSide;
+  out.reasons.push_back(
+      format("rays %.0fx%.0f: that penumbra is %.2g pixels wide", out.raysPerSide,
+             out.raysPerSide, out.smallestPenumbraPixels) +
+      format(", the filter averages about %.2g pixels there, and %.0f rays per pixel give at "
+             "least 24 samples",
+             filterPixels, out.raysPerSide * out.raysPerSide));
+  // 5. Layers.
+  out.layers = out.depthComplexity > 2 ? 3 : 2;
+  out.reasons.push_back(format("layers %.0f: at most %.0f occluder surfaces on one light ray",
+                               out.layers, out.depthComplexity));
+  return out;
+}
+
+}  // namespace
+
+AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
+                                int eyeHeight) {
+  // One cached answer and one Embree scene, for the last scene seen (the window and the
+  // tests run one scene at a time).
+  struct Cache {
+    std::uint64_t geometry = 0;
+    std::unique_ptr<SceneRays> rays;
+    std::vector<float> key;
+    AutoSettings settings;
+  };
+  static std::mutex mutex;
+  static Cache cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  // FNV-1a over every position, index and flag: the geometry's identity.
+  std::uint64_t geometry = 1469598103934665603ull;
+  auto mix = [&](const void* data, size_t bytes) {
+    for (size_t i = 0; i < bytes; ++i)
+      geometry = (geometry ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
+  };
+  for (const SceneObject& object : scene.objects) {
+    mix(object.mesh.positions.data(), object.mesh.positions.size() * sizeof(glm::vec3));
+    mix(object.mesh.indices.data(), object.mesh.indices.size() * sizeof(std::uint32_t));
+    mix(&object.receiverOnly, sizeof object.receiverOnly);
+  }
+  if (!cache.rays || cache.geometry != geometry) {
+    cache.rays = std::make_unique<SceneRays>(scene);
+    cache.geometry = geometry;
+    cache.key.clear();
+  }
+  const Camera& c = scene.camera;
+  const AreaLight& l = scene.light;
+  std::vector<float> key = {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
+                            c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDegrees, l.center.x,
+                            l.center.y, l.center.z, l.forward.x, l.forward.y, l.forward.z,
+                            l.width, l.height, light.tanHalfFovX, float(eyeWidth), float(eyeHeight)};
+  if (key != cache.key) {
+    cache.settings = analyze(scene, *cache.rays, light, eyeWidth, eyeHeight);
+    cache.key = key;
+  }
+  return cache.settings;
+}

@@ -1,0 +1,55 @@
+// `auto`: model only what the scene needs (issue 12). From the scene and the current view,
+// on the CPU, before any GL work: the shadow-map resolution, the number of depth layers and
+// the rays per pixel, each with the measurement that chose it.
+//
+// 1. Probes: points along every occluder edge (at most kMaxProbes, spread evenly over the
+//    triangles), each followed along the light's rays from the light centre past the occluder
+//    to the next surface (Embree, every object, receivers included): that surface is where the
+//    penumbra of this edge falls.
+// 2. Penumbra width at that receiver (parallel planes, as PCSS): w = light's smaller side x
+//    (gap / distance from the light plane to the occluder), gaps measured along the light's
+//    axis. Only probes whose receiver lies in the camera's view count (the view decides).
+// 3. Resolution: the smallest penumbra (the 2nd percentile of the probes, robust to a
+//    single sliver) should span kPenumbraTexels (6) texels of the map at the receiver's depth:
+//    resolution = kPenumbraTexels x 2 z tan(fov/2) / w, rounded up to a multiple of 128, in
+//    [256, 2048]. Where 2048 is not enough the reason says so (the limit of depth maps,
+//    thesis §4.1, Atty 2006 §4.2).
+// 4. Rays: the filter cannot blur wider than the penumbra (filter.penumbra_scale), so where
+//    the smallest penumbra is a few pixels wide the noise must go with more rays. Effective
+//    samples = n^2 x the filter's pixel count pi sigma^2, sigma = min(2, 0.5 x width in
+//    pixels); n is the smallest n >= 2 with at least kEffectiveSamples (24), at most 8.
+// Rasterizing the occluders rounds their outlines to texels, which shifts a penumbra by up
+// to half a texel: with 6 texels per penumbra that is a bias of up to 8% across it.
+// 5. Layers: the depth complexity along the probes' light rays (occluder surfaces crossed
+//    between the light and the receiver). Two layers model one occluder exactly (near and far
+//    bound it); with more than two crossings the space between occluders is solid for two
+//    layers, and the third (the eye's depth, §3.4) frees what the eye sees of it.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/light_frame.h"
+#include "scene/scene.h"
+
+struct AutoSettings {
+  int resolution = 512;
+  int layers = 2;
+  int raysPerSide = 2;
+  // The measurements behind the choice.
+  int probes = 0;                       // probes whose penumbra falls in view
+  double smallestPenumbraWorld = 0;     // 2nd percentile, world units at the receiver
+  double smallestPenumbraTexels = 0;    // the same in texels of the chosen map
+  double smallestPenumbraPixels = 0;    // and in eye pixels
+  int depthComplexity = 0;              // most occluder surfaces on one probe's light ray
+  std::vector<std::string> reasons;     // one sentence per choice
+};
+
+inline constexpr double kPenumbraTexels = 6.0;
+inline constexpr double kEffectiveSamples = 24.0;
+inline constexpr int kMaxProbes = 20000;
+
+// The choice for this scene, light frame (Eq 3.1) and view (eye size in pixels). Cached:
+// the same scene (same object), light, camera and size return the stored answer; the
+// Embree scene is rebuilt only when the scene's geometry changes.
+AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
+                                int eyeHeight);

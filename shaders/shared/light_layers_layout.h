@@ -1,0 +1,5 @@
+// Units and locations of light_layers_risers.comp (C++: stages/shared_inputs/light_layers.cpp).
+#define RISERS_NEAR_UNIT 0
+#define RISERS_FAR_UNIT 1
+#define RISERS_FAR_IMAGE 0
+#define RISERS_CLOSE_LOCATION 0
