@@ -6,10 +6,9 @@
 #include <map>
 #include <sstream>
 
+#include "bench/bench_session.h"
 #include "core/pipeline.h"
-#include "gl/gl_context.h"
 #include "io/image_export.h"
-#include "scene/scene_builtin.h"
 
 namespace {
 
@@ -41,25 +40,15 @@ std::string format(const char* pattern, double value) {
 }  // namespace
 
 int runBenchCompare(const BenchCompareOptions& options) {
-  std::string error;
-  auto context = GlContext::createHeadless(error);
-  if (!context) {
-    std::fprintf(stderr, "penumbra bench-compare: %s\n", error.c_str());
-    return 1;
-  }
   if (options.sides.empty()) {
     std::fprintf(stderr, "penumbra bench-compare: give at least one --side label:key=value;...\n");
     return 2;
   }
-  std::vector<std::string> warnings;
-  Scene scene;
-  try {
-    scene = loadScene(options.scene, warnings);
-  } catch (const std::exception& failure) {
-    std::fprintf(stderr, "penumbra bench-compare: %s\n", failure.what());
-    return 2;
-  }
-  GpuScene gpuScene(scene);
+  BenchSession session;
+  if (const int status = openBenchSession("bench-compare", options.scene, session); status != 0)
+    return status;
+  const Scene& scene = session.scene;
+  GpuScene& gpuScene = *session.gpuScene;
   // 1. One pipeline per side: the common sets, then the side's own.
   std::vector<Side> sides(options.sides.size());
   for (size_t s = 0; s < sides.size(); ++s) {
@@ -117,7 +106,7 @@ int runBenchCompare(const BenchCompareOptions& options) {
   for (const auto& [stage, values] : sides[0].stageMs) stages.push_back(stage);
   std::ostringstream table;
   table << "## " << (options.title.empty() ? "bench-compare" : options.title) << "\n\n"
-        << "Machine: " << context->renderer() << ". Scene " << options.scene << ", eye "
+        << "Machine: " << session.context->renderer() << ". Scene " << options.scene << ", eye "
         << options.width << "x" << options.height << ", median of " << options.frames
         << " frames after " << options.warmup << " warm-up, sides alternating frame by frame ("
         << Pipeline().timingMethod() << "). Common sets:";

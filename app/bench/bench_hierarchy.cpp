@@ -5,10 +5,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "bench/bench_session.h"
 #include "core/pipeline.h"
-#include "gl/gl_context.h"
 #include "io/image_export.h"
-#include "scene/scene_builtin.h"
 
 namespace {
 
@@ -29,23 +28,13 @@ struct Side {
 }  // namespace
 
 int runBenchHierarchy(const BenchHierarchyOptions& options) {
-  std::string error;
-  auto context = GlContext::createHeadless(error);
-  if (!context) {
-    std::fprintf(stderr, "penumbra bench-hierarchy: %s\n", error.c_str());
-    return 1;
-  }
-  std::vector<std::string> warnings;
-  Scene scene;
-  try {
-    scene = loadScene(options.scene, warnings);
-  } catch (const std::exception& failure) {
-    std::fprintf(stderr, "penumbra bench-hierarchy: %s\n", failure.what());
-    return 2;
-  }
-  GpuScene gpuScene(scene);
+  BenchSession session;
+  if (const int status = openBenchSession("bench-hierarchy", options.scene, session); status != 0)
+    return status;
+  const Scene& scene = session.scene;
+  GpuScene& gpuScene = *session.gpuScene;
   std::ostringstream table;
-  table << "# N-buffer vs min-max mipmap\n\nMachine: " << context->renderer() << ". Scene "
+  table << "# N-buffer vs min-max mipmap\n\nMachine: " << session.context->renderer() << ". Scene "
         << options.scene << ", eye " << options.width << "x" << options.height
         << ", trace: hierarchical search, median of " << options.frames << " frames after "
         << options.warmup << " warm-up frames, the two hierarchies alternating frame by frame "

@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "figures/cairo_file.h"
+
 namespace {
 
 using Color = std::array<double, 3>;
@@ -158,7 +160,7 @@ Layout layout(const PlotSpec& spec) {
   return l;
 }
 
-void draw(cairo_t* cr, const PlotSpec& spec, const Layout& l) {
+void drawPlot(cairo_t* cr, const PlotSpec& spec, const Layout& l) {
   const double W = l.width, H = l.height;
   const double x0 = 96, x1 = spec.width - 24, y0 = H - 78, y1 = 56;
   cairo_set_source_rgb(cr, 1, 1, 1);
@@ -264,29 +266,6 @@ void draw(cairo_t* cr, const PlotSpec& spec, const Layout& l) {
   }
 }
 
-// Draws onto a surface made by `make` for the temporary path, checks cairo's status, and
-// renames the file into place.
-void writeOne(const std::filesystem::path& path, const Layout& l, const PlotSpec& spec,
-              const std::function<cairo_surface_t*(const char*)>& make, bool png) {
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  cairo_surface_t* surface = make(temporary.c_str());
-  cairo_t* cr = cairo_create(surface);
-  draw(cr, spec, l);
-  cairo_status_t status = cairo_status(cr);
-  cairo_destroy(cr);
-  if (png && status == CAIRO_STATUS_SUCCESS)
-    status = cairo_surface_write_to_png(surface, temporary.c_str());
-  cairo_surface_finish(surface);
-  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot write " + path.string() + ": " + cairo_status_to_string(status));
-  }
-  std::filesystem::rename(temporary, path);
-}
-
 }  // namespace
 
 std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, const PlotSpec& spec) {
@@ -294,14 +273,15 @@ std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, 
   const auto png = std::filesystem::path(stem.string() + ".png");
   const auto svg = std::filesystem::path(stem.string() + ".svg");
   const auto pdf = std::filesystem::path(stem.string() + ".pdf");
-  writeOne(png, l, spec, [&](const char*) {
+  const auto draw = [&](cairo_t* cr) { drawPlot(cr, spec, l); };
+  writeCairoFile(png, [&](const char*) {
     return cairo_image_surface_create(CAIRO_FORMAT_RGB24, int(l.width), int(l.height));
-  }, true);
-  writeOne(svg, l, spec, [&](const char* file) {
+  }, draw, true);
+  writeCairoFile(svg, [&](const char* file) {
     return cairo_svg_surface_create(file, l.width, l.height);
-  }, false);
-  writeOne(pdf, l, spec, [&](const char* file) {
+  }, draw, false);
+  writeCairoFile(pdf, [&](const char* file) {
     return cairo_pdf_surface_create(file, l.width, l.height);
-  }, false);
+  }, draw, false);
   return {png, svg, pdf};
 }

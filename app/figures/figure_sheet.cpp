@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "figures/cairo_file.h"
 #include "figures/cairo_text.h"
 
 namespace fs = std::filesystem;
@@ -63,28 +64,6 @@ void drawSheet(cairo_t* cr, const std::string& title, const std::vector<FigurePa
   }
 }
 
-// 2. One file: drawn onto a surface for a temporary name, checked, renamed into place.
-void writeOne(const fs::path& path, const std::function<cairo_surface_t*(const char*)>& make,
-              const std::function<void(cairo_t*)>& draw, bool png) {
-  const fs::path temporary = path.string() + ".tmp";
-  cairo_surface_t* surface = make(temporary.c_str());
-  cairo_t* cr = cairo_create(surface);
-  draw(cr);
-  cairo_status_t status = cairo_status(cr);
-  cairo_destroy(cr);
-  if (png && status == CAIRO_STATUS_SUCCESS)
-    status = cairo_surface_write_to_png(surface, temporary.c_str());
-  cairo_surface_finish(surface);
-  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error("cannot write " + path.string() + ": " + cairo_status_to_string(status));
-  }
-  fs::rename(temporary, path);
-}
-
 }  // namespace
 
 SheetSize figureSheetSize(int panelCount) {
@@ -110,10 +89,10 @@ std::vector<fs::path> writeFigureSheet(const fs::path& stem, const std::string& 
   const SheetSize size = figureSheetSize(int(panels.size()));
   const auto draw = [&](cairo_t* cr) { drawSheet(cr, title, panels, images); };
   const fs::path png = stem.string() + ".png", pdf = stem.string() + ".pdf";
-  writeOne(png, [&](const char*) {
+  writeCairoFile(png, [&](const char*) {
     return cairo_image_surface_create(CAIRO_FORMAT_RGB24, size.width, size.height);
   }, draw, true);
-  writeOne(pdf, [&](const char* file) {
+  writeCairoFile(pdf, [&](const char* file) {
     return cairo_pdf_surface_create(file, size.width, size.height);
   }, draw, false);
   return {png, pdf};

@@ -100,9 +100,10 @@ public:
     frame.counters["auto.layers"] = chosen.layers;
     frame.counters["auto.rays_per_side"] = chosen.raysPerSide;
     frame.counters["auto.probes_in_view"] = chosen.probes;
-    frame.counters["auto.smallest_penumbra_world"] = chosen.smallestPenumbraWorld;
-    frame.counters["auto.smallest_penumbra_texels"] = chosen.smallestPenumbraTexels;
-    frame.counters["auto.smallest_penumbra_pixels"] = chosen.smallestPenumbraPixels;
+    // The smallest penumbra in view (its 2nd percentile), in world units, texels and pixels.
+    frame.counters["auto.penumbra_world"] = chosen.smallestPenumbraWorld;
+    frame.counters["auto.penumbra_texels"] = chosen.smallestPenumbraTexels;
+    frame.counters["auto.penumbra_pixels"] = chosen.smallestPenumbraPixels;
     frame.counters["auto.depth_complexity"] = chosen.depthComplexity;
     const unsigned size = unsigned(frame.light.mapSize);
 

@@ -212,7 +212,7 @@ void drawInspector(UiState& state) {
   state.views.traceShown = ImGui::CollapsingHeader("Ray trace", ImGuiTreeNodeFlags_DefaultOpen);
   if (state.views.traceShown) drawRayTrace(state);
   else state.views.overlays.clear();
-  if (hasAutoReasons(state) && ImGui::CollapsingHeader("auto: what this view needs",
+  if (hasAutoReasons(state) && ImGui::CollapsingHeader("auto: the choices",
                                                        ImGuiTreeNodeFlags_DefaultOpen))
     drawAutoReasons(state);
   if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) drawTimings(state);
