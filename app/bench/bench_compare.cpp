@@ -6,17 +6,12 @@
 #include <map>
 #include <sstream>
 
+#include "bench/bench_measure.h"
 #include "bench/bench_session.h"
 #include "core/pipeline.h"
 #include "io/image_export.h"
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n == 0 ? 0 : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 // One configuration: its pipeline, frame and per-frame measurements.
 struct Side {

@@ -4,17 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bench/bench_measure.h"  // median
+
 namespace {
 
 constexpr size_t kFrameHistory = 30;  // UI frames in the fps readout
 constexpr double kPreviewMs = 80;     // target time of a run while the camera moves
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const size_t middle = values.size() / 2;
-  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
 
 // FNV-1a over the bytes of trivially copyable values (floats of the camera and light).
 void mix(std::uint64_t& hash, const void* data, size_t bytes) {
