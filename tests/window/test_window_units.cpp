@@ -274,7 +274,7 @@ TEST(WindowUnits, InteractiveLessonWaitsForNextBeforeEachSayAfterTheFirst) {
       {"say": "two"}, {"say": "three"}])";
   UiState state;
   useCube(state);
-  ScriptRunner runner(parsed(lesson), ScriptOptions{true, ""});
+  ScriptRunner runner(parsed(lesson), ScriptOptions{true, "", ""});
   for (int i = 0; i < 6; ++i) EXPECT_EQ(runner.step(state), ScriptRunner::Step::Running);
   EXPECT_EQ(state.lesson.title, "T");
   EXPECT_EQ(state.lesson.text, "one");  // the student has not asked for more
@@ -295,7 +295,7 @@ TEST(WindowUnits, InteractiveLessonWaitsForNextBeforeEachSayAfterTheFirst) {
   // Played through (a script, or `penumbra lesson --export`): nobody waits.
   UiState through;
   useCube(through);
-  ScriptRunner all(parsed(lesson), ScriptOptions{false, ""});
+  ScriptRunner all(parsed(lesson), ScriptOptions{false, "", ""});
   ScriptRunner::Step step = ScriptRunner::Step::Running;
   for (int i = 0; i < 20 && step == ScriptRunner::Step::Running; ++i) step = all.step(through);
   EXPECT_EQ(step, ScriptRunner::Step::Done);
@@ -309,7 +309,7 @@ TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
   for (const std::string& override : {std::string(), std::string("/abs/override")}) {
     UiState state;
     useCube(state);
-    ScriptRunner runner(parsed(script), ScriptOptions{false, override});
+    ScriptRunner runner(parsed(script), ScriptOptions{false, override, ""});
     std::vector<std::string> requested;
     for (int i = 0; i < 12 && runner.step(state) == ScriptRunner::Step::Running; ++i)
       if (!state.script.screenshotRequest.empty()) {

@@ -212,7 +212,8 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
     text += value;
   }
   // Image coordinates (row 0 at the top, as the PNGs and `penumbra trace --pixel`).
-  const std::string where = "(" + std::to_string(at->x) + ", " + std::to_string(size.y - 1 - at->y) + ")";
+  std::string where = "(";  // appended, not "(" + ...: GCC 12's -Wrestrict false positive (bug 105329)
+  where.append(std::to_string(at->x)).append(", ").append(std::to_string(size.y - 1 - at->y)).append(")");
   ImGui::TextUnformatted(fitting({what + (" " + where) + ": " + text, where + " " + text, text}).c_str());
 }
 
