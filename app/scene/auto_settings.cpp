@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
@@ -196,16 +197,21 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
   static std::mutex mutex;
   static Cache cache;
   const std::lock_guard<std::mutex> lock(mutex);
-  // FNV-1a over every position, index and flag: the geometry's identity.
+  // FNV-1a over every position, index and flag, a 32-bit word at a time (this runs on every
+  // light run: a quarter of the steps of a byte-wise hash on the dragon's 1.6 MB).
   std::uint64_t geometry = 1469598103934665603ull;
-  auto mix = [&](const void* data, size_t bytes) {
-    for (size_t i = 0; i < bytes; ++i)
-      geometry = (geometry ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
+  auto mix = [&](const void* data, size_t words) {
+    for (size_t i = 0; i < words; ++i) {
+      std::uint32_t word;
+      std::memcpy(&word, static_cast<const char*>(data) + 4 * i, 4);
+      geometry = (geometry ^ word) * 1099511628211ull;
+    }
   };
   for (const SceneObject& object : scene.objects) {
-    mix(object.mesh.positions.data(), object.mesh.positions.size() * sizeof(glm::vec3));
-    mix(object.mesh.indices.data(), object.mesh.indices.size() * sizeof(std::uint32_t));
-    mix(&object.receiverOnly, sizeof object.receiverOnly);
+    mix(object.mesh.positions.data(), object.mesh.positions.size() * 3);
+    mix(object.mesh.indices.data(), object.mesh.indices.size());
+    const std::uint32_t receiverOnly = object.receiverOnly;
+    mix(&receiverOnly, 1);
   }
   if (!cache.rays || cache.geometry != geometry) {
     cache.rays = std::make_unique<SceneRays>(scene);
