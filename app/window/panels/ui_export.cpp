@@ -27,6 +27,18 @@ std::string sanitized(std::string text) {
   return text;
 }
 
+// The rows of `crop` (image rows, top first) out of GL-ordered values (bottom row first).
+std::vector<float> cropped(const std::vector<float>& values, int width, int height, int channels,
+                           const ImageRect& crop) {
+  std::vector<float> out;
+  out.reserve(size_t(crop.width) * crop.height * channels);
+  for (int glRow = height - crop.y - crop.height; glRow < height - crop.y; ++glRow) {
+    const auto rowStart = values.begin() + (long(glRow) * width + crop.x) * channels;
+    out.insert(out.end(), rowStart, rowStart + long(crop.width) * channels);
+  }
+  return out;
+}
+
 bool endsWith(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -59,7 +71,7 @@ std::string exportStem(const UiState& state, const std::string& stageDotOutput, 
 
 // 2. One view: the texture's current level, raw or through the view's own mapping.
 std::string exportViewFiles(const UiState& state, const ViewPanel& view, const std::string& target,
-                            ExportKind kind, bool annotate) {
+                            ExportKind kind, bool annotate, const ImageRect& crop) {
   if (!state.session.runError.empty()) return refusal(state);
   std::string problem;
   const GlTexture* shown = shownTexture(state, view, &problem);
@@ -82,23 +94,33 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
       if (kind != ExportKind::Exr) png = directory / (stem + ".png");
       if (kind != ExportKind::Png) exr = directory / (stem + ".exr");
     }
-    const std::vector<float> values = texture.readFloats(layer);
+    std::vector<float> values = texture.readFloats(layer);
+    int width = texture.width(), height = texture.height();
+    if (!crop.empty()) {
+      if (crop.x < 0 || crop.y < 0 || crop.x + crop.width > width || crop.y + crop.height > height)
+        return "export: the crop [" + std::to_string(crop.x) + ", " + std::to_string(crop.y) + ", " +
+               std::to_string(crop.width) + ", " + std::to_string(crop.height) + "] reaches past the " +
+               std::to_string(width) + "x" + std::to_string(height) + " image";
+      values = cropped(values, width, height, texture.channelCount(), crop);
+      width = crop.width;
+      height = crop.height;
+    }
     std::string written;
     for (const fs::path& path : {png, exr}) {
       if (path.empty()) continue;
       if (path.has_parent_path()) fs::create_directories(path.parent_path());
       if (path == png) {
-        std::vector<std::uint8_t> rgb = displayRgb8ForView(
-            values, texture.width(), texture.height(), texture.channelCount(), view.settings);
-        int height = texture.height();
+        std::vector<std::uint8_t> rgb = displayRgb8ForView(values, width, height,
+                                                           texture.channelCount(), view.settings);
+        int pngHeight = height;
         if (annotate) {
           const Annotation annotation = viewAnnotation(state, view, values, texture.channelCount());
-          rgb = annotateImage(rgb, texture.width(), texture.height(), annotation);
-          height += annotationHeight(annotation, texture.width());
+          rgb = annotateImage(rgb, width, height, annotation);
+          pngHeight += annotationHeight(annotation, width);
         }
-        writePng(png, rgb, texture.width(), height);
+        writePng(png, rgb, width, pngHeight);
       } else
-        writeExr(exr, values, texture.width(), texture.height(), shownChannelNames(state, view));
+        writeExr(exr, values, width, height, shownChannelNames(state, view));
       written += (written.empty() ? "" : ", ") + fs::absolute(path).string();
     }
     return "wrote " + written;

@@ -8,6 +8,7 @@
 #include "io/image_export.h"
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_export_annotation.h"
+#include "window/script/ui_lesson_crop.h"
 #include "window/ui_state.h"
 
 namespace fs = std::filesystem;
@@ -57,8 +58,9 @@ std::string formatted(double value, const char* format) {
   return text;
 }
 
-// "ms:a+b" -> the sum of the stages' medians; "ms"; "counter".
-std::string number(const UiState& state, const std::string& name, std::string& problem) {
+// "ms:a+b" -> the sum of the stages' medians; "ms"; "crop.rmse" (ui_lesson_crop.h); "counter".
+std::string number(const UiState& state, const ScriptContext& context, const std::string& name,
+                   std::string& problem) {
   if (name == "ms") return formatted(state.session.medianPipelineMs(), "%.1f");
   if (name.rfind("ms:", 0) == 0) {
     double total = 0;
@@ -72,6 +74,11 @@ std::string number(const UiState& state, const std::string& name, std::string& p
       total += ms;
     }
     return formatted(total, "%.1f");
+  }
+  if (isCropNumber(name)) {
+    double value = 0;
+    if (!cropNumber(state, context.crop, name, value, problem)) return "";
+    return value == std::floor(value) ? formatted(value, "%.0f") : formatted(value, "%.4g");
   }
   if (state.session.frame) {
     const auto& counters = state.session.frame->counters;
@@ -100,7 +107,7 @@ std::string fillNumbers(const UiState& state, const ScriptContext& context, cons
     out += text.substr(i, open - i);
     const std::string name = text.substr(open + 1, close - open - 1);
     const auto kept = context.kept.find(name);
-    out += kept != context.kept.end() ? kept->second : number(state, name, problem);
+    out += kept != context.kept.end() ? kept->second : number(state, context, name, problem);
     if (!problem.empty()) return "";
     i = close + 1;
   }
@@ -111,7 +118,7 @@ std::string keepNumbers(const UiState& state, const json& a, ScriptContext& cont
   for (const auto& [name, what] : a.items()) {
     if (!what.is_string()) return "\"" + name + "\": expected a number's name such as \"error.rmse\"";
     std::string problem;
-    const std::string value = number(state, what.get<std::string>(), problem);
+    const std::string value = number(state, context, what.get<std::string>(), problem);
     if (!problem.empty()) return problem;
     context.kept[name] = value;
   }
@@ -128,7 +135,8 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
     caption = fillNumbers(state, context, a["caption"].get<std::string>(), problem);
     if (!problem.empty()) return problem;
   }
-  state.status = exportViewFiles(state, view, context.resolved(file), ExportKind::Both, annotate);
+  state.status = exportViewFiles(state, view, context.resolved(file), ExportKind::Both, annotate,
+                                 context.crop);
   std::printf("penumbra: %s\n", state.status.c_str());
   if (state.status.rfind("wrote ", 0) != 0) return state.status;
   // "wrote /abs/x.png, /abs/x.exr": the PNG is the panel.

@@ -6,6 +6,7 @@
 
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_reference_progress.h"
+#include "window/script/ui_lesson_crop.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_camera.h"
@@ -169,6 +170,11 @@ std::vector<ScriptActionSpec> makeTable() {
       {"annotate", kBool,
        [](S&, const json& a, C& c) {
          c.annotate = a.get<bool>();
+         return std::string();
+       }},
+      {"crop", checkCrop,
+       [](S&, const json& a, C& c) {
+         c.crop = cropFromJson(a);
          return std::string();
        }},
       {"export_all", kString, [](S& s, const json& a, C& c) { return exportAll(s, a, c); }},

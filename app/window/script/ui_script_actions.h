@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "figures/figure_sheet.h"
+#include "window/panels/ui_export.h"
 
 class UiState;
 
@@ -21,6 +22,7 @@ struct ScriptContext {
   bool interactive = false;       // a lesson played by a student
   int says = 0, saysSeen = 0;     // the lesson's "say" actions: in all, and so far
   bool annotate = false;          // "annotate": exported PNGs carry a colour bar and caption
+  ImageRect crop;                 // "crop": exported panels and {crop.*} numbers (ui_lesson_crop.h)
   // A lesson's record (ui_lesson_export.h): its title, what it said (numbers filled in) and
   // the panels it exported, for the figure sheet and lesson.md.
   std::string lessonTitle;
