@@ -133,3 +133,21 @@ std::string timingText(const StageTime& time) {
                 time.milliseconds, time.median, time.runs);
   return text;
 }
+
+std::string comboPreview(const std::string& name, float comboWidth) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float room = comboWidth - ImGui::GetFrameHeight() - 2 * style.FramePadding.x;
+  const auto fits = [&](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x <= room; };
+  if (fits(name)) return name;
+  const size_t dot = name.find('.');
+  if (dot != std::string::npos)
+    for (size_t keep = dot; keep-- > 1;) {  // at least one letter of the stage
+      const std::string text = name.substr(0, keep) + "..." + name.substr(dot + 1);
+      if (fits(text)) return text;
+    }
+  for (size_t keep = name.size(); keep-- > 1;) {
+    const std::string text = name.substr(0, keep) + "...";
+    if (fits(text)) return text;
+  }
+  return "...";
+}

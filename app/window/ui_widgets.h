@@ -27,6 +27,11 @@ float uiPixels(float pixelsAtScale1);
 float buttonsWidth(std::initializer_list<const char*> labels);
 // 4d. SameLine if buttons with these labels still fit on the line, else a new line.
 void sameLineIfButtonsFit(std::initializer_list<const char*> labels);
+// 4e. A combo box's preview of `name` ("stage.output") that fits a combo `comboWidth` wide:
+//     the name itself if it fits, else the stage cut short ("hard_sh...visibility": the
+//     output stays whole, so hard_shadow and pcss visibilities stay apart), else the end
+//     cut ("hard_shadow.vi..."). Show the full name in the combo's tooltip.
+std::string comboPreview(const std::string& name, float comboWidth);
 // 5. A stage's timing for a tooltip: last run, median and how many runs it covers, or why
 //    it did not run.
 std::string timingText(const StageTime& time);

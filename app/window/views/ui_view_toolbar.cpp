@@ -46,7 +46,8 @@ namespace {
 void drawDifferenceControls(UiState& state, ViewPanel& view) {
   sameLineIfFits(170);
   ImGui::SetNextItemWidth(uiPixels(130));
-  const std::string current = view.minus.empty() ? "- (nothing)" : "- " + view.minus;
+  const std::string current =
+      view.minus.empty() ? "- (nothing)" : "- " + comboPreview(view.minus, uiPixels(130) - ImGui::CalcTextSize("- ").x);
   if (ImGui::BeginCombo("##minus", current.c_str())) {
     if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
       setViewDifference(state, view, "");
@@ -63,9 +64,10 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Difference view: this output minus another of the same size, in the\n"
+    ImGui::SetTooltip("%s%sDifference view: this output minus another of the same size, in the\n"
                       "diverging colormap (red: this one is larger). 'thickness': far - near\n"
-                      "light layer, the occluders' extent along the light (thesis §3.3).");
+                      "light layer, the occluders' extent along the light (thesis §3.3).",
+                      view.minus.empty() ? "" : ("- " + view.minus).c_str(), view.minus.empty() ? "" : "\n\n");
   if (view.minus.empty()) return;
   ImGui::SameLine();
   ImGui::Checkbox("neg->0", &view.clipNegative);
@@ -77,7 +79,7 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
 // 2. Line 1: what is shown (output, lock, channels, colormap, level).
 void drawOutputCombo(UiState& state, ViewPanel& view, float width) {
   ImGui::SetNextItemWidth(width);
-  if (ImGui::BeginCombo("##output", view.output.c_str())) {
+  if (ImGui::BeginCombo("##output", comboPreview(view.output, width).c_str())) {
     for (const std::string& key : state.session.outputKeys())
       if (ImGui::Selectable(key.c_str(), key == view.output)) {
         view.output = key;
@@ -86,7 +88,7 @@ void drawOutputCombo(UiState& state, ViewPanel& view, float width) {
       }
     ImGui::EndCombo();
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", view.output.c_str());  // the combo may cut it
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", view.output.c_str());  // the preview may be cut
 }
 
 void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
