@@ -136,6 +136,31 @@ TEST(WindowClassroom, NoPanelContentsRunPastTheRightEdgeAtScale1And15) {
   EXPECT_EQ(statusText[1], 20);  // rebuilt at round(13 x 1.5)
 }
 
+// The chart tab with points from a live run (the "minimal" preset on the cube at 256 x 256):
+// before, at scale 1.5 its axis titles ran past the plot ("mean |error| in sha"), the tick
+// labels ran together ("100200500") and the plot and legend reached 11 px past the tab.
+TEST(WindowClassroom, TheChartTabWithPointsFitsAtScale1And15) {
+  REQUIRE_DISPLAY();
+  const fs::path dir = scratchDirectory("classroom_chart");
+  for (const char* scale : {"1", "1.5"}) {
+    const std::string shot = (dir / (std::string("chart_scale_") + scale + ".png")).string();
+    const auto script = writeScript(dir, std::string(R"([{"ui_scale": )") + scale + R"(},
+      {"eye_size": [256, 256]}, {"speed_error_measure": "minimal"}, {"wait": 2},
+      {"print_layout": "chart"}, {"screenshot": ")" + shot + R"("}])");
+    const auto result = runPenumbra("--script " + script.string());
+    ASSERT_EQ(result.exitCode, 0) << result.output;
+    const size_t at = result.output.find("speed vs error: ");
+    ASSERT_NE(at, std::string::npos) << result.output;
+    EXPECT_GE(std::stoi(result.output.substr(at + 16)), 3) << "points in the chart";
+    const std::vector<WindowRect> windows = layoutOf(result.output, "chart");
+    ASSERT_GT(windows.size(), 2u) << result.output;
+    for (const WindowRect& w : windows)
+      EXPECT_LE(w.overflow, 1) << "scale " << scale << ": '" << w.name << "' runs " << w.overflow
+                               << " px past its right edge";
+    EXPECT_TRUE(fs::is_regular_file(shot)) << result.output;
+  }
+}
+
 TEST(WindowClassroom, LinkedViewsFollowTheActiveOne) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("classroom_link");

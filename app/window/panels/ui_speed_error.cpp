@@ -91,12 +91,15 @@ ImU32 methodColour(size_t index) {
 // 2. The chart: points (only those measured: frames > 0), frontier, the current one ringed.
 void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   const float em = ImGui::GetFontSize();  // margins follow the UI scale
-  const ImVec2 size{ImGui::GetContentRegionAvail().x, 20 * em};
+  // The axis titles are text lines above and below the plot: inside it they ran past its
+  // right edge in a narrow panel (at UI scale 1.5, "mean |error| in sha").
+  ImGui::TextWrapped("y: mean |error| in shadow (log)");
+  const ImVec2 size{ImGui::GetContentRegionAvail().x, 18 * em};
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("##plot", size);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float left = origin.x + 3.7f * em, right = origin.x + size.x - 0.6f * em;
-  const float top = origin.y + 0.5f * em, bottom = origin.y + size.y - 2.6f * em;
+  const float top = origin.y + 0.5f * em, bottom = origin.y + size.y - 1.4f * em;
   draw->AddRectFilled({left, top}, {right, bottom}, IM_COL32(30, 30, 34, 255));
   draw->AddRect({left, top}, {right, bottom}, IM_COL32(120, 120, 120, 255));
   std::vector<double> xs, ys;
@@ -105,8 +108,10 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   auto at = [&](const BenchResult& p) {
     return ImVec2{ax.to(p.msMedian, left, right), ay.to(p.error.meanAbsInShadow, bottom, top)};
   };
-  // Decade and 2x / 5x ticks with labels.
+  // Decade and 2x / 5x ticks; a label centred on its line, left out where it would touch
+  // the one before it or leave the plot's box (they ran together at UI scale 1.5).
   const ImU32 grid = IM_COL32(70, 70, 76, 255), label = IM_COL32(180, 180, 180, 255);
+  float labelEnd = -INFINITY;
   for (int decade = int(std::floor(ax.lo)); decade <= int(std::ceil(ax.hi)); ++decade)
     for (double m : {1.0, 2.0, 5.0}) {
       const double v = m * std::pow(10.0, decade);
@@ -115,7 +120,10 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
       draw->AddLine({x, top}, {x, bottom}, grid);
       char text[32];
       std::snprintf(text, sizeof text, "%g", v);
-      draw->AddText({x - 0.6f * em, bottom + 2}, label, text);
+      const float width = ImGui::CalcTextSize(text).x, start = x - 0.5f * width;
+      if (start < labelEnd + 0.5f * em || start + width > origin.x + size.x) continue;
+      draw->AddText({start, bottom + 2}, label, text);
+      labelEnd = start + width;
     }
   for (int decade = int(std::floor(ay.lo)); decade <= int(std::ceil(ay.hi)); ++decade)
     for (double m : {1.0, 2.0, 5.0}) {
@@ -127,8 +135,6 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
       std::snprintf(text, sizeof text, "%g", v);
       draw->AddText({origin.x, y - 0.5f * em}, label, text);
     }
-  draw->AddText({left + 0.3f * em, bottom + 1.3f * em}, label, "ms per frame (median, log)");
-  draw->AddText({left + 0.3f * em, top + 2}, label, "mean |error| in shadow (log)");
   // Frontier (increasing time), points coloured by method, the current configuration.
   const std::vector<bool> onFrontier = paretoFrontier(xs, ys);
   std::vector<size_t> frontier;
@@ -155,16 +161,35 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
     ImGui::SetTooltip("%s\n%.2f ms/frame (%s), mean |error| in shadow %.4f", p.label.c_str(),
                       p.msMedian, stages.c_str(), p.error.meanAbsInShadow);
   }
+  ImGui::TextWrapped("x: ms per frame (median, log)");
+  // The legend wraps in a narrow panel: entries are placed by their measured widths.
+  const float lineWidth = ImGui::GetContentRegionAvail().x, gap = ImGui::GetStyle().ItemSpacing.x;
+  float used = ImGui::CalcTextSize("-- Pareto frontier").x;
   ImGui::TextColored({1, 0.75f, 0.25f, 1}, "-- Pareto frontier");
-  for (size_t m = 0; m < methods.size(); ++m) {  // the legend wraps in a narrow panel
+  for (size_t m = 0; m < methods.size(); ++m) {
     const std::string entry = "o " + methods[m];
-    ImGui::SameLine();
-    if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(entry.c_str()).x) ImGui::NewLine();
+    const float width = ImGui::CalcTextSize(entry.c_str()).x;
+    if (used + gap + width <= lineWidth) {
+      ImGui::SameLine();
+      used += gap + width;
+    } else
+      used = width;
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(m)), "%s", entry.c_str());
   }
 }
 
 // 3. The live run's controls: preset, measure / cancel, progress.
+std::string startRun(PanelState& panel, const UiState& state, const std::string& preset) {
+  try {
+    LiveBenchOptions options;
+    options.preset = preset;
+    panel.bench.start(state.session.scene, state.session.pipeline, options);
+    return "";
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+}
+
 void drawLiveControls(PanelState& panel, UiState& state) {
   const std::vector<std::string> presets = benchPresetNames();
   ImGui::SetNextItemWidth(10 * ImGui::GetFontSize());
@@ -179,14 +204,7 @@ void drawLiveControls(PanelState& panel, UiState& state) {
   if (panel.bench.running()) {
     if (ImGui::Button("Cancel")) panel.bench.cancel();
   } else if (ImGui::Button("Measure this scene")) {
-    try {
-      LiveBenchOptions options;
-      options.preset = presets[size_t(panel.preset)];
-      panel.bench.start(state.session.scene, state.session.pipeline, options);
-      panel.liveMessage.clear();
-    } catch (const std::exception& error) {
-      panel.liveMessage = error.what();
-    }
+    panel.liveMessage = startRun(panel, state, presets[size_t(panel.preset)]);
   }
   if (panel.bench.running()) {
     ImGui::ProgressBar(panel.bench.progress(), {-1, 0});
@@ -207,6 +225,29 @@ PanelState& panelState() {
 }
 
 }  // namespace
+
+std::string startSpeedErrorRun(UiState& state, const std::string& preset) {
+  PanelState& panel = panelState();
+  const std::vector<std::string> presets = benchPresetNames();
+  const auto found = std::find(presets.begin(), presets.end(), preset);
+  if (found == presets.end()) {
+    std::string valid;
+    for (const std::string& name : presets) valid += (valid.empty() ? "" : ", ") + name;
+    return "unknown preset '" + preset + "'; valid: " + valid;
+  }
+  if (panel.bench.running()) return "a live run is already measuring";
+  panel.preset = int(found - presets.begin());
+  panel.live = true;
+  panel.liveMessage = startRun(panel, state, preset);
+  return panel.liveMessage;
+}
+
+bool speedErrorRunning() { return panelState().bench.running(); }
+
+int speedErrorPoints() {
+  const std::vector<BenchResult>& results = panelState().bench.results();
+  return int(std::count_if(results.begin(), results.end(), [](const BenchResult& r) { return r.frames > 0; }));
+}
 
 void stepSpeedErrorPanel() {
   PanelState& panel = panelState();
@@ -269,8 +310,9 @@ void drawSpeedErrorPanel(UiState& state) {
     drawPlot(points, current);
     if (current >= 0) {
       ImGui::TextColored({0.3f, 1, 0.5f, 1}, "(O) current:");
-      ImGui::TextWrapped("%s, %.2f ms, error %.4f", points[size_t(current)]->label.c_str(),
-                         points[size_t(current)]->msMedian, points[size_t(current)]->error.meanAbsInShadow);
+      ImGui::TextWrapped("%s", points[size_t(current)]->label.c_str());
+      ImGui::Text("%.2f ms, error %.4f", points[size_t(current)]->msMedian,  // unwrapped: a
+                  points[size_t(current)]->error.meanAbsInShadow);  // wrap split "0.|0221"
     } else if (panel.live)
       ImGui::TextWrapped("The current parameters were not measured in this run on this view "
                          "(measure again to add them).");

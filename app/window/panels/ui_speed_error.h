@@ -15,6 +15,11 @@ class UiState;
 // The newest bench/*/results.json under `directory`, relative to it; "" if none.
 std::string newestBenchJson(const std::filesystem::path& directory);
 
+// As the "Measure this scene" button with `preset` chosen (scripts: "speed_error_measure");
+// "" or why not (an unknown preset, a run already going, a bad parameter).
+std::string startSpeedErrorRun(UiState& state, const std::string& preset);
+bool speedErrorRunning();
+int speedErrorPoints();  // configurations the live run has measured
 // One step of the live run; called every window frame, whether the panel is shown or not.
 void stepSpeedErrorPanel();
 // The panel's contents, drawn into the current window (the right side panel's "Speed vs

@@ -1,7 +1,9 @@
 #include "window/script/ui_script.h"
 
+#include <cstdio>
 #include <fstream>
 
+#include "window/panels/ui_speed_error.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/ui_state.h"
 
@@ -72,6 +74,12 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
   if (context_.waitFrames > 0) {
     --context_.waitFrames;
     return Step::Running;
+  }
+  if (context_.waitForSpeedError) {
+    if (speedErrorRunning()) return Step::Running;  // the live run steps once per frame
+    context_.waitForSpeedError = false;
+    std::printf("penumbra: speed vs error: %d configurations measured\n", speedErrorPoints());
+    std::fflush(stdout);
   }
   if (waitForNext(state)) return Step::Running;
   while (next_ < actions_.size()) {

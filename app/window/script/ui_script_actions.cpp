@@ -6,6 +6,7 @@
 
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_reference_progress.h"
+#include "window/panels/ui_speed_error.h"
 #include "window/script/ui_lesson_crop.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
@@ -283,6 +284,13 @@ std::vector<ScriptActionSpec> makeTable() {
        [](S& s, const json& a, C&) {
          s.showSpeedError = a.get<bool>();
          return std::string();
+       },
+       true},
+      {"speed_error_measure", kString,
+       [=](S& s, const json& a, C& c) {
+         s.showSpeedError = true;
+         c.waitForSpeedError = true;
+         return startSpeedErrorRun(s, text(a));
        },
        true},
       {"compare_with_ground_truth", kBool,

@@ -16,6 +16,7 @@ class UiState;
 // What a handler may change besides the window's state: the runner's own progress.
 struct ScriptContext {
   int waitFrames = 0;             // frames still to wait ("wait")
+  bool waitForSpeedError = false;  // "speed_error_measure": wait until the live run is done
   std::string pendingScreenshot;  // taken one frame later: new windows size themselves first
   std::string exportDirectory;    // relative export / screenshot paths go here
   bool exportOverridden = false;  // --export DIR replaces the script's "export_dir"
