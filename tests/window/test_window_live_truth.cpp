@@ -95,8 +95,8 @@ TEST(WindowLiveTruth, BigSceneUsesEmbree) {
   EXPECT_NE(line.find("> 250 ms, estimated"), std::string::npos) << line;
 }
 
-// The user's choice stays: by --set, by a later change of error.against, and raster4d is
-// never its own ground truth.
+// The user's choice stays: by --set, by a later change of error.against, by a script's set
+// before the first run, and raster4d is never its own ground truth.
 TEST(WindowLiveTruth, TheUsersChoiceIsKept) {
   REQUIRE_DISPLAY();
   const auto flag = runScript("live_truth_flag", R"([{"eye_size": [48, 32]},
@@ -114,6 +114,16 @@ TEST(WindowLiveTruth, TheUsersChoiceIsKept) {
   EXPECT_EQ(truthLine(later.output, "auto").rfind("against raster4d", 0), 0u) << later.output;
   EXPECT_EQ(truthLine(later.output, "user"), "against reference (your choice; automatic off)")
       << later.output;
+
+  // A script naming the ground truth before the first run (as the lessons do), even the one
+  // already set: before, the rule then chose raster4d and the lesson's "against the Embree
+  // reference" numbers were against raster4d.
+  const auto first = runScript("live_truth_first", R"([{"eye_size": [48, 32]},
+    {"set": {"reference.enabled": true, "error.against": "reference"}},
+    {"select_output": "error.signed"}, {"wait": 2}, {"print_truth": "first"}])");
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  EXPECT_EQ(truthLine(first.output, "first"), "against reference (your choice; automatic off)")
+      << first.output;
 
   const auto self = runScript("live_truth_self", R"([{"eye_size": [48, 32]},
     {"set": {"error.method": "raster4d"}}, {"compare_with_ground_truth": true},

@@ -11,7 +11,9 @@
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_camera.h"
+#include "window/ui_graph.h"
 #include "window/ui_layout_report.h"
+#include "window/ui_live_truth.h"
 #include "window/ui_scale.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_difference.h"
@@ -64,10 +66,16 @@ const GlTexture* activeTexture(UiState& state) { return shownTexture(state, acti
 
 // 2. Handlers longer than a line (the others are in the table).
 std::string setParameters(UiState& state, const json& a) {
+  const std::string truthKey = groundTruthChoiceKey(state.session.pipeline);
   for (const auto& [key, value] : a.items()) {
     const std::string text = value.is_string() ? value.get<std::string>() : value.dump();
     if (std::string problem = state.session.setParameter(key, text); !problem.empty())
       return problem;
+    // A ground truth the script names is its choice, as with --set: the live error keeps it
+    // even when it equals the current one (before, "error.against": "reference" set before
+    // the first run was overridden by the automatic raster4d on a cheap scene, and a
+    // lesson's "against the Embree reference" numbers were against raster4d).
+    if (key == truthKey) keepUserTruth(state);
   }
   return "";
 }
