@@ -18,6 +18,8 @@
 //   {"compare_with_ground_truth": true}  (the pipeline panel's button: view B shows the
 //                             error against the live ground truth, ui_live_truth.h)
 //   {"print_truth": "label"} (stdout: the ground truth in use and why)
+//   {"speed_error_measure": "minimal"} (the chart tab's "Measure this scene" with that
+//                             preset; the script waits until the live run is done)
 //   {"print_counters": "label"} (stdout: every counter of the last run, as the inspector)
 //   {"camera_moving": true}  (as while dragging the camera: the preview resolution)
 //   {"trace_window": true}   (the ray trace panel in its own large window)
@@ -40,6 +42,8 @@
 //   {"export_view": {"file": "f.png", "caption": "... {ms:trace} ms", "annotate": true}}
 //                          (a panel of the lesson's figure sheet, with its caption)
 //   {"annotate": true}     (exported view PNGs carry a colour bar / legend and a caption)
+//   {"crop": [x, y, w, h] | "none"} (exported panels hold only that rectangle; {crop.rmse},
+//                          {crop.meanSigned}, ... are the error over it: ui_lesson_crop.h)
 //   {"keep": {"rmse_a": "error.rmse"}}  (a number of this run, quoted later as {rmse_a};
 //                          says and captions quote {ms:stage}, {ms}, {error.rmse}, ...)
 // Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
