@@ -25,6 +25,7 @@ std::unique_ptr<Stage> makeSoftShadowMapStage();
 std::unique_ptr<Stage> makeRaster4dStage();
 // 5. Ground truth and its comparison; 6. the image.
 std::unique_ptr<Stage> makeReferenceStage();
+std::unique_ptr<Stage> makeReceiversStage();
 std::unique_ptr<Stage> makeErrorStage();
 std::unique_ptr<Stage> makeCompositeStage();
 
@@ -48,6 +49,7 @@ std::vector<StageEntry> makeRegistry() {
   add(makeSoftShadowMapStage());                     // Atty et al. 2006 §3
   add(makeRaster4dStage());                          // Wang et al. 2020, Alg. 1-3
   add(makeReferenceStage());                         // ground truth (Embree)
+  add(makeReceiversStage());                         // Atty 2006 §4.2.1: receivers only
   add(makeErrorStage());                             // Atty 2006 §4.2.1
   add(makeCompositeStage());                         // Alg. 1, last step
   return registry;

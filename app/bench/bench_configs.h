@@ -22,7 +22,8 @@
 //                     over pixels in shadow): shadow-map size; light size; occluder moved
 //                     laterally; occluder moved from the receiver to the light (map 128,
 //                     as theirs); every method in each, a method with passes (ssm) at each
-//                     of them, as Atty et al. measure one and two passes
+//                     of them, as Atty et al. measure one and two passes; the error over
+//                     the receiver-only objects' pixels (error.pixels=receivers), as theirs
 //
 // A method whose stage has maps of its own (an Int parameter `resolution`, e.g. ssm) gets
 // <method>.resolution = the map size beside light.resolution, so Fig. 17's x axis is its map.

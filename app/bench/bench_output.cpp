@@ -204,6 +204,8 @@ void attyTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
     md << "\n";
   };
   md << "## Atty et al. 2006 §4.2 shape: mean |error| over pixels in shadow\n\n"
+     << "Receiver-only objects' pixels alone (error.pixels=receivers, §4.2.1: SSM computes "
+        "no self-shadowing).\n\n"
      << "### Shadow-map size (§4.2.3)\n\n";
   header("map");
   std::set<int> maps;

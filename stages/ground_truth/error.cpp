@@ -2,7 +2,10 @@
 // (signed, with a diverging colormap; absolute) and as numbers in frame.counters (RMSE, max,
 // mean |error| in shadow after Atty et al. 2006 §4.2.1, 99th percentile). Only receivers
 // inside the light's map count: the background has no shadow and, outside the map, no
-// method knows anything (classify marks both). Runs only while both inputs are written.
+// method knows anything (classify marks both). `pixels = receivers` narrows that to the
+// receiver-only objects (stage `receivers`): soft shadow maps compute no self-shadowing
+// (Atty et al. 2006 §3), and §4.2.1 measures on the receiver, so an occluder's own surface
+// would count an error the paper never measures. Runs only while both inputs are written.
 //
 // On the CPU: the reference is a CPU image anyway, and the percentile and OIIO's compare
 // need the values there; at 512x512 the read-back costs a few milliseconds.
@@ -27,6 +30,8 @@ public:
                       "against", "reference", /*allowNone=*/false),
         Input::texture("mask", "Classes: background and receivers outside the light's map do "
                                "not count.", GL_R32F),
+        Input::texture("receiverOnly", "1 where the pixel shows a receiver-only object "
+                                       "(pixels = receivers counts only those).", GL_R8),
     };
     outputs_ = {
         {"signed", "Method minus reference: > 0 too bright (missed occluders), < 0 too dark "
@@ -39,6 +44,12 @@ public:
         Param::choice("method", "Which shadow method is measured (every stage whose output "
                                 "is a shadow method's visibility).", {}, 0),
         Param::choice("against", "The ground truth (every stage whose output is one).", {}, 0),
+        Param::choice("pixels", "Which receivers count. all: every surface inside the light's "
+                                "map, occluders included. receivers: only the scene's "
+                                "receiver_only objects, the paper's metric (Atty et al. 2006 "
+                                "§4.2.1 measure on the receiver; soft shadow maps compute no "
+                                "self-shadowing, §3, so an occluder's own shading is an error "
+                                "they never measure).", {"all", "receivers"}, 0),
     };
   }
   std::string name() const override { return "error"; }
@@ -58,10 +69,14 @@ public:
     const std::vector<float> method = frame.input(*this, "method").readFloats();
     const std::vector<float> reference = frame.input(*this, "truth").readFloats();
     const std::vector<float> mask = frame.input(*this, "mask").readFloats();
+    const bool receiversOnly = param("pixels").asEnum() == "receivers";
+    std::vector<float> receiver;
+    if (receiversOnly) receiver = frame.input(*this, "receiverOnly").readFloats();
     std::vector<std::uint8_t> counted(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) {
       const int pixelClass = int(std::lround(mask[i]));
-      counted[i] = pixelClass != CLASS_BACKGROUND && pixelClass != CLASS_OUTSIDE;
+      counted[i] = pixelClass != CLASS_BACKGROUND && pixelClass != CLASS_OUTSIDE &&
+                   (!receiversOnly || receiver[i] > 0.5f);
     }
     std::vector<float> signedError;
     const ErrorMetrics metrics = computeErrorMetrics(method, reference, counted, w, h, &signedError);

@@ -377,3 +377,60 @@ TEST(ErrorStage, SignedImageIsMethodMinusReferenceOnReceiversInsideTheMap) {
   EXPECT_FALSE(run.frame->has("error.signed"));
   EXPECT_EQ(run.frame->counters.count("error.rmse"), 0u);
 }
+
+// error.pixels = receivers (Atty et al. 2006 §4.2.1 measure on the receiver) against a
+// recount from read-back buffers. On `cube` the ground (y = 0) is the one receiver-only
+// object and the box (y in [0.65, 1.15]) shades its own faces, which soft shadow maps do not
+// (§3). The G-buffer's world positions say which pixel shows which, independently of the
+// `receivers` stage's flags.
+TEST(ErrorStage, ReceiversOnlyCountsTheGroundAloneAsARecountDoes) {
+  const ScopedCache cache("error-receivers");
+  PipelineRun run(makeBuiltinScene("cube"),
+                  {"reference.enabled=true", "reference.cache=false", "reference.samples=4",
+                   "error.method=ssm", "error.pixels=all"}, 128, 96);
+  const auto method = run.read("ssm.visibility");
+  const auto reference = run.read("reference.visibility");
+  const auto mask = run.read("classify.mask");
+  const auto wsPosition = run.read("gbuffer.wsPosition");
+  const auto flag = run.read("receivers.receiverOnly");
+  const auto all = run.frame->counters;
+
+  // 1. The flags are the ground's pixels, as the world positions say.
+  size_t ground = 0, box = 0, countedAll = 0, countedBox = 0, n = 0, nShadow = 0, boxShadow = 0;
+  double sumShadow = 0, sumBoxShadow = 0;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    const float y = wsPosition[4 * i + 1], coverage = wsPosition[4 * i + 3];
+    const bool isGround = coverage > 0 && std::fabs(y) < 1e-3f;
+    const bool isBox = coverage > 0 && y > 0.5f;
+    ASSERT_EQ(flag[i], isGround ? 1.0f : 0.0f) << "pixel " << i << " y " << y;
+    ground += isGround, box += isBox;
+    const bool counts = mask[i] != 0 && mask[i] != 4;  // background, outside the map
+    countedAll += counts;
+    countedBox += counts && isBox;
+    const double e = std::fabs(double(method[i]) - reference[i]);
+    if (counts && isBox && reference[i] < 1) ++boxShadow, sumBoxShadow += e;
+    if (!counts || !isGround) continue;
+    ++n;
+    if (reference[i] < 1) ++nShadow, sumShadow += e;
+  }
+  ASSERT_GT(ground, 1000u);
+  ASSERT_GT(boxShadow, 100u);  // the box's own shaded faces: what `all` counts and SSM misses
+  EXPECT_EQ(all.at("error.pixels"), double(countedAll));
+
+  // 2. Receivers only: the recount over the ground's counted pixels.
+  run.pipeline->set("error.pixels=receivers");
+  run.run();
+  const auto& receivers = run.frame->counters;
+  EXPECT_EQ(receivers.at("error.pixels"), double(n));
+  EXPECT_EQ(receivers.at("error.pixels"), all.at("error.pixels") - double(countedBox));
+  EXPECT_EQ(receivers.at("error.pixelsInShadow"), double(nShadow));
+  EXPECT_EQ(all.at("error.pixelsInShadow"), double(nShadow + boxShadow));
+  EXPECT_NEAR(receivers.at("error.meanAbsInShadow"), sumShadow / double(nShadow), 1e-6);
+  // The box's faces are where SSM errs most: no self-shadowing.
+  EXPECT_GT(sumBoxShadow / double(boxShadow), sumShadow / double(nShadow));
+  const auto absolute = run.read("error.absolute");
+  for (size_t i = 0; i < absolute.size(); ++i)
+    if (flag[i] == 0.0f) {
+      ASSERT_EQ(absolute[i], 0.0f) << "an occluder pixel counted: " << i;
+    }
+}
