@@ -168,7 +168,15 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
     }
     EXPECT_EQ(ssmPasses["ssm one pass"], int(maps)) << setup.label;
     EXPECT_EQ(ssmPasses["ssm two passes"], int(maps)) << setup.label;
+    // The paper's metric: the receivers' pixels only (§4.2.1), in every configuration.
+    for (const BenchConfig& config : setup.configs)
+      EXPECT_EQ(std::count(config.sets.begin(), config.sets.end(), "error.pixels=receivers"), 1)
+          << config.label;
   }
+  for (const BenchSetup& setup : thesis)
+    for (const BenchConfig& config : setup.configs)
+      for (const std::string& set : config.sets)
+        EXPECT_EQ(set.rfind("error.pixels", 0), std::string::npos) << set;
   const auto swept = makeBenchPlan(plate, {"minimal", {"eye.size=32x32,64x48", "light.resolution=128,256"}, 0, 0}, graph);
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_EQ(swept[1].width, 64);
