@@ -29,7 +29,7 @@ std::string sceneFingerprint(const Scene& scene) {
   return text;
 }
 
-BenchConfig currentConfig(const Pipeline& pipeline) {
+BenchConfig currentConfig(const Pipeline& pipeline, const std::vector<BenchConfig>& preset) {
   std::string method = pipeline.param("composite.shadow").asEnum();
   if (method == "none") method = pipeline.param("error.method").asEnum();
   BenchConfig config{"current (" + method + ")", method, "current", {}};
@@ -38,6 +38,11 @@ BenchConfig currentConfig(const Pipeline& pipeline) {
       config.sets.push_back(stage + "." + param.key + "=" + param.toString());
   config.sets.push_back("composite.shadow=" + method);
   config.sets.push_back("error.method=" + method);
+  std::string pixels = "error.pixels=" + pipeline.param("error.pixels").toString();
+  for (const BenchConfig& each : preset)
+    for (const std::string& set : each.sets)
+      if (set.rfind("error.pixels=", 0) == 0) pixels = set;
+  config.sets.push_back(pixels);
   return config;
 }
 
@@ -85,7 +90,7 @@ void LiveBench::start(const Scene& scene, const Pipeline& current, const LiveBen
   const BenchSetup& setup = plan.at(0);
   setupLabel_ = setup.label;
   configs_ = setup.configs;
-  configs_.push_back(currentConfig(current));
+  configs_.push_back(currentConfig(current, setup.configs));
   // 2. Every assignment checked before anything runs.
   const ParamSnapshot defaults(*pipeline);
   for (const BenchConfig& config : configs_) {

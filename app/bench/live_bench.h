@@ -23,8 +23,10 @@ class GpuScene;
 std::string sceneFingerprint(const Scene& scene);
 
 // The configuration `pipeline` is in now: the method composite shows (error's when that is
-// "none") with every parameter of the stages its visibility depends on.
-BenchConfig currentConfig(const Pipeline& pipeline);
+// "none") with every parameter of the stages its visibility depends on. Its error counts the
+// pixels `preset`'s configurations count (error.pixels; atty-4.2: the receivers), so one
+// chart has one metric; the window's error.pixels where they set none.
+BenchConfig currentConfig(const Pipeline& pipeline, const std::vector<BenchConfig>& preset = {});
 
 // The result measured with exactly the method and parameters `pipeline` has now; -1 if none.
 int matchingResult(const std::vector<BenchResult>& results, const Pipeline& pipeline);

@@ -28,6 +28,26 @@ int stepToTheEnd(LiveBench& bench) {
 
 }  // namespace
 
+// "current" is measured with the preset's error.pixels (one metric per chart), else with the
+// window's.
+TEST(LiveBench, CurrentCountsThePixelsThePresetCounts) {
+  const Scene plate = makeBuiltinScene("plate");
+  Pipeline window;
+  const auto pixelsOf = [](const BenchConfig& config) {
+    std::string last;
+    for (const std::string& set : config.sets)
+      if (set.rfind("error.pixels=", 0) == 0) last = set;
+    return last;
+  };
+  const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0}, window);
+  const auto minimal = makeBenchPlan(plate, {"minimal", {}, 0, 0}, window);
+  EXPECT_EQ(pixelsOf(currentConfig(window, atty[0].configs)), "error.pixels=receivers");
+  EXPECT_EQ(pixelsOf(currentConfig(window, minimal[0].configs)), "error.pixels=all");
+  ASSERT_EQ(window.set("error.pixels=receivers"), "");
+  EXPECT_EQ(pixelsOf(currentConfig(window, minimal[0].configs)), "error.pixels=receivers");
+  EXPECT_EQ(pixelsOf(currentConfig(window)), "error.pixels=receivers");
+}
+
 TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
   const TempDirectory cache("penumbra-live-bench");
   setenv("PENUMBRA_CACHE", cache.path().c_str(), 1);
