@@ -30,8 +30,8 @@ public:
                       "against", "reference", /*allowNone=*/false),
         Input::texture("mask", "Classes: background and receivers outside the light's map do "
                                "not count.", GL_R32F),
-        Input::texture("receiverOnly", "1 where the pixel shows a receiver-only object "
-                                       "(pixels = receivers counts only those).", GL_R8),
+        Input::texture("flag", "1 where the pixel shows a receiver-only object (stage "
+                               "receivers; pixels = receivers counts only those).", GL_R8),
     };
     outputs_ = {
         {"signed", "Method minus reference: > 0 too bright (missed occluders), < 0 too dark "
@@ -71,7 +71,7 @@ public:
     const std::vector<float> mask = frame.input(*this, "mask").readFloats();
     const bool receiversOnly = param("pixels").asEnum() == "receivers";
     std::vector<float> receiver;
-    if (receiversOnly) receiver = frame.input(*this, "receiverOnly").readFloats();
+    if (receiversOnly) receiver = frame.input(*this, "flag").readFloats();
     std::vector<std::uint8_t> counted(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) {
       const int pixelClass = int(std::lround(mask[i]));

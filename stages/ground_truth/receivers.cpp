@@ -21,22 +21,20 @@ namespace {
 class ReceiversStage final : public Stage {
 public:
   ReceiversStage() {
-    outputs_ = {{"receiverOnly", "1 where the visible surface belongs to a receiver-only object "
-                                 "(the scene's receiver_only flag), 0 on occluders and the "
-                                 "background.",
+    outputs_ = {{"flag", "1 where the visible surface belongs to a receiver-only object (the "
+                         "scene's receiver_only flag), 0 on occluders and the background.",
                  GL_R8, {"receiver"}, {0, 0, 1, Colormap::Gray}}};
   }
   std::string name() const override { return "receivers"; }
   std::string summary() const override {
-    return "Eye pixels that show a receiver-only object: the pixels Atty et al. 2006 measure "
-           "on.";
+    return "Which eye pixels show a receiver-only object (Atty et al. 2006 measure there).";
   }
   std::string thesisSection() const override { return "3.3"; }
 
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;
     if (depth_.width() != w || depth_.height() != h) depth_ = GlTexture(GL_DEPTH_COMPONENT32F, w, h);
-    GlTexture& flag = frame.output(*this, "receiverOnly", w, h);
+    GlTexture& flag = frame.output(*this, "flag", w, h);
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, flag.id(), 0);
     glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
     glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);

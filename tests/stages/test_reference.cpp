@@ -392,7 +392,7 @@ TEST(ErrorStage, ReceiversOnlyCountsTheGroundAloneAsARecountDoes) {
   const auto reference = run.read("reference.visibility");
   const auto mask = run.read("classify.mask");
   const auto wsPosition = run.read("gbuffer.wsPosition");
-  const auto flag = run.read("receivers.receiverOnly");
+  const auto flag = run.read("receivers.flag");
   const auto all = run.frame->counters;
 
   // 1. The flags are the ground's pixels, as the world positions say.
