@@ -20,9 +20,11 @@ public:
         Param::integerOrAuto(
             "resolution",
             "Shadow-map size in texels (square): the light layers, the N-buffer and every "
-            "depth-map method's maps. auto (the default): from the smallest penumbra in view, "
-            "so that it spans 6 texels, in [256, 2048] (app/scene/auto_settings.h; the choice "
-            "and its reasons: the auto.* counters and the inspector). The limit of every "
+            "depth-map method's maps. auto (the default): so that 98% of the penumbra area in "
+            "view spans 6 texels, but no larger than the map whose build costs what the trace "
+            "does unless the narrow penumbrae hold half the shadow (a contact shadow), in "
+            "[256, 2048] (app/scene/auto_settings.h; the choice and its reasons: the auto.* "
+            "counters and the inspector). The limit of every "
             "depth-map method (thesis §4.1, Atty 2006 §4.2): a penumbra narrower than a few "
             "texels is lost. A plate 0.06 above the ground under a 1x1 light 3 units up casts "
             "a 0.0204-wide contact penumbra; at fov 90 one texel there is 0.054 wide at 128^2 "
@@ -99,6 +101,11 @@ public:
     frame.light.mapSize = param("resolution").automatic ? chosen.resolution : param("resolution").asInt();
     frame.light.layers = param("layers").automatic ? chosen.layers : param("layers").asInt() + 1;
     frame.counters["auto.resolution"] = chosen.resolution;
+    // What the resolution weighed: 98% of the penumbra area at 6 texels, the largest map
+    // whose build costs no more than the trace, half the area at 6 texels.
+    frame.counters["auto.res_needed"] = chosen.neededResolution;
+    frame.counters["auto.res_affordable"] = chosen.affordableResolution;
+    frame.counters["auto.res_half_area"] = chosen.halfAreaResolution;
     frame.counters["auto.layers"] = chosen.layers;
     frame.counters["auto.rays_per_side"] = chosen.raysPerSide;
     frame.counters["auto.probes_in_view"] = chosen.probes;
