@@ -64,8 +64,8 @@ vec3 boundsForRays(vec3 a, vec3 b, vec3 bounds, ivec2 mapSize) {
 // The receiver point moves along its normal by an offset capped by zNearMin (bias.glsl),
 // which the trace recomputes from the zNearMin written here, so the two must agree and the
 // bounds must hold at that point: first the bounds at the fully offset point; where they cap
-// the offset, the bounds over every point from none to the full offset instead (lower
-// zNearMin, so a cap at most as tight, and valid wherever it puts the point).
+// the offset, the bounds over every point from none to the full offset instead (a lower
+// zNearMin, so a cap at most as tight, valid wherever it puts the point).
 int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   ivec3 size = textureSize(nbufferLevels, 0);
   // The coarsest level's window is the whole map: the starting bounds (§3.6).

@@ -26,14 +26,22 @@ float fullNormalOffset(vec3 wsPosition) {
 // plate and the contact shadow was lost. What moves the point towards the light is the
 // offset times -n . forward: a box's side face (n . forward = 0), the case the offset is for,
 // keeps all of it; a ground under a plate keeps a quarter of the gap, and the bias the rest.
+// An occluder within the Eq 3.2 bias (n . l = 1) of the point is its own surface (a lit box
+// top: zNearMin is the top itself), or one the bias alone already passes: no cap there.
 const float kNormalOffsetGapFraction = 0.25;
+float ownSurfaceBand(vec3 wsPosition) {  // Eq 3.2 at n . l = 1, plus the constant bias
+  float tanHalfFov = max(light.lightDepthRange.z, light.lightDepthRange.w);
+  return light.bias.x + sqrt(2.0) * lightMapCoords(wsPosition).z * tanHalfFov / float(light.mapSize.x);
+}
+float occluderGap(vec3 wsPosition, float zNearMinLs) {  // light depth, point - zNearMin
+  return lightMapCoords(wsPosition).z - lsDepthToZ(zNearMinLs);
+}
 float normalOffsetDistance(vec3 wsPosition, vec3 wsNormal, float zNearMinLs) {
   float offset = fullNormalOffset(wsPosition);
   float towardsLight = -dot(wsNormal, light.wsLightForward.xyz);
-  if (towardsLight > 0.0) {
-    float gap = max(lightMapCoords(wsPosition).z - lsDepthToZ(zNearMinLs), 0.0);
+  float gap = occluderGap(wsPosition, zNearMinLs);
+  if (towardsLight > 0.0 && gap > ownSurfaceBand(wsPosition))
     offset = min(offset, kNormalOffsetGapFraction * gap / towardsLight);
-  }
   return offset;
 }
 vec3 normalOffsetPoint(vec3 wsPosition, vec3 wsNormal, float zNearMinLs) {

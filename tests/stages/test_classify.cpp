@@ -41,7 +41,7 @@ double largestTraceBias(const PipelineRun& run, double z) {
 // widths (at its depth) along its normal (shaders/shared/bias.glsl, normalOffsetPoint).
 // The point classify and the trace start from (shaders/shared/bias.glsl): moved
 // light.normal_offset texels along the normal, but towards the light by at most a quarter of
-// the gap to the pixel's zNearMin (lsDepth, zRange.x).
+// the gap to the pixel's zNearMin (lsDepth, zRange.x) where that gap exceeds the Eq 3.2 bias.
 glm::dvec3 offsetReceiver(const PipelineRun& run, const LightLayersOnCpu& layers,
                           const glm::dvec3& receiver, const glm::dvec3& normal, double zNearMin) {
   const LightFrame& light = run.frame->light;
@@ -49,8 +49,9 @@ glm::dvec3 offsetReceiver(const PipelineRun& run, const LightLayersOnCpu& layers
   const double texelWorld = 2.0 * z * std::max(light.tanHalfFovX, light.tanHalfFovY) / light.mapSize;
   double offset = run.pipeline->param("light.normal_offset").asFloat() * texelWorld;
   const double towardsLight = -glm::dot(normal, glm::dvec3(light.forward));
-  if (towardsLight > 0)
-    offset = std::min(offset, 0.25 * std::max(z - layers.toZ(zNearMin), 0.0) / towardsLight);
+  const double gap = z - layers.toZ(zNearMin);
+  const double ownSurface = run.pipeline->param("light.bias").asFloat() + std::sqrt(0.5) * texelWorld;
+  if (towardsLight > 0 && gap > ownSurface) offset = std::min(offset, 0.25 * gap / towardsLight);
   return receiver + normal * offset;
 }
 
