@@ -30,7 +30,7 @@ public:
             "a 0.0204-wide contact penumbra; at fov 90 one texel there is 0.054 wide at 128^2 "
             "(the penumbra is 0.38 texel), 0.013 at 512^2, 0.0034 at 2048^2 (6 texels). "
             "Measured there (trace, 8x8 rays, 256x192, normal_offset 0): mean |error| in "
-            "shadow 0.094, all too bright, at 128^2; 0.0125 at 2048^2 (0.098 at 128^2 with "
+            "shadow 0.094, all too bright, at 128^2; 0.0125 at 2048^2 (0.106 at 128^2 with "
             "the default normal_offset, capped by the contact gap).",
             512, 128, 2048),
         Param::real("fov_degrees",
@@ -55,10 +55,11 @@ public:
                     "the contact plate goes 0.014 -> 0.018 -> 0.023). Capped by the contact gap: "
                     "the offset may bring the point towards the light by at most a quarter of "
                     "the depth gap to the nearest occluder its rays can meet (classify's "
-                    "zNearMin), so a face it moves sideways (the box's) keeps it all. At 128^2 "
-                    "one texel (0.054) is almost the contact plate's 0.06 gap: uncapped, the "
-                    "trace lost that shadow (mean |error| in shadow 0.64); capped 0.098 (0.094 "
-                    "with no offset).",
+                    "zNearMin; none within the Eq 3.2 bias: the receiver's own surface), so a "
+                    "face it moves sideways (the box's) keeps it all. At 128^2 one texel "
+                    "(0.054) is almost the contact plate's 0.06 gap: uncapped, the trace lost "
+                    "that shadow (mean |error| in shadow 0.64); capped 0.106 (0.094 with no "
+                    "offset).",
                     1.0, 0, 4),
         Param::choiceOrAuto("layers", "Depth layers that model the occluders, for classification and "
                                 "the trace: one (near only, §3.2), two (near + far, §3.3) or "
