@@ -42,33 +42,54 @@ bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
   return centre - spread > 0.0;  // the least n . (corner - p) over the four corners
 }
 
-// Writes the bounds (zNearMin, zNearMax, zFarMax, receiver lsDepth) and returns the class.
-int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
-  ivec3 size = textureSize(nbufferLevels, 0);
-  // The coarsest level's window is the whole map: the starting bounds (§3.6).
-  vec3 bounds = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
-  wsPosition = normalOffsetPoint(wsPosition, wsNormal);
-  vec3 map = lightMapCoords(wsPosition);
-  float receiverLsDepth = zToLsDepth(map.z);
-  zRange = vec4(bounds, receiverLsDepth);
-  bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
-                   && map.z > light.lightDepthRange.x;
-  if (!insideMap) {
-    zRange.w = isinf(receiverLsDepth) || isnan(receiverLsDepth) ? 0.0 : receiverLsDepth;
-    return CLASS_OUTSIDE;
-  }
-  float largestBias = light.bias.x;
-  if (light.bias.y != 0.0) largestBias += adaptiveBias(map.z, vec3(0.0), vec3(0.0), light.bias.z);
-  float endLsDepth = receiverLsDepth;                         // the deepest any ray can end
-  float shallowestEnd = zToLsDepth(map.z - largestBias);      // the shallowest
-  for (int i = 0; i < uIterations && endLsDepth > bounds.x; ++i) {
-    ivec4 rect = reachableTexels(map.xy, map.z, lsDepthToZ(bounds.x), size.xy);
-    vec3 refined = nbufferBoundsOverRect(nbufferLevels, rect.xy, rect.zw);
+// Eq 3.3 iterated over the region any ray to point a or point b (map coordinates, light
+// depth) can cross: the union of the two squares. For the points between a and b the
+// squares' corners move monotonically, so the union holds them too (within the 0.01-texel
+// margin of reachableTexels).
+vec3 boundsForRays(vec3 a, vec3 b, vec3 bounds, ivec2 mapSize) {
+  float deepestEnd = zToLsDepth(max(a.z, b.z));  // the deepest any ray can end
+  for (int i = 0; i < uIterations && deepestEnd > bounds.x; ++i) {
+    float occluderZ = lsDepthToZ(bounds.x);
+    ivec4 ra = reachableTexels(a.xy, a.z, occluderZ, mapSize);
+    ivec4 rb = reachableTexels(b.xy, b.z, occluderZ, mapSize);
+    vec3 refined = nbufferBoundsOverRect(nbufferLevels, min(ra.xy, rb.xy), max(ra.zw, rb.zw));
     // Each region lies inside the previous one, so every bound found so far still holds:
     // keep the tightest (zNearMin monotone up, the maxima monotone down).
     bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
   }
+  return bounds;
+}
+
+// Writes the bounds (zNearMin, zNearMax, zFarMax, receiver lsDepth) and returns the class.
+// The receiver point moves along its normal by an offset capped by zNearMin (bias.glsl),
+// which the trace recomputes from the zNearMin written here, so the two must agree and the
+// bounds must hold at that point: first the bounds at the fully offset point; where they cap
+// the offset, the bounds over every point from none to the full offset instead (a lower
+// zNearMin, so a cap at most as tight, valid wherever it puts the point).
+int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
+  ivec3 size = textureSize(nbufferLevels, 0);
+  // The coarsest level's window is the whole map: the starting bounds (§3.6).
+  vec3 whole = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
+  vec3 map = lightMapCoords(wsPosition + wsNormal * fullNormalOffset(wsPosition));
+  zRange = vec4(whole, zToLsDepth(map.z));
+  bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
+                   && map.z > light.lightDepthRange.x;
+  if (!insideMap) {
+    zRange.w = isinf(zRange.w) || isnan(zRange.w) ? 0.0 : zRange.w;
+    return CLASS_OUTSIDE;
+  }
+  vec3 bounds = boundsForRays(map, map, whole, size.xy);
+  if (normalOffsetDistance(wsPosition, wsNormal, bounds.x) < fullNormalOffset(wsPosition))
+    bounds = boundsForRays(map, lightMapCoords(wsPosition), whole, size.xy);
   zRange.xyz = bounds;
+  // The capped point (the trace starts its rays there too).
+  wsPosition = normalOffsetPoint(wsPosition, wsNormal, bounds.x);
+  float receiverZ = lightMapCoords(wsPosition).z;
+  float largestBias = light.bias.x;
+  if (light.bias.y != 0.0) largestBias += adaptiveBias(receiverZ, vec3(0.0), vec3(0.0), light.bias.z);
+  float endLsDepth = zToLsDepth(receiverZ);                 // the deepest any ray can end
+  float shallowestEnd = zToLsDepth(receiverZ - largestBias);  // the shallowest
+  zRange.w = endLsDepth;
   // Lit also needs the whole light in front of the tangent plane: a sample behind it is
   // blocked (the trace's backface early out, the reference), so a pixel that sees only part
   // of the light (a box's side face) is penumbra, not lit (issue 12's oracle: side faces of

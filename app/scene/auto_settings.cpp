@@ -72,6 +72,28 @@ double percentile(std::vector<double> values, double fraction) {
   return values[k];
 }
 
+// The value below which `fraction` of the total weight lies.
+double weightedPercentile(const std::vector<double>& values, const std::vector<double>& weights,
+                          double fraction) {
+  std::vector<std::pair<double, double>> sorted;
+  double total = 0;
+  for (size_t i = 0; i < values.size(); ++i) {
+    sorted.emplace_back(values[i], weights[i]);
+    total += weights[i];
+  }
+  std::sort(sorted.begin(), sorted.end());
+  double below = 0;
+  for (const auto& [value, weight] : sorted)
+    if ((below += weight) >= fraction * total) return value;
+  return sorted.empty() ? 0 : sorted.back().first;
+}
+
+// Work to build a map of this size, in texel-levels: the N-buffer's log2(resolution) + 1
+// levels and the light layers, about 2 levels' worth (measured: 2.1 at 2048, 2.7 at 512).
+double mapBuildWork(int resolution) {
+  return double(resolution) * double(resolution) * (std::log2(double(resolution)) + 3.0);
+}
+
 std::string format(const char* pattern, double a, double b = 0, double c = 0) {
   char text[256];
   std::snprintf(text, sizeof text, pattern, a, b, c);
@@ -94,7 +116,7 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   const size_t stride = std::max<size_t>(1, 3 * triangles / kMaxProbes);
 
   // 1-2. Probes along the occluders' edges (t = 0, 1/4, 1/2, 3/4 of each edge).
-  std::vector<double> widthsWorld, texelsPerResolution, widthsPixels;
+  std::vector<double> widthsWorld, texelsPerResolution, widthsPixels, areasPixels;
   size_t seen = 0;
   for (unsigned id = 0; id < scene.objects.size(); ++id) {
     const SceneObject& object = scene.objects[id];
@@ -139,7 +161,14 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
           const float receiverZ = glm::dot(receiver - light.wsProjectionPoint, light.forward);
           widthsWorld.push_back(width);
           texelsPerResolution.push_back(width / (2.0 * receiverZ * tanHalfFov));
-          widthsPixels.push_back(width / (glm::length(receiver - camera.position) * pixelAngle));
+          const double pixelWorld = glm::length(receiver - camera.position) * pixelAngle;
+          widthsPixels.push_back(width / pixelWorld);
+          // The penumbra strip this probe stands for: its width times the quarter edge's
+          // shadow (scaled by receiver / occluder distance from the light), in pixels.
+          const float receiverFromLight = glm::dot(receiver - scene.light.center, light.forward);
+          const double stripPixels =
+              0.25 * glm::length(b - a) * receiverFromLight / occluderDepth / pixelWorld;
+          areasPixels.push_back(widthsPixels.back() * stripPixels);
         }
     }
   }
@@ -148,29 +177,52 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
     out.reasons.push_back("no occluder's shadow falls in view: fixed defaults (512, two layers, 2x2)");
     return out;
   }
-  // 3. Resolution.
-  const double perResolution = percentile(texelsPerResolution, 0.02);
-  out.smallestPenumbraWorld = percentile(widthsWorld, 0.02);
-  const double needed = kPenumbraTexels / std::max(perResolution, 1e-9);
-  out.resolution = int(std::clamp(std::ceil(needed / 128.0) * 128.0, 256.0, 2048.0));
-  out.smallestPenumbraTexels = perResolution * out.resolution;
-  out.reasons.push_back(format(
-      "map %.0f: the smallest penumbra in view is %.3g world units wide, %.2g texels at this "
-      "resolution",
-      out.resolution, out.smallestPenumbraWorld, out.smallestPenumbraTexels));
-  if (needed > 2048.0)
-    out.reasons.push_back(format("the %.0f texels that would give it %.0f texels exceed the "
-                                 "2048 limit: expect its shadow too sharp or too bright",
-                                 needed, kPenumbraTexels));
-  // 4. Rays.
+  // 3. Rays (before the map: the map's budget depends on them).
   out.smallestPenumbraPixels = percentile(widthsPixels, 0.02);
   const double sigma = std::min(2.0, 0.5 * out.smallestPenumbraPixels);
   const double filterPixels = std::max(1.0, M_PI * sigma * sigma);
   out.raysPerSide = 2;
   while (out.raysPerSide < 8 && out.raysPerSide * out.raysPerSide * filterPixels < kEffectiveSamples)
     ++out.raysPerSide;
+  // 4. Resolution: what the penumbrae need, weighed by the shadow area they hold, and what
+  //    the map may cost next to the trace.
+  const auto resolutionFor = [](double texelsPerUnitResolution) {  // kPenumbraTexels across
+    return kPenumbraTexels / std::max(texelsPerUnitResolution, 1e-9);
+  };
+  const auto roundUp = [](double resolution) {
+    return int(std::clamp(std::ceil(resolution / 128.0) * 128.0, 256.0, 2048.0));
+  };
+  const double needed = resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.02));
+  out.neededResolution = roundUp(needed);
+  out.halfAreaResolution = roundUp(resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.5)));
+  const double traceWork = kTexelLevelsPerPixelRay * double(eyeWidth) * double(eyeHeight) *
+                           double(out.raysPerSide * out.raysPerSide);
+  out.affordableResolution = 256;
+  while (out.affordableResolution < 2048 && mapBuildWork(out.affordableResolution + 128) <= traceWork)
+    out.affordableResolution += 128;
+  out.resolution = std::min(out.neededResolution,
+                            std::max(out.affordableResolution, out.halfAreaResolution));
+  out.smallestPenumbraWorld = percentile(widthsWorld, 0.02);
+  out.smallestPenumbraTexels = percentile(texelsPerResolution, 0.02) * out.resolution;
+  if (out.resolution == out.neededResolution) {
+    out.reasons.push_back(format(
+        "map %.0f: 98%% of the penumbra area in view spans at least 6 texels; the narrowest "
+        "penumbra is %.3g world units wide, %.2g texels",
+        out.resolution, out.smallestPenumbraWorld, out.smallestPenumbraTexels));
+  } else {
+    out.reasons.push_back(format(
+        "map %.0f, not the %.0f that would give 98%% of the penumbra area 6 texels: a larger "
+        "map's build would cost more than the trace",
+        out.resolution, out.neededResolution) +
+        format(" (%.0fx%.0f rays per pixel)", out.raysPerSide, out.raysPerSide) +
+        format(", and the penumbrae holding half that area need only %.0f", out.halfAreaResolution));
+  }
+  if (needed > 2048.0 && out.resolution == 2048)
+    out.reasons.push_back(format("the %.0f^2 map that would give it %.0f texels exceeds the "
+                                 "2048 limit: expect the narrowest shadows too sharp or too bright",
+                                 needed, kPenumbraTexels));
   out.reasons.push_back(
-      format("rays %.0fx%.0f: that penumbra is %.2g pixels wide", out.raysPerSide,
+      format("rays %.0fx%.0f: the narrowest penumbra is %.2g pixels wide", out.raysPerSide,
              out.raysPerSide, out.smallestPenumbraPixels) +
       format(", the filter averages about %.2g pixels there, and %.0f rays per pixel give at "
              "least 24 samples",

@@ -9,15 +9,24 @@
 // 2. Penumbra width at that receiver (parallel planes, as PCSS): w = light's smaller side x
 //    (gap / distance from the light plane to the occluder), gaps measured along the light's
 //    axis. Only probes whose receiver lies in the camera's view count (the view decides).
-// 3. Resolution: the smallest penumbra (the 2nd percentile of the probes, robust to a
-//    single sliver) should span kPenumbraTexels (6) texels of the map at the receiver's depth:
-//    resolution = kPenumbraTexels x 2 z tan(fov/2) / w, rounded up to a multiple of 128, in
-//    [256, 2048]. Where 2048 is not enough the reason says so (the limit of depth maps,
-//    thesis §4.1, Atty 2006 §4.2).
-// 4. Rays: the filter cannot blur wider than the penumbra (filter.penumbra_scale), so where
+// 3. Rays: the filter cannot blur wider than the penumbra (filter.penumbra_scale), so where
 //    the smallest penumbra is a few pixels wide the noise must go with more rays. Effective
 //    samples = n^2 x the filter's pixel count pi sigma^2, sigma = min(2, 0.5 x width in
-//    pixels); n is the smallest n >= 2 with at least kEffectiveSamples (24), at most 8.
+//    pixels), width the 2nd percentile of the probes; n is the smallest n >= 2 with at least
+//    kEffectiveSamples (24), at most 8.
+// 4. Resolution, weighing what the penumbrae need against what the map costs (session 4):
+//    each probe stands for a strip of penumbra (its width times its quarter edge's shadow,
+//    in eye pixels). needed: the map on which 98% of that area spans kPenumbraTexels (6)
+//    texels at its receiver's depth (resolution = 6 x 2 z tan(fov/2) / w). affordable: the
+//    largest map whose build (N-buffer log2 R + 1 levels, light layers about 2: R^2 (log2 R + 3)
+//    texel-levels)
+//    costs no more than the trace would with these rays over every eye pixel
+//    (kTexelLevelsPerPixelRay texel-levels per pixel and ray, measured on llvmpipe).
+//    halfArea: the map on which the penumbrae holding half the area span 6 texels. The map
+//    is min(needed, max(affordable, halfArea)): beyond the trace's cost only when the narrow
+//    penumbrae are most of the shadow in view (a contact shadow), never beyond the need.
+//    Multiples of 128 in [256, 2048]; where 2048 is not enough the reason says so (the limit
+//    of depth maps, thesis §4.1, Atty 2006 §4.2).
 // Rasterizing the occluders rounds their outlines to texels, which shifts a penumbra by up
 // to half a texel: with 6 texels per penumbra that is a bias of up to 8% across it.
 // 5. Layers: the depth complexity along the probes' light rays (occluder surfaces crossed
@@ -37,6 +46,9 @@ struct AutoSettings {
   int raysPerSide = 2;
   // The measurements behind the choice.
   int probes = 0;                       // probes whose penumbra falls in view
+  int neededResolution = 512;           // 98% of the penumbra area at 6 texels
+  int affordableResolution = 512;       // the largest whose build costs <= the trace
+  int halfAreaResolution = 512;         // half the penumbra area at 6 texels
   double smallestPenumbraWorld = 0;     // 2nd percentile, world units at the receiver
   double smallestPenumbraTexels = 0;    // the same in texels of the chosen map
   double smallestPenumbraPixels = 0;    // and in eye pixels
@@ -47,6 +59,11 @@ struct AutoSettings {
 inline constexpr double kPenumbraTexels = 6.0;
 inline constexpr double kEffectiveSamples = 24.0;
 inline constexpr int kMaxProbes = 20000;
+// One ray for one eye pixel costs about this many texel-levels of map build. On llvmpipe,
+// bench/auto-pareto/spheres (128x96, the 01:04 UTC run of session 3): light layers +
+// N-buffer 6.5e-6 ms per texel-level at map 512 (20.5 ms) and 2048 (383 ms); the trace
+// 5.5e-5 ms per eye pixel and ray at 2x2, 4.0e-5 at 4x4, 6.3e-5 at 5x5 (ratios 6-10).
+inline constexpr double kTexelLevelsPerPixelRay = 8.0;
 
 // The choice for this scene, light frame (Eq 3.1) and view (eye size in pixels). Cached:
 // the same scene (same object), light, camera and size return the stored answer; the

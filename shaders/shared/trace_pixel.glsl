@@ -59,7 +59,7 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
   int raysPerSide = trace.config.x, layers = trace.config.w, search = trace.config.z;
   int rayCount = raysPerSide * raysPerSide;
   int unblocked = 0;
-  wsPosition = normalOffsetPoint(wsPosition, wsNormal);
+  wsPosition = normalOffsetPoint(wsPosition, wsNormal, zBounds.x);  // capped by zNearMin
   float receiverZ = lightMapCoords(wsPosition).z;
   for (int i = 0; i < rayCount; ++i) {
     gRayIndex = i;

@@ -20,16 +20,18 @@ public:
         Param::integerOrAuto(
             "resolution",
             "Shadow-map size in texels (square): the light layers, the N-buffer and every "
-            "depth-map method's maps. auto (the default): from the smallest penumbra in view, "
-            "so that it spans 6 texels, in [256, 2048] (app/scene/auto_settings.h; the choice "
-            "and its reasons: the auto.* counters and the inspector). The limit of every "
+            "depth-map method's maps. auto (the default): so that 98% of the penumbra area in "
+            "view spans 6 texels, but no larger than the map whose build costs what the trace "
+            "does unless the narrow penumbrae hold half the shadow (a contact shadow), in "
+            "[256, 2048] (app/scene/auto_settings.h; the choice and its reasons: the auto.* "
+            "counters and the inspector). The limit of every "
             "depth-map method (thesis §4.1, Atty 2006 §4.2): a penumbra narrower than a few "
             "texels is lost. A plate 0.06 above the ground under a 1x1 light 3 units up casts "
             "a 0.0204-wide contact penumbra; at fov 90 one texel there is 0.054 wide at 128^2 "
             "(the penumbra is 0.38 texel), 0.013 at 512^2, 0.0034 at 2048^2 (6 texels). "
             "Measured there (trace, 8x8 rays, 256x192, normal_offset 0): mean |error| in "
-            "shadow 0.094, all too bright, at 128^2; 0.0125 at 2048^2. With normal_offset 1 "
-            "at 128^2 the shadow is lost (0.64; see normal_offset).",
+            "shadow 0.094, all too bright, at 128^2; 0.0125 at 2048^2 (0.106 at 128^2 with "
+            "the default normal_offset, capped by the contact gap).",
             512, 128, 2048),
         Param::real("fov_degrees",
                     "Field of view of the light's frustum (Eq 3.1). Wider covers more of the "
@@ -50,11 +52,14 @@ public:
                     "light in front of it) otherwise stay inside the occluder's own near/far "
                     "interval for texels and are blocked (issue 12's box: side faces 0.07 too "
                     "dark, mean |error| in shadow 0.042 at 0, 0.029 at 1, 0.028 at 1.5, while "
-                    "the contact plate goes 0.014 -> 0.018 -> 0.023). Keep the offset well "
-                    "below the gap between a receiver and its nearest occluder: at 128^2 one "
-                    "texel (0.054) is almost the contact plate's 0.06 gap and the trace loses "
-                    "its shadow (mean |error| in shadow 0.64, 0.094 at 0). auto's map keeps a "
-                    "texel under a sixth of the narrowest penumbra in view.",
+                    "the contact plate goes 0.014 -> 0.018 -> 0.023). Capped by the contact gap: "
+                    "the offset may bring the point towards the light by at most a quarter of "
+                    "the depth gap to the nearest occluder its rays can meet (classify's "
+                    "zNearMin; none within the Eq 3.2 bias: the receiver's own surface), so a "
+                    "face it moves sideways (the box's) keeps it all. At 128^2 one texel "
+                    "(0.054) is almost the contact plate's 0.06 gap: uncapped, the trace lost "
+                    "that shadow (mean |error| in shadow 0.64); capped 0.106 (0.094 with no "
+                    "offset).",
                     1.0, 0, 4),
         Param::choiceOrAuto("layers", "Depth layers that model the occluders, for classification and "
                                 "the trace: one (near only, §3.2), two (near + far, §3.3) or "
@@ -97,6 +102,11 @@ public:
     frame.light.mapSize = param("resolution").automatic ? chosen.resolution : param("resolution").asInt();
     frame.light.layers = param("layers").automatic ? chosen.layers : param("layers").asInt() + 1;
     frame.counters["auto.resolution"] = chosen.resolution;
+    // What the resolution weighed: 98% of the penumbra area at 6 texels, the largest map
+    // whose build costs no more than the trace, half the area at 6 texels.
+    frame.counters["auto.res_needed"] = chosen.neededResolution;
+    frame.counters["auto.res_affordable"] = chosen.affordableResolution;
+    frame.counters["auto.res_half_area"] = chosen.halfAreaResolution;
     frame.counters["auto.layers"] = chosen.layers;
     frame.counters["auto.rays_per_side"] = chosen.raysPerSide;
     frame.counters["auto.probes_in_view"] = chosen.probes;

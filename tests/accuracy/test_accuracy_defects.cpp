@@ -102,6 +102,54 @@ TEST(AccuracyDefects, FilterDoesNotBleedAcrossContactEdges) {
   EXPECT_LE(filtered.meanAbsInShadow, 1.1 * traced.meanAbsInShadow);
 }
 
+// 7. The normal offset (light.normal_offset, docs/accuracy.md fix 7) is capped by the
+//    contact distance (bias.glsl). At a fixed 128^2 map one texel at the contact plate is
+//    0.054 wide, almost its 0.06 gap: the full one-texel offset plus the Eq 3.2 bias (0.7
+//    texel) lifted every ray's end above the plate and the shadow under it was lost (before:
+//    trace 8x8, umbra mean +1.0, mean |error| in shadow 0.638). The bound from the texel
+//    size: a depth map puts the plate's outline within half a texel of the true one, so a
+//    ground point in the exact umbra more than half a texel inside its edge is in the umbra
+//    of the rasterized plate too, and must be dark. Over the whole shadow a coarse bound: at
+//    most twice the error with no offset at all (the depth map's own limit at this texel
+//    size; uncapped it was 6.8x, capped 1.13x: pixels at the plate's sides whose texel the
+//    rasterized plate does not cover, where the hard shadow is as wrong).
+TEST(AccuracyDefects, NormalOffsetKeepsContactShadowsAtCoarseMaps) {
+  const std::vector<std::string> sets = {"light.resolution=128", "trace.rays=8"};
+  PipelineRun run(makeAnalyticScene("plate_contact"), sets, 256, 192);
+  const std::vector<double> exact = analyticImage(run);
+  const std::vector<float> traced = run.read("trace.visibility");
+  const std::vector<float> positions = run.read("gbuffer.wsPosition");
+  const LightFrame& light = run.frame->light;
+  const glm::vec3 plateCentre(0, 0.06f, 0);
+  const float texel = 2.0f * glm::dot(plateCentre - light.wsProjectionPoint, light.forward) *
+                      std::max(light.tanHalfFovX, light.tanHalfFovY) / 128.0f;
+  // The exact umbra starts half the contact penumbra (PCSS: 1 x 0.06 / 2.94 = 0.0204) inside
+  // the outline; the rasterized plate's umbra at most half a texel farther in.
+  const float deep = 0.5f * 0.0204f + 0.5f * texel;
+  size_t deepPixels = 0;
+  double deepSum = 0;
+  for (size_t i = 0; i < exact.size(); ++i) {
+    const float x = positions[4 * i], y = positions[4 * i + 1], z = positions[4 * i + 2];
+    const float inside = 0.5f - std::max(std::fabs(x), std::fabs(z));  // from the outline
+    if (exact[i] < 0 || exact[i] >= 0.1 || std::fabs(y) > 1e-3f || inside <= deep) continue;
+    ++deepPixels;
+    deepSum += traced[i];
+  }
+  std::printf("plate_contact 128^2: texel %.4f, %zu umbra pixels more than %.4f inside the "
+              "outline, mean traced visibility %.4f\n",
+              texel, deepPixels, deep, deepPixels ? deepSum / double(deepPixels) : 0.0);
+  EXPECT_NEAR(texel, 0.054, 0.003);
+  EXPECT_GT(deepPixels, 10u);
+  EXPECT_LE(deepSum / double(std::max<size_t>(deepPixels, 1)), 0.05);
+  const AnalyticError capped = compareWithAnalytic(traced, exact);
+  std::vector<std::string> noOffset = sets;
+  noOffset.push_back("light.normal_offset=0");
+  const AnalyticError none = measure("plate_contact", noOffset, "trace.visibility");
+  std::printf("plate_contact 128^2 trace: mean |error| in shadow %.4f (offset capped), %.4f "
+              "(no offset)\n", capped.meanAbsInShadow, none.meanAbsInShadow);
+  EXPECT_LE(capped.meanAbsInShadow, 2.0 * none.meanAbsInShadow);
+}
+
 // 4. A tilted zero-thickness sheet does not leak (light_layers.close_risers): at 8x8 rays
 //    and a 2048^2 map, the mean visibility error where the exact visibility is below 0.1
 //    (before: +0.0105; measured with close_risers off to show the test sees the leak).

@@ -39,12 +39,20 @@ double largestTraceBias(const PipelineRun& run, double z) {
 
 // The point the trace and classify start from: the receiver moved light.normal_offset texel
 // widths (at its depth) along its normal (shaders/shared/bias.glsl, normalOffsetPoint).
+// The point classify and the trace start from (shaders/shared/bias.glsl): moved
+// light.normal_offset texels along the normal, but towards the light by at most a quarter of
+// the gap to the pixel's zNearMin (lsDepth, zRange.x) where that gap exceeds the Eq 3.2 bias.
 glm::dvec3 offsetReceiver(const PipelineRun& run, const LightLayersOnCpu& layers,
-                          const glm::dvec3& receiver, const glm::dvec3& normal) {
+                          const glm::dvec3& receiver, const glm::dvec3& normal, double zNearMin) {
   const LightFrame& light = run.frame->light;
-  const double texelWorld = 2.0 * layers.toMap(receiver).z *
-                            std::max(light.tanHalfFovX, light.tanHalfFovY) / light.mapSize;
-  return receiver + normal * (run.pipeline->param("light.normal_offset").asFloat() * texelWorld);
+  const double z = layers.toMap(receiver).z;
+  const double texelWorld = 2.0 * z * std::max(light.tanHalfFovX, light.tanHalfFovY) / light.mapSize;
+  double offset = run.pipeline->param("light.normal_offset").asFloat() * texelWorld;
+  const double towardsLight = -glm::dot(normal, glm::dvec3(light.forward));
+  const double gap = z - layers.toZ(zNearMin);
+  const double ownSurface = run.pipeline->param("light.bias").asFloat() + std::sqrt(0.5) * texelWorld;
+  if (towardsLight > 0 && gap > ownSurface) offset = std::min(offset, 0.25 * gap / towardsLight);
+  return receiver + normal * offset;
 }
 
 struct Findings {
@@ -60,6 +68,7 @@ struct Findings {
 Findings checkClassification(const PipelineRun& run) {
   const LightLayersOnCpu layers(run);
   const auto mask = run.read("classify.mask");
+  const auto zRange = run.read("classify.zRange");
   const auto positions = run.read("gbuffer.wsPosition");
   const auto normals = run.read("gbuffer.wsNormal");
   const LightFrame& light = run.frame->light;
@@ -73,7 +82,7 @@ Findings checkClassification(const PipelineRun& run) {
     if (pixelClass == kClassPenumbra) { ++found.penumbra; continue; }
     const glm::dvec3 receiver = offsetReceiver(
         run, layers, {positions[i * 4], positions[i * 4 + 1], positions[i * 4 + 2]},
-        {normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]});
+        {normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]}, zRange[i * 4]);
     // The trace's rays end between these depths (shortened by the bias, thesis §3): "lit"
     // must hold for the longest ray, "umbra" for the shortest.
     const double z = layers.toMap(receiver).z;
@@ -238,7 +247,7 @@ TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
     if (pixelClass == kClassBackground) continue;
     const glm::dvec3 receiver = offsetReceiver(
         run, layers, {positions[i * 4], positions[i * 4 + 1], positions[i * 4 + 2]},
-        {normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]});
+        {normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]}, bounds[0]);
     const glm::dvec3 map = layers.toMap(receiver);
     const double u = map.x / layers.width(), v = map.y / layers.height();
     const double margin = 1e-4;
