@@ -1,6 +1,7 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): per eye pixel, bounds on the
 // occluder depths that any ray from the light to the receiver can meet, refined by
-// iterating Eq 3.3 over the N-buffer, and the class they imply:
+// iterating Eq 3.3 over the N-buffer (exact bounds) or the min-max mipmap (conservative
+// bounds, issue 14), and the class they imply:
 //   lit      receiver depth <= zNearMin: nothing can block any ray. No bias is subtracted:
 //            a ray's end moves towards the light by the trace's bias along the *ray*, which
 //            may be almost parallel to the map, so the receiver's own depth is the only
@@ -12,12 +13,16 @@
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/nbuffer.glsl"
+#include "shared/minmax.glsl"
 #include "shared/classify.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
 layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
 layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
+layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
+layout(binding = CLASSIFY_NEAR_UNIT) uniform sampler2D nearLayer;
+layout(binding = CLASSIFY_FAR_UNIT) uniform sampler2D farLayer;
 layout(binding = CLASSIFY_MASK_IMAGE, r32f) uniform writeonly image2D maskImage;
 layout(binding = CLASSIFY_ZRANGE_IMAGE, rgba32f) uniform writeonly image2D zRangeImage;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
@@ -25,6 +30,7 @@ layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
 };
 layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
 layout(location = CLASSIFY_UMBRA_TEST_LOCATION) uniform bool uUmbraTest;
+layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;  // 0: N-buffer
 
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
   uint listCount;  // = penumbra + umbra
@@ -42,11 +48,21 @@ bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
   return centre - spread > 0.0;  // the least n . (corner - p) over the four corners
 }
 
+// Bounds over the texel rectangle [lo, hi] from the chosen hierarchy.
+vec3 boundsOverRect(ivec2 lo, ivec2 hi, ivec2 mapSize) {
+  return uMinMaxCells > 0
+             ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, lo, hi, mapSize, uMinMaxCells)
+             : nbufferBoundsOverRect(nbufferLevels, lo, hi);
+}
+
 // Writes the bounds (zNearMin, zNearMax, zFarMax, receiver lsDepth) and returns the class.
 int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
-  ivec3 size = textureSize(nbufferLevels, 0);
-  // The coarsest level's window is the whole map: the starting bounds (§3.6).
-  vec3 bounds = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
+  ivec2 size = ivec2(light.mapSize.xy);
+  // The coarsest level's window (the min-max mipmap's one top cell) is the whole map: the
+  // starting bounds (§3.6).
+  vec3 bounds = uMinMaxCells > 0 ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0),
+                                                        size - 1, size, 1)
+                                 : texelFetch(nbufferLevels, ivec3(0, 0, textureSize(nbufferLevels, 0).z - 1), 0).xyz;
   wsPosition = normalOffsetPoint(wsPosition, wsNormal);
   vec3 map = lightMapCoords(wsPosition);
   float receiverLsDepth = zToLsDepth(map.z);
@@ -62,8 +78,8 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   float endLsDepth = receiverLsDepth;                         // the deepest any ray can end
   float shallowestEnd = zToLsDepth(map.z - largestBias);      // the shallowest
   for (int i = 0; i < uIterations && endLsDepth > bounds.x; ++i) {
-    ivec4 rect = reachableTexels(map.xy, map.z, lsDepthToZ(bounds.x), size.xy);
-    vec3 refined = nbufferBoundsOverRect(nbufferLevels, rect.xy, rect.zw);
+    ivec4 rect = reachableTexels(map.xy, map.z, lsDepthToZ(bounds.x), size);
+    vec3 refined = boundsOverRect(rect.xy, rect.zw, size);
     // Each region lies inside the previous one, so every bound found so far still holds:
     // keep the tightest (zNearMin monotone up, the maxima monotone down).
     bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
