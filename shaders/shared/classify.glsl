@@ -58,7 +58,10 @@ vec3 nbufferBoundsOverRect(sampler2DArray levels, ivec2 lo, ivec2 hi) {
 vec3 minmaxBoundsOverRect(sampler2D atlas, sampler2D nearLayer, sampler2D farLayer, ivec2 lo,
                           ivec2 hi, ivec2 mapSize, int cells) {
   int top = max(mapSize.x, mapSize.y) <= 1 ? 0 : findMSB(max(mapSize.x, mapSize.y) - 1) + 1;
-  int level = 0;
+  // (hi >> L) - (lo >> L) >= (hi - lo) >> L, so no level below the smallest with
+  // ((hi - lo) >> L) <= cells - 1 can do; from there at most one more step is needed.
+  int spread = max(hi.x - lo.x, hi.y - lo.y);
+  int level = min(spread < cells ? 0 : findMSB(spread / cells) + 1, top);
   while (level < top && any(greaterThan((hi >> level) - (lo >> level), ivec2(cells - 1)))) ++level;
   ivec2 first = lo >> level, last = hi >> level;
   vec3 bounds = vec3(1.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
