@@ -1,6 +1,7 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): per eye pixel, bounds on the
 // occluder depths that any ray from the light to the receiver can meet, refined by
-// iterating Eq 3.3 over the N-buffer, and the class they imply:
+// iterating Eq 3.3 over the N-buffer (exact bounds) or the min-max mipmap (conservative
+// bounds, issue 14), and the class they imply:
 //   lit      receiver depth <= zNearMin: nothing can block any ray. No bias is subtracted:
 //            a ray's end moves towards the light by the trace's bias along the *ray*, which
 //            may be almost parallel to the map, so the receiver's own depth is the only
@@ -12,12 +13,16 @@
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/nbuffer.glsl"
+#include "shared/minmax.glsl"
 #include "shared/classify.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
 layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
 layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
+layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
+layout(binding = CLASSIFY_NEAR_UNIT) uniform sampler2D nearLayer;
+layout(binding = CLASSIFY_FAR_UNIT) uniform sampler2D farLayer;
 layout(binding = CLASSIFY_MASK_IMAGE, r32f) uniform writeonly image2D maskImage;
 layout(binding = CLASSIFY_ZRANGE_IMAGE, rgba32f) uniform writeonly image2D zRangeImage;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
@@ -25,6 +30,7 @@ layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
 };
 layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
 layout(location = CLASSIFY_UMBRA_TEST_LOCATION) uniform bool uUmbraTest;
+layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;  // 0: N-buffer
 
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
   uint listCount;  // = penumbra + umbra
@@ -42,6 +48,13 @@ bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
   return centre - spread > 0.0;  // the least n . (corner - p) over the four corners
 }
 
+// Bounds over the texel rectangle [lo, hi] from the chosen hierarchy.
+vec3 boundsOverRect(ivec2 lo, ivec2 hi, ivec2 mapSize) {
+  return uMinMaxCells > 0
+             ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, lo, hi, mapSize, uMinMaxCells)
+             : nbufferBoundsOverRect(nbufferLevels, lo, hi);
+}
+
 // Eq 3.3 iterated over the region any ray to point a or point b (map coordinates, light
 // depth) can cross: the union of the two squares. For the points between a and b the
 // squares' corners move monotonically, so the union holds them too (within the 0.01-texel
@@ -52,7 +65,7 @@ vec3 boundsForRays(vec3 a, vec3 b, vec3 bounds, ivec2 mapSize) {
     float occluderZ = lsDepthToZ(bounds.x);
     ivec4 ra = reachableTexels(a.xy, a.z, occluderZ, mapSize);
     ivec4 rb = reachableTexels(b.xy, b.z, occluderZ, mapSize);
-    vec3 refined = nbufferBoundsOverRect(nbufferLevels, min(ra.xy, rb.xy), max(ra.zw, rb.zw));
+    vec3 refined = boundsOverRect(min(ra.xy, rb.xy), max(ra.zw, rb.zw), mapSize);
     // Each region lies inside the previous one, so every bound found so far still holds:
     // keep the tightest (zNearMin monotone up, the maxima monotone down).
     bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
@@ -67,9 +80,12 @@ vec3 boundsForRays(vec3 a, vec3 b, vec3 bounds, ivec2 mapSize) {
 // the offset, the bounds over every point from none to the full offset instead (a lower
 // zNearMin, so a cap at most as tight, valid wherever it puts the point).
 int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
-  ivec3 size = textureSize(nbufferLevels, 0);
-  // The coarsest level's window is the whole map: the starting bounds (§3.6).
-  vec3 whole = texelFetch(nbufferLevels, ivec3(0, 0, size.z - 1), 0).xyz;
+  ivec2 size = ivec2(light.mapSize.xy);
+  // The coarsest level's window (the min-max mipmap's one top cell) is the whole map: the
+  // starting bounds (§3.6).
+  vec3 whole = uMinMaxCells > 0 ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0),
+                                                       size - 1, size, 1)
+                                : texelFetch(nbufferLevels, ivec3(0, 0, textureSize(nbufferLevels, 0).z - 1), 0).xyz;
   vec3 map = lightMapCoords(wsPosition + wsNormal * fullNormalOffset(wsPosition));
   zRange = vec4(whole, zToLsDepth(map.z));
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
@@ -78,9 +94,9 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
     zRange.w = isinf(zRange.w) || isnan(zRange.w) ? 0.0 : zRange.w;
     return CLASS_OUTSIDE;
   }
-  vec3 bounds = boundsForRays(map, map, whole, size.xy);
+  vec3 bounds = boundsForRays(map, map, whole, size);
   if (normalOffsetDistance(wsPosition, wsNormal, bounds.x) < fullNormalOffset(wsPosition))
-    bounds = boundsForRays(map, lightMapCoords(wsPosition), whole, size.xy);
+    bounds = boundsForRays(map, lightMapCoords(wsPosition), whole, size);
   zRange.xyz = bounds;
   // The capped point (the trace starts its rays there too).
   wsPosition = normalOffsetPoint(wsPosition, wsNormal, bounds.x);

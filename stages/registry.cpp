@@ -41,7 +41,7 @@ std::vector<StageEntry> makeRegistry() {
   add(makeLightLayersStage());                       // §3.3
   add(makeNBufferStage());                           // §3.5
   add(makeMinMaxStage());                            // §5.1 (issue 14)
-  add(makeClassifyStage(), {{"levels", "nbuffer.levels"}});  // §3.6, Eq 3.3
+  add(makeClassifyStage());                          // §3.6, Eq 3.3
   add(makeTraceStage());                             // §3.1-3.7, Alg. 2
   add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2
   add(makeHardShadowStage());                        // §2.3

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "bench/bench_measure.h"
@@ -97,8 +98,12 @@ int runBenchCompare(const BenchCompareOptions& options) {
       side.errorInShadow = side.frame->counters.at("error.meanAbsInShadow");
     }
   // 4. The table: one row per side; ratios against the first side.
-  std::vector<std::string> stages;
-  for (const auto& [stage, values] : sides[0].stageMs) stages.push_back(stage);
+  // Columns: every stage that ran on any side (a side may run a stage the first does not:
+  // trace.hierarchy=minmax builds the min-max mipmap instead of the N-buffer).
+  std::set<std::string> ranOnAnySide;
+  for (const Side& side : sides)
+    for (const auto& [stage, values] : side.stageMs) ranOnAnySide.insert(stage);
+  const std::vector<std::string> stages(ranOnAnySide.begin(), ranOnAnySide.end());
   std::ostringstream table;
   table << "## " << (options.title.empty() ? "bench-compare" : options.title) << "\n\n"
         << "Machine: " << session.context->renderer() << ". Scene " << options.scene << ", eye "

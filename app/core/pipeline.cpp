@@ -63,7 +63,13 @@ void Pipeline::wire(std::vector<StageEntry>& registry) {
     for (const Input& input : consumer->inputs()) {
       const std::string slot = where + ", input '" + input.name + "'";
       Wire wire{consumer->name(), input.name, {}};
-      if (input.isChoice()) {
+      if (input.followsChoice()) {
+        // A slot following another stage's choice: the same candidates, checked below.
+        for (const auto& producer : stages_)
+          for (const Output& output : producer->outputs())
+            if (producer.get() != consumer.get() && (output.roles & input.chooseRole))
+              wire.sources.push_back(producer->name() + "." + output.name);
+      } else if (input.isChoice()) {
         // A choice slot: every output carrying the role, one option per producing stage.
         Param& choice = consumer->param(input.choiceParam);
         choice.options.clear();
@@ -128,6 +134,29 @@ void Pipeline::wire(std::vector<StageEntry>& registry) {
       }
       wires_.push_back(std::move(wire));
     }
+  }
+  // 1b. A following slot lists the same producers as the choice it follows (in order).
+  for (const Wire& wire : wires_) {
+    const Input& input = stage(wire.consumer).input(wire.slot);
+    if (!input.followsChoice()) continue;
+    const std::string slot = "stage '" + wire.consumer + "', input '" + wire.slot + "'";
+    Param* followed = nullptr;
+    try {
+      followed = &param(input.choiceParam);
+    } catch (const std::out_of_range&) {
+      throw std::invalid_argument(slot + ": follows '" + input.choiceParam +
+                                  "', which is no parameter");
+    }
+    std::vector<std::string> names;
+    for (const std::string& source : wire.sources) names.push_back(source.substr(0, source.find('.')));
+    if (input.allowNone) names.push_back("none");
+    if (followed->type != Param::Type::Enum || followed->options != names)
+      throw std::invalid_argument(slot + ": its candidates (" + joined(names) + ") are not the "
+                                  "options of '" + input.choiceParam + "', which it follows");
+    for (const std::string& source : wire.sources)
+      if (stage(source.substr(0, source.find('.'))).output(source.substr(source.find('.') + 1))
+              .format != input.format)
+        throw std::invalid_argument(slot + ": candidate " + source + " has another format");
   }
 }
 
@@ -240,7 +269,9 @@ std::string Pipeline::source(const std::string& stageName, const std::string& sl
   const Wire& wire = wireOf(stageName, slot);
   const Input& input = stage(stageName).input(slot);
   if (!input.isChoice()) return wire.sources.front();
-  const std::string& chosen = stage(stageName).param(input.choiceParam).asEnum();
+  const std::string& chosen = input.followsChoice()
+                                  ? param(input.choiceParam).asEnum()
+                                  : stage(stageName).param(input.choiceParam).asEnum();
   return chosen == "none" ? "" : methodOutput(chosen);
 }
 

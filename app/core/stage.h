@@ -57,13 +57,18 @@ struct Input {
   // A *choice* slot is wired to one of the outputs carrying `chooseRole`, selected by this
   // stage's Enum parameter `choiceParam` (composite.shadow, error.method). The pipeline fills
   // that parameter's options with the producers' stage names, in registry order, plus "none"
-  // when `allowNone`; `defaultChoice` names the initial option.
+  // when `allowNone`; `defaultChoice` names the initial option. A `choiceParam` of the form
+  // "stage.key" *follows* another stage's choice instead (classify's hierarchy follows
+  // trace.hierarchy: one switch, and the stage that is not chosen does not run); the
+  // pipeline checks that both list the same producers, and the stage itself still reads
+  // no other stage's parameter.
   unsigned chooseRole = kRoleNone;
   std::string choiceParam;
   std::string defaultChoice;
   bool allowNone = false;
 
   bool isChoice() const { return chooseRole != kRoleNone; }
+  bool followsChoice() const { return isChoice() && choiceParam.find('.') != std::string::npos; }
   static Input texture(std::string name, std::string doc, GLenum format = 0) {
     Input input;
     input.name = std::move(name), input.doc = std::move(doc), input.format = format;

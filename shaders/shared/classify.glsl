@@ -1,6 +1,6 @@
 // Penumbra classification helpers (thesis §3.6, Eq 3.3, Fig 3.7), shared by stage
 // `classify` and any pass that wants occluder bounds over a region of the light map.
-// Needs frame.glsl and nbuffer.glsl included before.
+// Needs frame.glsl, nbuffer.glsl and minmax.glsl included before.
 
 // The texel rectangle (lo.xy, hi.xy, inclusive) that any ray from any point of the light to
 // a receiver can cross at light depths >= occluderZ (linear distances along the light
@@ -46,4 +46,35 @@ vec3 nbufferBoundsOverRect(sampler2DArray levels, ivec2 lo, ivec2 hi) {
   vec4 d = texelFetch(levels, ivec3(second, level), 0);
   return vec3(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)),
               max(max(a.z, b.z), max(c.z, d.z)));
+}
+
+// The same bounds from the min-max mipmap (issue 14): conservative, not exact. At the finest
+// level whose aligned cells cover [lo, hi] with at most `cells` of them per axis, min/max
+// over those cells: they hold the rectangle, so zNearMin can only be lower and the maxima
+// higher than over the rectangle itself; a pixel can move from lit or umbra to penumbra,
+// never back (tests/stages/test_classify.cpp counts how many). More cells per axis: a
+// finer level, a cover closer to the rectangle, more fetches (up to cells^2). Level 0 is the
+// layers (near, near, far), not stored in the atlas (minmax.glsl).
+vec3 minmaxBoundsOverRect(sampler2D atlas, sampler2D nearLayer, sampler2D farLayer, ivec2 lo,
+                          ivec2 hi, ivec2 mapSize, int cells) {
+  int top = max(mapSize.x, mapSize.y) <= 1 ? 0 : findMSB(max(mapSize.x, mapSize.y) - 1) + 1;
+  // (hi >> L) - (lo >> L) >= (hi - lo) >> L, so no level below the smallest with
+  // ((hi - lo) >> L) <= cells - 1 can do; from there at most one more step is needed.
+  int spread = max(hi.x - lo.x, hi.y - lo.y);
+  int level = min(spread < cells ? 0 : findMSB(spread / cells) + 1, top);
+  while (level < top && any(greaterThan((hi >> level) - (lo >> level), ivec2(cells - 1)))) ++level;
+  ivec2 first = lo >> level, last = hi >> level;
+  vec3 bounds = vec3(1.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
+  for (int y = first.y; y <= last.y; ++y)
+    for (int x = first.x; x <= last.x; ++x) {
+      vec3 cell;
+      if (level == 0) {
+        float nearDepth = texelFetch(nearLayer, ivec2(x, y), 0).r;
+        cell = vec3(nearDepth, nearDepth, texelFetch(farLayer, ivec2(x, y), 0).r);
+      } else {
+        cell = texelFetch(atlas, minmaxLevelOrigin(level, mapSize) + ivec2(x, y), 0).xyz;
+      }
+      bounds = vec3(min(bounds.x, cell.x), max(bounds.yz, cell.yz));
+    }
+  return bounds;
 }

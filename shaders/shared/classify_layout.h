@@ -4,11 +4,16 @@
 // Units and locations of classify.comp (C++: stages/monte_carlo/classify.cpp).
 #define CLASSIFY_WS_POSITION_UNIT 0
 #define CLASSIFY_WS_NORMAL_UNIT 1
-#define CLASSIFY_LEVELS_UNIT 2
+#define CLASSIFY_LEVELS_UNIT 2      // the N-buffer (sampler2DArray)
+#define CLASSIFY_MINMAX_UNIT 3      // or the min-max mipmap's atlas (sampler2D, minmax.glsl),
+#define CLASSIFY_NEAR_UNIT 4        // whose level 0 is the near
+#define CLASSIFY_FAR_UNIT 5         // and far layers
 #define CLASSIFY_MASK_IMAGE 0
 #define CLASSIFY_ZRANGE_IMAGE 1
 #define CLASSIFY_ITERATIONS_LOCATION 1
 #define CLASSIFY_UMBRA_TEST_LOCATION 2
+#define CLASSIFY_MINMAX_CELLS_LOCATION 3  // int: cells per axis over the min-max mipmap
+                                          // (classify.minmax_cells); 0: the N-buffer
 
 #define CLASSIFY_COUNTS_BINDING 2
 #define CLASSIFY_CLASS_COUNT 5

@@ -1,6 +1,8 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): lit / penumbra / umbra per eye
 // pixel from occluder-depth bounds over the region of the light map that the pixel's rays
-// can cross, refined iteratively over the N-buffer (after Guennebaud et al. 2006). The
+// can cross, refined iteratively over the hierarchy the trace reads (after Guennebaud et al.
+// 2006): the N-buffer (exact bounds over the region) or the min-max mipmap (the at most
+// 2 x 2 aligned cells covering it: conservative, issue 14), so a frame builds only one. The
 // bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
 #include <cstddef>
 
@@ -18,14 +20,28 @@ static_assert(offsetof(gpu::ClassifyCounts, pixels) == 0);
 static_assert(sizeof(gpu::ClassifyCounts) == 32);  // std430: uint[8], stride 4
 static_assert(CLASS_OUTSIDE + 1 == CLASSIFY_CLASS_COUNT);
 static_assert(gpu::distinctBelow({CLASSIFY_WS_POSITION_UNIT, CLASSIFY_WS_NORMAL_UNIT,
-                                  CLASSIFY_LEVELS_UNIT}, gpu::kTextureUnits));
+                                  CLASSIFY_LEVELS_UNIT, CLASSIFY_MINMAX_UNIT, CLASSIFY_NEAR_UNIT,
+                                  CLASSIFY_FAR_UNIT}, gpu::kTextureUnits));
 static_assert(gpu::distinctBelow({CLASSIFY_MASK_IMAGE, CLASSIFY_ZRANGE_IMAGE}, gpu::kImageUnits));
 static_assert(gpu::distinctBelow({CLASSIFY_COUNTS_BINDING, CLASSIFY_LIST_BINDING},
                                  gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, CLASSIFY_ITERATIONS_LOCATION,
-                                  CLASSIFY_UMBRA_TEST_LOCATION}, gpu::kUniformLocations));
+                                  CLASSIFY_UMBRA_TEST_LOCATION, CLASSIFY_MINMAX_CELLS_LOCATION},
+                                 gpu::kUniformLocations));
 
 namespace {
+
+// The hierarchy of occluder depth bounds: whichever trace.hierarchy chooses (the slot follows
+// that choice; app/core/stage.h), so the hierarchy not chosen is not built.
+Input hierarchyInput() {
+  Input input = Input::choice("levels", "Occluder depth bounds over regions of the light map "
+                              "(Eq 3.3): the N-buffer (exact over the region) or the min-max "
+                              "mipmap (over the at most 2 x 2 cells covering it), as the "
+                              "trace's hierarchy.", kRoleHierarchy, "trace.hierarchy", "nbuffer",
+                              /*allowNone=*/false);
+  input.format = GL_RGBA32F;
+  return input;
+}
 
 class ClassifyStage final : public Stage {
 public:
@@ -34,8 +50,10 @@ public:
         Input::texture("wsPosition", "Receivers (G-buffer).", GL_RGBA32F),
         Input::texture("wsNormal", "Receiver normals (the bias bound of the umbra test).",
                        GL_RGBA32F),
-        Input::texture("levels", "N-buffer: occluder depth bounds over windows (Eq 3.3).",
-                       GL_RGBA32F),
+        hierarchyInput(),
+        Input::texture("near", "Near layer (§3.2): level 0 of the min-max mipmap.",
+                       GL_DEPTH_COMPONENT32F),
+        Input::texture("far", "Far layer (§3.3): level 0 of the min-max mipmap.", GL_R32F),
         lightInput(),
     };
     outputs_ = {
@@ -60,6 +78,14 @@ public:
                                 "a ray can slip between occluders whose map images touch "
                                 "(measured: tests/stages/test_classify.cpp, stacked plates), so it "
                                 "is a heuristic there; always off with three layers.", true),
+        Param::integer("minmax_cells", "With the min-max mipmap (trace.hierarchy=minmax): the "
+                                       "most aligned cells per axis covering a pixel's region, "
+                                       "at the finest level where that many suffice. The cover "
+                                       "is larger than the region (conservative: some lit or "
+                                       "umbra pixels become penumbra); more cells cover it "
+                                       "closer, for up to cells^2 fetches (cube 640x480, "
+                                       "bench/runs_s4.md: 4 beat 2, 6 and 8 end to end).",
+                       4, 2, 8),
     };
   }
   std::string name() const override { return "classify"; }
@@ -90,7 +116,12 @@ public:
     bindLightInput(frame, *this);
     glBindTextureUnit(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(CLASSIFY_LEVELS_UNIT, frame.input(*this, "levels").id());
+    const GlTexture& levels = frame.input(*this, "levels");
+    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
+    glBindTextureUnit(minmax ? CLASSIFY_MINMAX_UNIT : CLASSIFY_LEVELS_UNIT, levels.id());
+    glBindTextureUnit(CLASSIFY_NEAR_UNIT, frame.input(*this, "near").id());
+    glBindTextureUnit(CLASSIFY_FAR_UNIT, frame.input(*this, "far").id());
+    glUniform1i(CLASSIFY_MINMAX_CELLS_LOCATION, minmax ? param("minmax_cells").asInt() : 0);
     glBindImageTexture(CLASSIFY_MASK_IMAGE, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(CLASSIFY_ZRANGE_IMAGE, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);

@@ -144,6 +144,35 @@ TEST(StageGraph, ChoiceSlotsListEveryMethodAndFollowTheirParameter) {
   EXPECT_NE(pipeline.set("viewer.shadow=unrelated"), "");  // not a method
 }
 
+// A choice slot may follow another stage's choice ("stage.key"): one parameter switches
+// both; the candidates must be the same.
+TEST(StageGraph, AChoiceSlotCanFollowAnotherStagesChoice) {
+  auto registry = [](bool mismatch) {
+    std::vector<StageEntry> r;
+    r.push_back(entry("alpha", {}, {texture("levels", GL_RGBA32F, kRoleHierarchy)}));
+    r.push_back(entry("beta", {}, {texture("levels", GL_RGBA32F, kRoleHierarchy)}));
+    Input follower = Input::choice("levels", "", kRoleHierarchy, "chooser.which", "alpha", mismatch);
+    follower.format = GL_RGBA32F;
+    r.push_back(entry("follower", {follower}, {texture("bounds")}));
+    Input chosen = Input::choice("levels", "", kRoleHierarchy, "which", "alpha", false);
+    chosen.format = GL_RGBA32F;
+    r.push_back(entry("chooser", {chosen, Input::texture("bounds", "")}, {texture("image")}, {},
+                      {Param::choice("which", "which", {}, 0)}));
+    return r;
+  };
+  Pipeline pipeline(registry(false));
+  EXPECT_EQ(pipeline.source("follower", "levels"), "alpha.levels");
+  EXPECT_EQ(pipeline.dependencies({"chooser.image"}),
+            (std::vector<std::string>{"alpha", "follower", "chooser"}));
+  ASSERT_EQ(pipeline.set("chooser.which=beta"), "");
+  EXPECT_EQ(pipeline.source("follower", "levels"), "beta.levels");
+  EXPECT_EQ(pipeline.dependencies({"chooser.image"}),
+            (std::vector<std::string>{"beta", "follower", "chooser"}));
+  // "none" among the follower's candidates but not the chooser's options: rejected.
+  const std::string error = buildError(registry(true));
+  EXPECT_NE(error.find("'chooser.which', which it follows"), std::string::npos) << error;
+}
+
 TEST(StageGraph, RevisionChangesWithEveryParameter) {
   Pipeline pipeline;
   const auto before = pipeline.revision();
@@ -192,6 +221,15 @@ TEST(StageGraph, OnlyWhatTheRequestedOutputsNeedRuns) {
                                           "classify", "trace", "filter"}));
   const auto closure = run.pipeline->dependencies({"filter.visibility"});
   EXPECT_EQ(std::set<std::string>(closure.begin(), closure.end()), ran());
+
+  // Issue 14: over the min-max mipmap, classification follows the trace's choice, so the
+  // N-buffer is not built at all.
+  ASSERT_EQ(run.pipeline->set("trace.hierarchy=minmax"), "");
+  run.pipeline->run(*run.frame, {"filter.visibility"});
+  EXPECT_EQ(ran(), (std::set<std::string>{"light", "gbuffer", "light_layers", "minmax",
+                                          "classify", "trace", "filter"}));
+  EXPECT_EQ(run.pipeline->source("classify", "levels"), "minmax.levels");
+  ASSERT_EQ(run.pipeline->set("trace.hierarchy=nbuffer"), "");
 
   run.pipeline->run(*run.frame, {"hard_shadow.visibility"});
   EXPECT_EQ(ran(), (std::set<std::string>{"light", "gbuffer", "light_layers", "hard_shadow"}));
