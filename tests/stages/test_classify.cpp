@@ -37,8 +37,6 @@ double largestTraceBias(const PipelineRun& run, double z) {
   return bias;
 }
 
-// The point the trace and classify start from: the receiver moved light.normal_offset texel
-// widths (at its depth) along its normal (shaders/shared/bias.glsl, normalOffsetPoint).
 // The point classify and the trace start from (shaders/shared/bias.glsl): moved
 // light.normal_offset texels along the normal, but towards the light by at most a quarter of
 // the gap to the pixel's zNearMin (lsDepth, zRange.x) where that gap exceeds the Eq 3.2 bias.
@@ -454,6 +452,7 @@ HierarchyComparison compareHierarchies(const Scene& scene, int mapSize, int cell
   const auto nbufferMask = nbuffer.read("classify.mask"), minmaxMask = minmax.read("classify.mask");
   const auto positions = nbuffer.read("gbuffer.wsPosition");
   const auto normals = nbuffer.read("gbuffer.wsNormal");
+  const auto nbufferZRange = nbuffer.read("classify.zRange");  // its zNearMin caps the offset
   const auto nbufferVisibility = nbuffer.read("trace.visibility");
   const auto minmaxVisibility = minmax.read("trace.visibility");
   const int iterations = nbuffer.pipeline->param("classify.iterations").asInt();
@@ -483,7 +482,7 @@ HierarchyComparison compareHierarchies(const Scene& scene, int mapSize, int cell
     const glm::dvec3 normal{normals[i * 4], normals[i * 4 + 1], normals[i * 4 + 2]};
     const glm::dvec3 receiver =
         offsetReceiver(nbuffer, layers, {positions[i * 4], positions[i * 4 + 1], positions[i * 4 + 2]},
-                       normal);
+                       normal, nbufferZRange[i * 4]);
     const glm::dvec3 map = layers.toMap(receiver);
     const glm::dvec3 bounds = oracle.bounds(map, iterations);
     const double endLs = oracle.lsDepth(map.z);

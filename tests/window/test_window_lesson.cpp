@@ -7,6 +7,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -38,15 +39,21 @@ double roughness(const fs::path& png) {
 }
 
 // The eye pixel (image coordinates) of the first penumbra pixel past the middle of the
-// classify mask that `penumbra export` writes at 160 x 120 (EXR rows are GL order).
+// classify mask that `penumbra export` writes at 160 x 120 (EXR rows are GL order) whose
+// rays all reach the search (no early out counted in trace.cost): a penumbra pixel on a face that
+// sees only part of the light may end every ray at the back-face test and show no points.
 bool penumbraPixel(const fs::path& directory, int& x, int& y) {
   if (runPenumbra("export --width 160 --height 120 --out " + (directory / "cli").string()).exitCode != 0)
     return false;
   int w = 0, h = 0;
   std::vector<std::string> channels;
   const auto mask = readExr(directory / "cli" / "classify.mask.exr", w, h, channels);
+  const auto cost = readExr(directory / "cli" / "trace.cost.exr", w, h, channels);
+  const auto earlyOuts = std::find(channels.begin(), channels.end(), "earlyOuts");  // EXR sorts them
+  if (earlyOuts == channels.end() || cost.size() != mask.size() * channels.size()) return false;
+  const size_t channel = size_t(earlyOuts - channels.begin());
   for (int i = int(mask.size()) / 2; i < int(mask.size()); ++i)
-    if (mask[size_t(i)] == 2.0f) {
+    if (mask[size_t(i)] == 2.0f && cost[size_t(i) * channels.size() + channel] == 0.0f) {
       x = i % w;
       y = h - 1 - i / w;
       return true;
