@@ -36,11 +36,31 @@ int legendRows(const Annotation& annotation, int width, cairo_t* cr) {
   return rows;
 }
 
+// The bar's middle tick with its label ("0.5   error.signed"), centred on the middle value.
+std::string middleTick(const ColorBar& bar, bool withLabel) {
+  const std::string middle = number(0.5f * (bar.black + bar.white));
+  return withLabel ? middle + "   " + bar.label : middle;
+}
+
+// On a narrow image the label after the middle tick would run into the high end's value:
+// it then gets a line of its own under the ticks.
+bool barLabelOnOwnLine(const ColorBar& bar, int width, cairo_t* cr) {
+  const double middleLeft = 0.5 * width - 0.5 * textWidth(cr, middleTick(bar, false), kFontSize);
+  const double highLeft = width - kPad - textWidth(cr, number(bar.white), kFontSize);
+  return middleLeft + textWidth(cr, middleTick(bar, true), kFontSize) + 4 > highLeft;
+}
+
+// Caption lines: two, or four on images too narrow for the scene, output and parameters.
+int captionLines(int width) { return width < 400 ? 4 : 2; }
+
 int bandHeight(const Annotation& annotation, int width, cairo_t* cr) {
   int height = 0;
-  if (annotation.bar) height += kBarHeight + 2 + kLine + 2;  // bar, then its tick labels
+  if (annotation.bar) {
+    height += kBarHeight + 2 + kLine + 2;  // bar, then its tick labels
+    if (barLabelOnOwnLine(*annotation.bar, width, cr)) height += kLine;
+  }
   height += legendRows(annotation, width, cr) * kLine;
-  if (!annotation.caption.empty()) height += kLine * 2;  // up to two lines
+  if (!annotation.caption.empty()) height += kLine * captionLines(width);
   return height == 0 ? 0 : height + 2 * kPad;
 }
 
@@ -98,12 +118,16 @@ std::vector<std::uint8_t> annotateImage(const std::vector<std::uint8_t>& rgb, in
     cairo_stroke(cr);
     y += kBarHeight + 2;
     const std::string low = number(bar.black), high = number(bar.white);
-    const std::string middle = number(0.5f * (bar.black + bar.white)) + "   " + bar.label;
+    const bool ownLine = barLabelOnOwnLine(bar, width, cr);
     drawText(cr, x0, y, low, kFontSize, 0.1);
     drawText(cr, x1 - textWidth(cr, high, kFontSize), y, high, kFontSize, 0.1);
-    drawText(cr, 0.5 * width - 0.5 * textWidth(cr, number(0.5f * (bar.black + bar.white)), kFontSize),
-             y, middle, kFontSize, 0.1);
+    drawText(cr, 0.5 * width - 0.5 * textWidth(cr, middleTick(bar, false), kFontSize), y,
+             middleTick(bar, !ownLine), kFontSize, 0.1);
     y += kLine + 2;
+    if (ownLine) {
+      drawText(cr, 0.5 * width - 0.5 * textWidth(cr, bar.label, kFontSize), y, bar.label, kFontSize, 0.1);
+      y += kLine;
+    }
   }
   // 3. The legend: swatch and text per category, wrapped into rows.
   if (!annotation.legend.empty()) {
@@ -124,8 +148,9 @@ std::vector<std::uint8_t> annotateImage(const std::vector<std::uint8_t>& rgb, in
     }
     y += kLine;
   }
-  // 4. The caption: scene, output, key parameters (two lines at most).
-  for (const std::string& line : wrapText(cr, annotation.caption, kFontSize, width - 2 * kPad, 2)) {
+  // 4. The caption: scene, output, key parameters (two lines at most, four when narrow).
+  for (const std::string& line :
+       wrapText(cr, annotation.caption, kFontSize, width - 2 * kPad, captionLines(width))) {
     drawText(cr, kPad, y, line, kFontSize, 0.25);
     y += kLine;
   }

@@ -103,6 +103,25 @@ TEST(LessonFigures, AnAnnotatedImageCarriesTheColormapsBarBelowTheImageUntouched
   EXPECT_EQ(annotationHeight(Annotation{}, width), 0);
 }
 
+// A 192-pixel-wide export (the Atty bench's error views): the bar's label would run into
+// the high end's value, so it gets its own line, drawn (dark text pixels there); the caption
+// gets four lines instead of two.
+TEST(LessonFigures, OnANarrowImageTheBarsLabelGetsItsOwnLine) {
+  Annotation annotation;
+  annotation.bar = ColorBar{Colormap::Diverging, -1, 1, "error.signed"};
+  annotation.caption = "bunny-atty · error.signed · 192x192 · ssm.passes=one · light.resolution=128";
+  const int wide = annotationHeight(annotation, 800), narrow = annotationHeight(annotation, 192);
+  EXPECT_EQ(narrow, wide + 16 + 2 * 16);  // the label's line, two more caption lines
+  const int width = 192, height = 20;
+  const auto out = annotateImage(std::vector<std::uint8_t>(size_t(width) * height * 3, 255), width,
+                                 height, annotation);
+  const int labelRow = height + 6 + 12 + 2 + 16 + 2;  // pad, bar, ticks
+  int dark = 0;
+  for (int y = labelRow; y < labelRow + 16; ++y)
+    for (int x = 0; x < width; ++x) dark += out[(size_t(y) * width + x) * 3] < 128;
+  EXPECT_GT(dark, 20) << "no label drawn on its own line";
+}
+
 TEST(LessonFigures, ACategoricalLegendNamesEachClassFromTheDocWithItsShare) {
   const std::vector<float> mask = {1, 1, 2, 3, 1, 2, 2, 2};  // 3 lit, 4 penumbra, 1 umbra
   const auto legend = categoryLegend(mask, 1, 0, "Class per pixel: 0 background, 1 lit, 2 penumbra, 3 umbra.");
