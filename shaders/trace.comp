@@ -4,7 +4,6 @@
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = TRACE_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
 layout(binding = TRACE_MASK_UNIT) uniform sampler2D classMask;
 layout(binding = TRACE_ZRANGE_UNIT) uniform sampler2D zRangeTexture;
 layout(binding = TRACE_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;

@@ -93,7 +93,10 @@ public:
                                    "rasterized fragment (forward; Table 4.1).", true),
         Param::real("eye_tolerance", "Three layers: a point counts as free space (seen by the "
                                      "eye) only if it lies at least this far (world units) in "
-                                     "front of the visible surface at its pixel.", 0.02, 0, 1),
+                                     "front of the visible surface's tangent plane at each "
+                                     "covered pixel of the 3x3 block around it. Must be below "
+                                     "the rays' bias for their own end points to count as "
+                                     "free (the Fig 3.5 lesson: 0.002 there).", 0.02, 0, 1),
         Param::integer("max_iterations", "Cap on search iterations per ray (a safety net; "
                                          "reaching it is counted and reported).", 512, 16, 4096),
         Param::integer("record_x", "Pixel (x, image column) whose every step is recorded for "
