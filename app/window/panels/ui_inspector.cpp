@@ -129,7 +129,16 @@ void drawCounters(const UiState& state) {
 bool hasAutoReasons(const UiState& state) {
   return state.session.frame && !state.session.frame->autoSettings.reasons.empty();
 }
+// The choices `auto` made; a parameter the user (or a lesson) set by hand overrides its
+// choice, so the panel says which ones do not apply.
 void drawAutoReasons(const UiState& state) {
+  std::string byHand;
+  for (const char* key : {"light.resolution", "light.layers", "trace.rays"}) {
+    const Param& param = state.session.pipeline.param(key);
+    if (!param.automatic) byHand += std::string(byHand.empty() ? "" : ", ") + key + " = " + param.toString();
+  }
+  if (!byHand.empty())
+    ImGui::TextWrapped("Set by hand, so these choices do not apply to it: %s.", byHand.c_str());
   for (const std::string& reason : state.session.frame->autoSettings.reasons)
     ImGui::TextWrapped("%s", reason.c_str());
 }
