@@ -9,6 +9,7 @@
 #include "scene/scene_builtin.h"
 #include "window/ui_camera.h"
 #include "window/panels/ui_export.h"
+#include "window/panels/ui_export_annotation.h"
 #include "window/ui_light_gesture.h"
 #include "window/views/ui_nbuffer_hover.h"
 #include "window/script/ui_script.h"
@@ -169,6 +170,22 @@ TEST(WindowUnits, ExportNamesSaySceneOutputAndChangedParameters) {
   ASSERT_EQ(state.session.setParameter("light.resolution", "256"), "");  // another stage's
   const std::string stem = exportStem(state, "hard_shadow.visibility", 0);
   EXPECT_EQ(stem, "cube_hard_shadow.visibility_offset-0.02");
+}
+
+// An annotated PNG's caption: the shown stage's changed parameters by their short keys, then
+// those of the stages it depends on (so the Atty lesson's SSM panels at two map sizes differ),
+// never a stage it does not depend on.
+TEST(WindowUnits, CaptionsNameTheChangedParametersTheOutputDependsOn) {
+  UiState state;
+  useCube(state);
+  ViewPanel view;
+  view.output = "hard_shadow.visibility";
+  EXPECT_EQ(viewCaption(state, view), "cube · hard_shadow.visibility");
+  ASSERT_EQ(state.session.setParameter("hard_shadow.offset", "0.02"), "");
+  ASSERT_EQ(state.session.setParameter("light.resolution", "256"), "");  // a dependency
+  ASSERT_EQ(state.session.setParameter("trace.rays", "3"), "");          // not one
+  EXPECT_EQ(viewCaption(state, view),
+            "cube · hard_shadow.visibility · offset=0.02, light.resolution=256");
 }
 
 TEST(WindowUnits, NBufferHoverWindowSpansTwoToTheLevelInsideTheMap) {

@@ -4,8 +4,10 @@
 #include "window/views/ui_categories.h"
 #include "window/views/ui_view_difference.h"
 
-// 1. Scene, what the view shows, its size, the stage's parameters that differ from their
-//    declared defaults (as the export file name lists them, app/window/panels/ui_export.h).
+// 1. Scene, what the view shows, its size, and the parameters that differ from their
+//    declared defaults: the shown stage's first (as the export file name lists them,
+//    app/window/panels/ui_export.h), then those of every stage it depends on, so that two
+//    panels of a lesson at different map sizes or passes say how they differ.
 std::string viewCaption(const UiState& state, const ViewPanel& view) {
   std::string shown = view.output;
   if (!view.minus.empty()) shown += " minus " + view.minus + (view.clipNegative ? " (>= 0)" : "");
@@ -16,14 +18,20 @@ std::string viewCaption(const UiState& state, const ViewPanel& view) {
   if (const GlTexture* texture = shownTexture(state, view))  // its own size: maps are not eye-sized
     caption += " · " + std::to_string(texture->width()) + "x" + std::to_string(texture->height());
   const std::string stageName = view.output.substr(0, view.output.find('.'));
+  const Pipeline& pipeline = state.session.pipeline;
+  if (!pipeline.hasStage(stageName)) return caption;
+  std::vector<std::string> stageNames = {stageName};
+  for (const std::string& name : pipeline.dependencies({view.output}))
+    if (name != stageName) stageNames.push_back(name);
   std::string changed;
-  for (const auto& stage : state.session.pipeline.stages()) {
-    if (stage->name() != stageName) continue;
-    for (const Param& param : stage->params()) {
-      const auto declared = state.session.parameterDefaults.find(stageName + "." + param.key);
+  for (const std::string& name : stageNames) {
+    for (const Param& param : pipeline.stage(name).params()) {
+      const auto declared = state.session.parameterDefaults.find(name + "." + param.key);
       if (declared != state.session.parameterDefaults.end() && declared->second == param.value)
         continue;
-      changed += (changed.empty() ? "" : ", ") + param.key + "=" + param.toString();
+      // The shown stage's own keys stay short; the others name their stage.
+      const std::string key = name == stageName ? param.key : name + "." + param.key;
+      changed += (changed.empty() ? "" : ", ") + key + "=" + param.toString();
     }
   }
   return changed.empty() ? caption : caption + " · " + changed;
