@@ -29,14 +29,12 @@
 layout(binding = TRACE_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = TRACE_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
 
-// Distance from the eye to the visible surface of a pixel, for a point on the eye ray
-// `rayDirection`: the nearer of its sample and its tangent plane along that ray.
-float surfaceDistanceAlong(vec3 eye, vec3 rayDirection, ivec2 at, vec3 surfacePoint) {
-  float sampleDistance = distance(surfacePoint, eye);
+// Distance from the eye, along the eye ray `rayDirection`, to the tangent plane of a pixel's
+// visible surface; "infinitely far" where the plane nearly contains the ray.
+float planeDistanceAlong(vec3 eye, vec3 rayDirection, ivec2 at, vec3 surfacePoint) {
   vec3 normal = texelFetch(wsNormalTexture, at, 0).xyz;
   float facing = dot(normal, rayDirection);
-  if (abs(facing) < 0.1) return sampleDistance;
-  return min(sampleDistance, dot(normal, surfacePoint - eye) / facing);
+  return abs(facing) < 0.1 ? 3.0e38 : dot(normal, surfacePoint - eye) / facing;
 }
 
 bool hiddenFromEye(vec3 wsPoint) {
@@ -55,9 +53,11 @@ bool hiddenFromEye(vec3 wsPoint) {
       gFetches += 1u;
       vec4 surface = texelFetch(wsPositionTexture, at, 0);
       if (surface.w == 0.0) continue;  // background: the eye sees through this pixel
+      // Behind the sample: solid without reading the normal; else the plane decides.
+      if (pointDistance > distance(surface.xyz, eye) - trace.eye.x) return true;
       gFetches += 1u;
-      float surfaceDistance = surfaceDistanceAlong(eye, rayDirection, at, surface.xyz);
-      if (pointDistance > surfaceDistance - trace.eye.x) return true;
+      if (pointDistance > planeDistanceAlong(eye, rayDirection, at, surface.xyz) - trace.eye.x)
+        return true;
     }
   return false;
 }
