@@ -6,12 +6,17 @@
 #include "core/pipeline.h"
 
 ParamSnapshot::ParamSnapshot(const Pipeline& pipeline) {
-  for (const std::string& key : pipeline.paramKeys())
-    values_.push_back({&pipeline.param(key), pipeline.param(key).value});
+  for (const std::string& key : pipeline.paramKeys()) {
+    Param& param = pipeline.param(key);
+    values_.push_back({&param, param.value, param.automatic});
+  }
 }
 
 void ParamSnapshot::restore() const {
-  for (const auto& [param, value] : values_) param->value = value;
+  for (const Saved& saved : values_) {
+    saved.param->value = saved.value;
+    saved.param->automatic = saved.automatic;
+  }
 }
 
 std::string applySets(Pipeline& pipeline, const std::vector<std::string>& sets) {
@@ -44,7 +49,6 @@ bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchCon
   for (const std::string& stage : r.stages)
     for (const Param& param : pipeline.stage(stage).params())
       r.params[stage + "." + param.key] = param.toString();
-  if (pipeline.hasStage("light")) r.map = pipeline.param("light.resolution").asInt();
 
   // 2. One frame against the ground truth, running only what the error image needs.
   const std::string errorMethod = pipeline.param("error.method").asEnum();

@@ -15,14 +15,19 @@ class Pipeline;
 struct Frame;
 struct Param;
 
-// Every parameter's value now, restored between configurations.
+// Every parameter's value and auto flag now, restored between configurations.
 class ParamSnapshot {
 public:
   explicit ParamSnapshot(const Pipeline& pipeline);
   void restore() const;
 
 private:
-  std::vector<std::pair<Param*, double>> values_;
+  struct Saved {
+    Param* param;
+    double value;
+    bool automatic;
+  };
+  std::vector<Saved> values_;
 };
 
 // Applies "stage.key=value" assignments in order; "" or the first problem.

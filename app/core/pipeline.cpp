@@ -300,7 +300,7 @@ std::vector<std::string> Pipeline::allOutputs() const {
 }
 
 std::uint64_t Pipeline::revision() const {
-  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over every key and value
+  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over every key, value and auto flag
   auto mix = [&](const void* data, size_t bytes) {
     const auto* p = static_cast<const unsigned char*>(data);
     for (size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
@@ -309,6 +309,8 @@ std::uint64_t Pipeline::revision() const {
     for (const Param& param : stage->params()) {
       mix(param.key.data(), param.key.size());
       mix(&param.value, sizeof param.value);
+      const unsigned char automatic = param.automatic;  // auto and a fixed value differ
+      mix(&automatic, 1);
     }
   return hash;
 }

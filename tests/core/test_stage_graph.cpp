@@ -179,8 +179,25 @@ TEST(StageGraph, RevisionChangesWithEveryParameter) {
   ASSERT_EQ(pipeline.set("trace.rays=3"), "");
   const auto changed = pipeline.revision();
   EXPECT_NE(changed, before);
+  // trace.rays starts at auto (nominal value 2): a fixed 2 is another setting (the window
+  // must rerun when its "auto" box is ticked), auto again is the same one.
   ASSERT_EQ(pipeline.set("trace.rays=2"), "");
+  EXPECT_NE(pipeline.revision(), before);
+  ASSERT_EQ(pipeline.set("trace.rays=auto"), "");
   EXPECT_EQ(pipeline.revision(), before);  // a fingerprint: back to the same values
+}
+
+// Between bench configurations every parameter returns to its value *and* its auto flag: a
+// configuration that fixes light.resolution must not leave the next one at a fixed map.
+TEST(StageGraph, ASnapshotRestoresAutoAsWellAsValues) {
+  Pipeline pipeline;
+  ASSERT_TRUE(pipeline.param("light.resolution").automatic);
+  const ParamSnapshot defaults(pipeline);
+  ASSERT_EQ(applySets(pipeline, {"light.resolution=1024", "trace.rays=3"}), "");
+  defaults.restore();
+  EXPECT_TRUE(pipeline.param("light.resolution").automatic);
+  EXPECT_TRUE(pipeline.param("trace.rays").automatic);
+  EXPECT_EQ(pipeline.revision(), Pipeline().revision());
 }
 
 TEST(StageGraph, TheRegistryIsAValidGraphAndAlgorithmOneRunsInOrder) {
