@@ -7,6 +7,10 @@
 #include <cmath>
 #include <stdexcept>
 
+namespace gpu {
+#include "shared/classes.h"
+}  // namespace gpu
+
 ErrorMetrics computeErrorMetrics(const std::vector<float>& method,
                                  const std::vector<float>& reference,
                                  const std::vector<std::uint8_t>& counted, int width, int height,
@@ -50,4 +54,17 @@ ErrorMetrics computeErrorMetrics(const std::vector<float>& method,
   std::nth_element(absolute.begin(), absolute.begin() + long(rank), absolute.end());
   metrics.p99 = absolute[rank];
   return metrics;
+}
+
+std::vector<std::uint8_t> countedPixels(const std::vector<float>& mask,
+                                        const std::vector<float>* receiverFlag) {
+  if (receiverFlag && receiverFlag->size() != mask.size())
+    throw std::invalid_argument("countedPixels: the receiver flag and the mask differ in size");
+  std::vector<std::uint8_t> counted(mask.size());
+  for (size_t i = 0; i < mask.size(); ++i) {
+    const int pixelClass = int(std::lround(mask[i]));
+    counted[i] = pixelClass != CLASS_BACKGROUND && pixelClass != CLASS_OUTSIDE &&
+                 (!receiverFlag || (*receiverFlag)[i] > 0.5f);
+  }
+  return counted;
 }

@@ -14,6 +14,13 @@ struct ErrorMetrics {
   std::size_t pixels = 0, pixelsInShadow = 0;
 };
 
+// The pixels that count, from classify.mask (one class per pixel): neither background nor
+// outside the light's map; with `receiverFlag` (receivers.flag) only receiver-only objects'
+// pixels (error.pixels = receivers, Atty 2006 §4.2.1). The error stage and a lesson's crop
+// numbers both count this way.
+std::vector<std::uint8_t> countedPixels(const std::vector<float>& mask,
+                                        const std::vector<float>* receiverFlag = nullptr);
+
 // `method` and `reference`: one float per pixel; `counted`: nonzero where the pixel counts.
 // Fills `signedError` (method - reference, 0 where not counted) if given.
 ErrorMetrics computeErrorMetrics(const std::vector<float>& method,

@@ -14,10 +14,6 @@
 #include "reference/error_metrics.h"
 #include "core/frame.h"
 
-namespace gpu {
-#include "shared/classes.h"
-}  // namespace gpu
-
 namespace {
 
 class ErrorStage final : public Stage {
@@ -72,12 +68,7 @@ public:
     const bool receiversOnly = param("pixels").asEnum() == "receivers";
     std::vector<float> receiver;
     if (receiversOnly) receiver = frame.input(*this, "flag").readFloats();
-    std::vector<std::uint8_t> counted(mask.size());
-    for (size_t i = 0; i < mask.size(); ++i) {
-      const int pixelClass = int(std::lround(mask[i]));
-      counted[i] = pixelClass != CLASS_BACKGROUND && pixelClass != CLASS_OUTSIDE &&
-                   (!receiversOnly || receiver[i] > 0.5f);
-    }
+    const std::vector<std::uint8_t> counted = countedPixels(mask, receiversOnly ? &receiver : nullptr);
     std::vector<float> signedError;
     const ErrorMetrics metrics = computeErrorMetrics(method, reference, counted, w, h, &signedError);
     std::vector<float> absolute(signedError.size());

@@ -116,6 +116,18 @@ std::vector<PlatePixel> platePixels(const std::string& sampling, int m) {
 
 // Uniform grid: the reference is the exact count of cell centres the projection leaves
 // uncovered, pixel by pixel (and within 2/m of the exact area).
+// The pixels an error counts (the error stage and a lesson crop's numbers share the rule):
+// classes 0 (background) and 4 (outside the map) never; with the receivers flag, only
+// flagged pixels.
+TEST(ErrorMetrics, CountedPixelsFollowTheMaskAndTheReceiversFlag) {
+  const std::vector<float> mask = {0, 1, 2, 3, 4, 2};
+  EXPECT_EQ(countedPixels(mask), (std::vector<std::uint8_t>{0, 1, 1, 1, 0, 1}));
+  const std::vector<float> flag = {1, 1, 0, 1, 1, 0};
+  EXPECT_EQ(countedPixels(mask, &flag), (std::vector<std::uint8_t>{0, 1, 0, 1, 0, 0}));
+  const std::vector<float> shortFlag = {1};
+  EXPECT_THROW(countedPixels(mask, &shortFlag), std::invalid_argument);
+}
+
 TEST(Reference, PlateUniformGridEqualsTheCellCentreCount) {
   const int m = 16;
   int penumbra = 0, umbra = 0, compared = 0;

@@ -1,13 +1,7 @@
 #include "window/script/ui_lesson_crop.h"
 
-#include <cmath>
-
 #include "reference/error_metrics.h"
 #include "window/ui_state.h"
-
-namespace gpu {
-#include "shared/classes.h"
-}  // namespace gpu
 
 using nlohmann::json;
 
@@ -74,14 +68,17 @@ bool cropNumber(const UiState& state, const ImageRect& crop, const std::string& 
     const std::vector<float> method = frame->input(*stage, "method").readFloats();
     const std::vector<float> truth = frame->input(*stage, "truth").readFloats();
     const std::vector<float> mask = frame->input(*stage, "mask").readFloats();
-    // As the error stage counts (receivers inside the light's map), and only inside the crop;
-    // GL rows run bottom-up, the crop's top-down.
+    std::vector<float> receiver;
+    const bool receiversOnly = stage->param("pixels").asEnum() == "receivers";
+    if (receiversOnly) receiver = frame->input(*stage, "flag").readFloats();
+    // As the error stage counts, and only inside the crop (GL rows run bottom-up, the
+    // crop's top-down).
+    const std::vector<std::uint8_t> everywhere = countedPixels(mask, receiversOnly ? &receiver : nullptr);
     std::vector<std::uint8_t> counted(mask.size(), 0);
     for (int y = crop.y; y < crop.y + crop.height; ++y)
       for (int x = crop.x; x < crop.x + crop.width; ++x) {
         const size_t i = size_t(h - 1 - y) * size_t(w) + size_t(x);
-        const int pixelClass = int(std::lround(mask[i]));
-        counted[i] = pixelClass != CLASS_BACKGROUND && pixelClass != CLASS_OUTSIDE;
+        counted[i] = everywhere[i];
       }
     value = pick(computeErrorMetrics(method, truth, counted, w, h), name.substr(5));
     return true;
