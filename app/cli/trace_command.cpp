@@ -30,7 +30,7 @@ std::string traceStepsJson(const Frame& frame, int x, int y) {
   const int raysPerSide = effectiveRays(frame.pipeline.param("trace.rays"), frame.autoSettings);
   result["rays"] = raysPerSide * raysPerSide;
   result["search"] = frame.pipeline.param("trace.search").asEnum();
-  result["layers"] = frame.pipeline.param("light.layers").options.at(size_t(frame.light.layers - 1));
+  result["layers"] = effectiveLayers(frame.pipeline.param("light.layers"), frame.autoSettings);
   nlohmann::json steps = nlohmann::json::array();
   for (const gpu::TraceStep& step : frame.traceSteps)
     steps.push_back({{"ray", step.header.x},

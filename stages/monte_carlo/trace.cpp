@@ -3,6 +3,7 @@
 // forward form (every rasterized fragment traces; thesis Table 4.1).
 #include <cmath>
 
+#include "core/auto_params.h"
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/gpu_layout_trace.h"
@@ -124,7 +125,7 @@ public:
     const int recordY = param("record_y").asInt();
     bindLightInput(frame, *this);
     // `auto` rays: what the scene and view need (stage `light`, scene/auto_settings.h).
-    const int rays = param("rays").automatic ? frame.autoSettings.raysPerSide : param("rays").asInt();
+    const int rays = effectiveRays(param("rays"), frame.autoSettings);
     params.config = {rays, param("sampling").asInt(), param("search").asInt(), frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
                        param("early_out_region").asBool(), param("shorten_rays").asBool()};

@@ -4,6 +4,7 @@
 // the number of depth layers that model the occluders (§3.2-3.4, read by classification and
 // the trace) and the hash that picks light samples (§3.1, Appendix A). Its output is the uniform block
 // of shaders/shared/light_block.h; a CPU copy goes to frame.light for the CPU-side readers.
+#include "core/auto_params.h"
 #include "core/frame.h"
 #include "gl/gpu_layout.h"
 #include "gl/hash_kind.h"
@@ -99,7 +100,7 @@ public:
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
     frame.autoSettings = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
     const AutoSettings& chosen = frame.autoSettings;
-    frame.light.mapSize = param("resolution").automatic ? chosen.resolution : param("resolution").asInt();
+    frame.light.mapSize = effectiveResolution(param("resolution"), chosen);
     frame.light.layers = param("layers").automatic ? chosen.layers : param("layers").asInt() + 1;
     frame.counters["auto.resolution"] = chosen.resolution;
     // What the resolution weighed: 98% of the penumbra area at 6 texels, the largest map

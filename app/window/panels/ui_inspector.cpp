@@ -133,9 +133,10 @@ bool hasAutoReasons(const UiState& state) {
 // choice, so the panel says which ones do not apply.
 void drawAutoReasons(const UiState& state) {
   std::string byHand;
-  for (const char* key : {"light.resolution", "light.layers", "trace.rays"}) {
+  for (const std::string& key : state.session.pipeline.paramKeys()) {
     const Param& param = state.session.pipeline.param(key);
-    if (!param.automatic) byHand += std::string(byHand.empty() ? "" : ", ") + key + " = " + param.toString();
+    if (param.allowsAuto && !param.automatic)
+      byHand += (byHand.empty() ? "" : ", ") + key + " = " + param.toString();
   }
   if (!byHand.empty())
     ImGui::TextWrapped("Set by hand, so these choices do not apply to it: %s.", byHand.c_str());
