@@ -76,8 +76,8 @@ TEST(Cli, BadFlagsAndScenesExit2) {
 
 // A camera that sees nothing: the files are written, a loud message, exit status 2 (issue 12).
 TEST(Cli, ExportOfAnEmptyFrameExits2) {
-  const fs::path directory = fs::temp_directory_path() / "penumbra_cli_empty_frame";
-  fs::create_directories(directory);
+  const TempDirectory scratch("penumbra_cli_empty_frame");  // unique: parallel runs never share it
+  const fs::path& directory = scratch.path();
   std::ofstream(directory / "away.json") << R"({"objects": [{"ground": {"size": 4}}],
     "light": {"center": [0, 4, 0], "forward": [0, -1, 0], "up": [0, 0, -1], "width": 1, "height": 1},
     "camera": {"position": [0, 1, 0], "target": [0, 5, 0.1], "up": [0, 0, 1]}})";
@@ -86,7 +86,6 @@ TEST(Cli, ExportOfAnEmptyFrameExits2) {
   EXPECT_EQ(result.exitCode, 2) << result.output;
   EXPECT_NE(result.output.find("sees no geometry"), std::string::npos) << result.output;
   EXPECT_TRUE(fs::exists(directory / "out" / "run.json"));
-  fs::remove_all(directory);
 }
 
 TEST(Window, ScreenshotUnderXvfbIsNotBlank) {
