@@ -82,9 +82,14 @@ std::vector<double> analyticImage(const PipelineRun& run) {
 
 AnalyticError compareWithAnalytic(const std::vector<float>& method,
                                   const std::vector<double>& exact) {
+  // One value per pixel in both: a size mismatch means the wrong output or image size, and
+  // comparing a prefix would hide it.
+  if (method.size() != exact.size())
+    throw std::invalid_argument("compareWithAnalytic: " + std::to_string(method.size()) +
+                                " method values for " + std::to_string(exact.size()) + " pixels");
   AnalyticError e;
   double umbraSum = 0;
-  for (size_t i = 0; i < exact.size() && i < method.size(); ++i) {
+  for (size_t i = 0; i < exact.size(); ++i) {
     if (exact[i] < 0) continue;
     const double value = method[i];
     if (!std::isfinite(value) || value < 0 || value > 1) ++e.outOfRange;

@@ -29,7 +29,8 @@ struct AnalyticError {
   size_t outOfRange = 0;       // NaN, Inf or outside [0, 1]
 };
 
-// `method`: one float per pixel (GL order). Pixels the light's map does not cover count like
-// the others (the suite's scenes keep their shadows inside it).
+// `method`: one float per pixel (GL order), as many as `exact` (else std::invalid_argument).
+// Pixels the light's map does not cover count like the others (the suite's scenes keep their
+// shadows inside it).
 AnalyticError compareWithAnalytic(const std::vector<float>& method,
                                   const std::vector<double>& exact);
