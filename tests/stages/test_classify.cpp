@@ -1,9 +1,19 @@
-// Oracles for stage `classify` (thesis §3.6, Eq 3.3). Independent of the shader's region
-// formula and of the N-buffer: rays from a dense grid of points on the light (in world
-// space) to each receiver are walked texel by texel through the light layers
-// (classify_ray_walk.h, exact per ray). The light grid (32 x 32 points, corners included)
-// is a finite sample of the rays: it finds a non-conservative "lit" wherever the blocked
-// part of the light is wider than a grid cell, which the tests assert cannot happen.
+// Oracles for stage `classify` (thesis §3.6, Eq 3.3).
+// - The ray walk (checkClassification): independent of the shader's region formula and of
+//   the N-buffer: rays from a dense grid of points on the light (in world space) to each
+//   receiver are walked texel by texel through the light layers (classify_ray_walk.h, exact
+//   per ray). The light grid (32 x 32 points, corners included) is a finite sample of the
+//   rays: it finds a non-conservative "lit" wherever the blocked part of the light is wider
+//   than a grid cell, which the tests assert cannot happen.
+// - ExactRegionClassifier (the hierarchy comparison) is NOT independent of the region
+//   formula: it repeats reachableTexels (shaders/shared/classify.glsl, Eq 3.3 / Fig 3.7) in
+//   double precision without the 0.01-texel margin, because what it checks is the min/max
+//   over that region: that the N-buffer and min-max hierarchies bound the exact brute-force
+//   min/max over it. The region itself is checked by the ray walk above.
+// - Both start from the receiver as the shader moves it (offsetReceiver mirrors bias.glsl's
+//   capped normal offset), because the classification must be conservative at that point,
+//   the one the trace starts from. Whether the offset itself is right is the analytic
+//   suite's to check (AccuracyDefects.NormalOffsetKeepsContactShadowsAtCoarseMaps).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,9 +47,12 @@ double largestTraceBias(const PipelineRun& run, double z) {
   return bias;
 }
 
-// The point classify and the trace start from (shaders/shared/bias.glsl): moved
-// light.normal_offset texels along the normal, but towards the light by at most a quarter of
-// the gap to the pixel's zNearMin (lsDepth, zRange.x) where that gap exceeds the Eq 3.2 bias.
+// The point classify and the trace start from, a copy of shaders/shared/bias.glsl's capped
+// normal offset (not an independent oracle of it): moved light.normal_offset texels along
+// the normal, but towards the light by at most a quarter of the gap to the pixel's zNearMin
+// (lsDepth, zRange.x) where that gap exceeds the Eq 3.2 bias. The checks here are about
+// conservativeness at that point; the offset itself is checked against the analytic
+// visibility in AccuracyDefects.NormalOffsetKeepsContactShadowsAtCoarseMaps.
 glm::dvec3 offsetReceiver(const PipelineRun& run, const LightLayersOnCpu& layers,
                           const glm::dvec3& receiver, const glm::dvec3& normal, double zNearMin) {
   const LightFrame& light = run.frame->light;
@@ -380,6 +393,9 @@ namespace {
 // Eq 3.3 iterated on the CPU with exact bounds: at each iteration the closed square of
 // Fig 3.7 at the current zNearMin, in texels, and min/max over every texel inside it, brute
 // force (no hierarchy). Depths in linear light depth [0, 1], as the layers store them.
+// The square is a copy of reachableTexels (shaders/shared/classify.glsl) in double precision
+// and without its 0.01-texel margin (which only grows the GPU's region): this oracle checks
+// the hierarchies' min/max over the region, not the region (the ray walk checks that).
 class ExactRegionClassifier {
 public:
   explicit ExactRegionClassifier(const PipelineRun& run)
