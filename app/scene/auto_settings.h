@@ -2,10 +2,10 @@
 // on the CPU, before any GL work: the shadow-map resolution, the number of depth layers and
 // the rays per pixel, each with the measurement that chose it.
 //
-// 1. Probes: points along every occluder edge (at most kMaxProbes, spread evenly over the
-//    triangles), each followed along the light's rays from the light centre past the occluder
-//    to the next surface (Embree, every object, receivers included): that surface is where the
-//    penumbra of this edge falls.
+// 1. Probes: points along the occluder edges (4 per edge of every stride-th triangle, the
+//    stride chosen so that at most about 4 x kMaxProbes are cast), each followed along the
+//    light's rays from the light centre past the occluder to the next surface (Embree, every
+//    object, receivers included): that surface is where the penumbra of this edge falls.
 // 2. Penumbra width at that receiver (parallel planes, as PCSS): w = light's smaller side x
 //    (gap / distance from the light plane to the occluder), gaps measured along the light's
 //    axis. Only probes whose receiver lies in the camera's view count (the view decides).
@@ -66,7 +66,8 @@ inline constexpr int kMaxProbes = 20000;
 inline constexpr double kTexelLevelsPerPixelRay = 8.0;
 
 // The choice for this scene, light frame (Eq 3.1) and view (eye size in pixels). Cached:
-// the same scene (same object), light, camera and size return the stored answer; the
+// the same geometry (a hash of its positions, indices and flags), light, camera and size
+// return the stored answer; the
 // Embree scene is rebuilt only when the scene's geometry changes.
 AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
                                 int eyeHeight);

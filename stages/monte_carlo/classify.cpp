@@ -1,8 +1,9 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): lit / penumbra / umbra per eye
 // pixel from occluder-depth bounds over the region of the light map that the pixel's rays
 // can cross, refined iteratively over the hierarchy the trace reads (after Guennebaud et al.
-// 2006): the N-buffer (exact bounds over the region) or the min-max mipmap (the at most
-// 2 x 2 aligned cells covering it: conservative, issue 14), so a frame builds only one. The
+// 2006): the N-buffer (exact bounds over the region) or the min-max mipmap (at most
+// classify.minmax_cells aligned cells per axis covering it, 4 by default: conservative,
+// issue 14), so a frame builds only one. The
 // bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
 #include <cstddef>
 
@@ -36,7 +37,8 @@ namespace {
 Input hierarchyInput() {
   Input input = Input::choice("levels", "Occluder depth bounds over regions of the light map "
                               "(Eq 3.3): the N-buffer (exact over the region) or the min-max "
-                              "mipmap (over the at most 2 x 2 cells covering it), as the "
+                              "mipmap (over the aligned cells covering it, at most "
+                              "classify.minmax_cells per axis), as the "
                               "trace's hierarchy.", kRoleHierarchy, "trace.hierarchy", "nbuffer",
                               /*allowNone=*/false);
   input.format = GL_RGBA32F;
