@@ -40,14 +40,11 @@ double roughness(const fs::path& png) {
 TEST(WindowHashLesson, BadHashesShowInTheShadowTheHistogramAndTheTable) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("lesson_hash");
-  const auto result = runPenumbra("lesson " + std::string(PENUMBRA_SOURCE_DIR) +
-                                  "/lessons/hash_quality_3_1.json --export " + dir.string());
-  ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_NE(result.output.find("lesson step 4/4"), std::string::npos) << result.output;
-  for (const char* name : {"a_md5_16_shadow.png", "a_md5_16_pairs.png", "b_md5_4_shadow.png",
-                           "b_md5_4_pairs.png", "c_lcg32_shadow.png", "c_lcg32_pairs.png",
-                           "d_lcg32_verdicts.png", "e_md5_16_verdicts.png"})
-    ASSERT_TRUE(fs::exists(dir / name)) << name;
+  ASSERT_TRUE(playLesson(std::string(PENUMBRA_SOURCE_DIR) + "/lessons/hash_quality_3_1.json", 4,
+                         {"a_md5_16_shadow.png", "a_md5_16_pairs.png", "b_md5_4_shadow.png",
+                          "b_md5_4_pairs.png", "c_lcg32_shadow.png", "c_lcg32_pairs.png",
+                          "d_lcg32_verdicts.png", "e_md5_16_verdicts.png"},
+                         dir));
   // One ray per pixel: md5_16 scatters the samples (noise), md5_4 puts them all at one spot.
   const double noisy = roughness(dir / "a_md5_16_shadow.png");
   const double hard = roughness(dir / "b_md5_4_shadow.png");

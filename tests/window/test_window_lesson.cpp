@@ -38,43 +38,19 @@ double roughness(const fs::path& png) {
   return sum / (double(width - 1) * height);
 }
 
-// The eye pixel (image coordinates) of the first penumbra pixel past the middle of the
-// classify mask that `penumbra export` writes at 160 x 120 (EXR rows are GL order) whose
-// rays all reach the search (no early out counted in trace.cost): a penumbra pixel on a face that
-// sees only part of the light may end every ray at the back-face test and show no points.
-bool penumbraPixel(const fs::path& directory, int& x, int& y) {
-  if (runPenumbra("export --width 160 --height 120 --out " + (directory / "cli").string()).exitCode != 0)
-    return false;
-  int w = 0, h = 0;
-  std::vector<std::string> channels;
-  const auto mask = readExr(directory / "cli" / "classify.mask.exr", w, h, channels);
-  const auto cost = readExr(directory / "cli" / "trace.cost.exr", w, h, channels);
-  const auto earlyOuts = std::find(channels.begin(), channels.end(), "earlyOuts");  // EXR sorts them
-  if (earlyOuts == channels.end() || cost.size() != mask.size() * channels.size()) return false;
-  const size_t channel = size_t(earlyOuts - channels.begin());
-  for (int i = int(mask.size()) / 2; i < int(mask.size()); ++i)
-    if (mask[size_t(i)] == 2.0f && cost[size_t(i) * channels.size() + channel] == 0.0f) {
-      x = i % w;
-      y = h - 1 - i / w;
-      return true;
-    }
-  return false;
-}
-
 }  // namespace
 
 TEST(WindowLesson, Fig32LessonExportsFiguresWhoseNoiseFallsWithRaysAndFilter) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("lesson_fig32");
-  const auto result = runPenumbra("lesson " + std::string(PENUMBRA_SOURCE_DIR) +
-                                  "/lessons/fig_3_2_progression.json --export " + dir.string());
-  ASSERT_EQ(result.exitCode, 0) << result.output;
+  const std::vector<std::string> figures = {"b_1_ray_unfiltered.png", "c_4_rays_unfiltered.png",
+                                            "d_16_rays_unfiltered.png", "e_16_rays_filtered.png",
+                                            "f_filter_minus_trace.png"};
+  CommandResult result;
+  ASSERT_TRUE(playLesson(std::string(PENUMBRA_SOURCE_DIR) + "/lessons/fig_3_2_progression.json", 5,
+                         figures, dir, &result));
   EXPECT_NE(result.output.find("lesson step 1/5: Thesis §3, Fig 3.2"), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("lesson step 5/5"), std::string::npos) << result.output;
-  const char* figures[] = {"b_1_ray_unfiltered.png", "c_4_rays_unfiltered.png",
-                           "d_16_rays_unfiltered.png", "e_16_rays_filtered.png",
-                           "f_filter_minus_trace.png"};
-  for (const char* name : figures) {
+  for (const std::string& name : figures) {
     OIIO::ImageBuf image((dir / name).string());
     ASSERT_TRUE(image.read()) << name << ": " << image.geterror();
     EXPECT_EQ(image.spec().width, 640) << name;

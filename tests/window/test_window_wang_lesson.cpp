@@ -47,18 +47,15 @@ int greyLevels(const fs::path& png) {
 TEST(WindowWangLesson, FiguresShowWhatTheTextsSay) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("lesson_wang");
-  const auto result = runPenumbra("lesson " + std::string(PENUMBRA_SOURCE_DIR) +
-                                  "/lessons/wang_tables.json --export " + dir.string());
-  ASSERT_EQ(result.exitCode, 0) << result.output;
-  EXPECT_NE(result.output.find("lesson step 8/8"), std::string::npos) << result.output;
-  for (const char* name :
-       {"a_visibility.png", "b_fb_triangles.png", "c_fb_samples_L0.png", "d_fb_samples_proj4.png",
-        "e_fb_pairs_rejection_off.png", "f_fb_pairs_rejection_on.png",
-        "g_visibility_row_masks_off.png", "h_visibility_8x8.png", "i_visibility_16x16.png",
-        "j_visibility_64x64.png", "k_visibility_light_half.png", "l_fb_pairs_light_half.png",
-        "m_fb_pairs_light_double.png", "n_visibility_light_double.png",
-        "o_mask_of_one_pixel.png", "p_error_against_embree.png"})
-    ASSERT_TRUE(fs::exists(dir / name)) << name;
+  ASSERT_TRUE(playLesson(
+      std::string(PENUMBRA_SOURCE_DIR) + "/lessons/wang_tables.json", 8,
+      {"a_visibility.png", "b_fb_triangles.png", "c_fb_samples_L0.png", "d_fb_samples_proj4.png",
+       "e_fb_pairs_rejection_off.png", "f_fb_pairs_rejection_on.png",
+       "g_visibility_row_masks_off.png", "h_visibility_8x8.png", "i_visibility_16x16.png",
+       "j_visibility_64x64.png", "k_visibility_light_half.png", "l_fb_pairs_light_half.png",
+       "m_fb_pairs_light_double.png", "n_visibility_light_double.png",
+       "o_mask_of_one_pixel.png", "p_error_against_embree.png"},
+      dir));
   // Table 2 / 7: the same range, fewer pairs with the rejection on; Table 5: more with a
   // bigger light. The perceptual colormap brightens with the count.
   EXPECT_GT(brightness(dir / "e_fb_pairs_rejection_off.png"), brightness(dir / "f_fb_pairs_rejection_on.png"));
