@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "bench/bench_measure.h"
-#include "bench/bench_session.h"
+#include "io/headless_session.h"
 #include "core/pipeline.h"
 #include "io/image_export.h"
 
@@ -40,8 +40,9 @@ int runBenchCompare(const BenchCompareOptions& options) {
     std::fprintf(stderr, "penumbra bench-compare: give at least one --side label:key=value;...\n");
     return 2;
   }
-  BenchSession session;
-  if (const int status = openBenchSession("bench-compare", options.scene, session); status != 0)
+  HeadlessSession session;  // the scene checked first, its warnings printed; one GL context
+  if (const int status = session.open("bench-compare", options.scene, {}, options.width, options.height);
+      status != 0)
     return status;
   const Scene& scene = session.scene;
   GpuScene& gpuScene = *session.gpuScene;

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "bench/bench_measure.h"
-#include "bench/bench_session.h"
+#include "io/headless_session.h"
 #include "core/pipeline.h"
 #include "io/image_export.h"
 
@@ -23,8 +23,9 @@ struct Side {
 }  // namespace
 
 int runBenchHierarchy(const BenchHierarchyOptions& options) {
-  BenchSession session;
-  if (const int status = openBenchSession("bench-hierarchy", options.scene, session); status != 0)
+  HeadlessSession session;  // the scene checked first, its warnings printed; one GL context
+  if (const int status = session.open("bench-hierarchy", options.scene, {}, options.width, options.height);
+      status != 0)
     return status;
   const Scene& scene = session.scene;
   GpuScene& gpuScene = *session.gpuScene;
