@@ -41,7 +41,8 @@ void chooseMethod(BenchConfig& config) {
 // unfiltered one `trace` (the stages whose outputs carry the shadow-method role).
 const std::vector<std::string> kMonteCarloMethods = {"trace", "filter"};
 
-// One Monte Carlo configuration. layers: 1..3; rays: per side.
+// One Monte Carlo configuration. layers: 1..3; rays: per side. Over the thesis's N-buffer
+// (§3.5), so a preset's rows mean the same at every map size.
 BenchConfig monteCarlo(const std::string& search, int layers, int rays, int map = 512,
                        bool deferred = true, bool filter = true) {
   const char* layerNames[] = {"", "one", "two", "three"};
@@ -53,7 +54,8 @@ BenchConfig monteCarlo(const std::string& search, int layers, int rays, int map 
   if (!filter) label += " unfiltered", family += " unfiltered";
   label += " map " + std::to_string(map);
   BenchConfig config{label, filter ? "filter" : "trace", family,
-                     {"trace.search=" + search, std::string("light.layers=") + layerNames[layers],
+                     {"trace.search=" + search, "trace.hierarchy=nbuffer",  // the thesis's
+                      std::string("light.layers=") + layerNames[layers],
                       "trace.rays=" + std::to_string(rays),
                       std::string("trace.deferred=") + (deferred ? "true" : "false"),
                       std::string("filter.enabled=") + (filter ? "true" : "false"),
@@ -132,11 +134,13 @@ void append(std::vector<BenchConfig>& to, std::vector<BenchConfig> more) {
 }
 
 // The Monte Carlo method as it ships: hierarchical, deferred, filtered, with `auto` choosing
-// the map, the layers and the rays (issue 12), to be seen against the fixed ones' frontier.
+// the map, the layers and the rays (issue 12) and the hierarchy (issue 14), to be seen
+// against the fixed ones' frontier.
 BenchConfig monteCarloAuto() {
   BenchConfig config{"hierarchical auto", "filter", "hierarchical auto",
-                     {"trace.search=hierarchical", "light.layers=auto", "trace.rays=auto",
-                      "trace.deferred=true", "filter.enabled=true", "light.resolution=auto"}};
+                     {"trace.search=hierarchical", "trace.hierarchy=auto", "light.layers=auto",
+                      "trace.rays=auto", "trace.deferred=true", "filter.enabled=true",
+                      "light.resolution=auto"}};
   chooseMethod(config);
   return config;
 }

@@ -38,17 +38,13 @@ std::vector<std::string> timedStages(const Pipeline& pipeline, const std::string
 
 bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchConfig& config,
                   int referenceSamples, BenchResult& r) {
-  // 1. What is measured: the method's closure and every parameter of it.
+  // 1. What is measured.
   r = BenchResult{};
   r.setup = setup;
   r.label = config.label;
   r.method = config.method;
   r.family = config.family.empty() ? config.method : config.family;
   r.sets = config.sets;
-  r.stages = timedStages(pipeline, config.method);
-  for (const std::string& stage : r.stages)
-    for (const Param& param : pipeline.stage(stage).params())
-      r.params[stage + "." + param.key] = param.toString();
 
   // 2. One frame against the ground truth, running only what the error image needs.
   const std::string errorMethod = pipeline.param("error.method").asEnum();
@@ -60,6 +56,12 @@ bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchCon
   frame.frameKey = 0;
   pipeline.run(frame, {"error.absolute"});
   if (pipeline.hasStage("light")) r.map = frame.light.mapSize;  // light.resolution may be auto
+  // The method's closure as this frame decided it (an `auto` choice, trace.hierarchy, is
+  // decided while running) and every parameter of it.
+  r.stages = timedStages(pipeline, config.method);
+  for (const std::string& stage : r.stages)
+    for (const Param& param : pipeline.stage(stage).params())
+      r.params[stage + "." + param.key] = param.toString();
   const auto& c = frame.counters;
   if (c.count("reference.pending")) return false;
   if (!c.count("error.rmse"))

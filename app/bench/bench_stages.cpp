@@ -111,6 +111,7 @@ int runBenchStages(const BenchStagesOptions& options) {
       BenchResult timed;
       timed.method = config.method;
       timed.label = config.label;
+      pipeline.run(frame, {pipeline.methodOutput(config.method)});  // decides `auto` choices
       timed.stages = timedStages(pipeline, config.method);
       FrameTimes times;
       for (int i = 0; i < options.warmup + options.frames; ++i)

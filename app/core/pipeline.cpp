@@ -19,6 +19,13 @@ std::string joined(const std::vector<std::string>& items) {
   return text;
 }
 
+// The choice slot of `owner` that its own parameter `key` selects (not a following slot).
+const Input& decidingInput(const Stage& owner, const std::string& key) {
+  for (const Input& input : owner.inputs())
+    if (input.isChoice() && !input.followsChoice() && input.choiceParam == key) return input;
+  throw std::logic_error("stage '" + owner.name() + "': no choice slot selected by '" + key + "'");
+}
+
 std::string formatName(GLenum format) {
   switch (format) {
     case kBufferFormat: return "buffer";
@@ -44,6 +51,7 @@ Pipeline::Pipeline(std::vector<StageEntry> registry) {
   }
   wire(registry);
   order();
+  checkAutoChoices();
 }
 
 // 1. Wiring: every input slot gets its producer(s); a missing or ambiguous producer or a
@@ -196,6 +204,45 @@ void Pipeline::order() {
   for (const auto& stage : stages_) times_.push_back({stage->name()});
 }
 
+// 3. An `auto` choice (Input::decidedAfter) is decided after a stage that its consumer, and
+//    every slot following it, depend on through fixed edges: so the decision comes before
+//    any of them reads it, whatever else is chosen.
+void Pipeline::checkAutoChoices() const {
+  // Over fixed edges only: an undecided choice leads nowhere (run()).
+  std::map<std::string, std::set<std::string>> upstream;
+  for (const auto& consumer : stages_) {  // execution order: producers come first
+    std::set<std::string>& above = upstream[consumer->name()];
+    for (const Wire& wire : wires_)
+      if (wire.consumer == consumer->name() && !consumer->input(wire.slot).isChoice())
+        for (const std::string& source : wire.sources) {
+          const std::string producer = source.substr(0, source.find('.'));
+          above.insert(producer);
+          above.insert(upstream[producer].begin(), upstream[producer].end());
+        }
+  }
+  for (const Wire& wire : wires_) {
+    const Input& input = stage(wire.consumer).input(wire.slot);
+    if (!input.isChoice()) continue;
+    const Stage& owner = input.followsChoice()
+                             ? stage(input.choiceParam.substr(0, input.choiceParam.find('.')))
+                             : stage(wire.consumer);
+    const std::string key = input.followsChoice()
+                                ? input.choiceParam.substr(input.choiceParam.find('.') + 1)
+                                : input.choiceParam;
+    if (!owner.param(key).allowsAuto) continue;
+    const std::string slot = "stage '" + wire.consumer + "', input '" + wire.slot + "'";
+    const std::string& after = decidingInput(owner, key).decidedAfter;
+    if (after.empty() || !hasStage(after))
+      throw std::invalid_argument(slot + ": its choice '" + owner.name() + "." + key +
+                                  "' allows auto but names no stage to decide it after "
+                                  "(Input::decidedAfter: '" + after + "')");
+    if (!upstream[wire.consumer].count(after))
+      throw std::invalid_argument(slot + ": its choice '" + owner.name() + "." + key +
+                                  "' is auto, decided after '" + after + "', which the slot's "
+                                  "stage does not depend on");
+  }
+}
+
 bool Pipeline::hasStage(const std::string& name) const {
   return std::any_of(stages_.begin(), stages_.end(),
                      [&](const auto& stage) { return stage && stage->name() == name; });
@@ -276,10 +323,21 @@ std::string Pipeline::source(const std::string& stageName, const std::string& sl
 }
 
 std::vector<std::string> Pipeline::dependencies(const std::vector<std::string>& outputs) const {
+  return closure(outputs, {});
+}
+
+// The choice parameter ("stage.key") that selects a choice slot's producer.
+std::string Pipeline::choiceKey(const std::string& stageName, const Input& input) const {
+  return input.followsChoice() ? input.choiceParam : stageName + "." + input.choiceParam;
+}
+
+std::vector<std::string> Pipeline::closure(const std::vector<std::string>& outputs,
+                                           const std::set<std::string>& undecided) const {
   std::set<std::string> needed;
   std::function<void(const std::string&)> visit = [&](const std::string& stageName) {
     if (!needed.insert(stageName).second) return;
     for (const Input& input : stage(stageName).inputs()) {
+      if (input.isChoice() && undecided.count(choiceKey(stageName, input))) continue;
       const std::string producer = source(stageName, input.name);
       if (!producer.empty()) visit(producer.substr(0, producer.find('.')));
     }
@@ -308,9 +366,11 @@ std::uint64_t Pipeline::revision() const {
   for (const auto& stage : stages_)
     for (const Param& param : stage->params()) {
       mix(param.key.data(), param.key.size());
-      mix(&param.value, sizeof param.value);
-      const unsigned char automatic = param.automatic;  // auto and a fixed value differ
+      // auto and a fixed value differ; under auto the value is what the last frame chose
+      // (an auto choice writes it while running), not a setting.
+      const unsigned char automatic = param.automatic;
       mix(&automatic, 1);
+      if (!automatic) mix(&param.value, sizeof param.value);
     }
   return hash;
 }
@@ -349,14 +409,24 @@ std::string Pipeline::timingKey(const Frame& frame) const {
 }
 
 void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
-  // 1. What runs: the dependency closure of the requested outputs (everything if none).
-  std::vector<std::string> needed;
-  if (requested.empty()) {
-    for (const auto& stage : stages_) needed.push_back(stage->name());
-  } else {
-    needed = dependencies(requested);
-  }
-  const std::set<std::string> willRun(needed.begin(), needed.end());
+  // 1. What runs: the dependency closure of the requested outputs (everything if none). An
+  //    `auto` choice not yet decided this frame leads nowhere: a stage needed only through
+  //    it waits for the decision.
+  std::set<std::string> undecided;
+  for (const auto& owner : stages_)
+    for (const Input& input : owner->inputs())
+      if (input.isChoice() && !input.followsChoice() && owner->param(input.choiceParam).automatic)
+        undecided.insert(choiceKey(owner->name(), input));
+  auto stagesNeeded = [&] {
+    std::vector<std::string> needed;
+    if (requested.empty()) {
+      for (const auto& stage : stages_) needed.push_back(stage->name());
+    } else {
+      needed = closure(requested, undecided);
+    }
+    return std::set<std::string>(needed.begin(), needed.end());
+  };
+  std::set<std::string> willRun = stagesNeeded();
 
   // 2. A new timing series whenever parameters, scene or size change.
   const std::string key = timingKey(frame);
@@ -370,18 +440,10 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
     glCreateQueries(GL_TIME_ELAPSED, GLsizei(queries_.size()), queries_.data());
   }
   glFinish();
-  for (size_t i = 0; i < stages_.size(); ++i) {
+  // 3. One stage, timed.
+  auto runStage = [&](size_t i) {
     Stage& stage = *stages_[i];
     StageTime& time = times_[i];
-    if (!willRun.count(stage.name())) {
-      // Not needed: its old outputs go, so nothing downstream or on screen is stale.
-      for (const Output& output : stage.outputs()) {
-        frame.textures.erase(stage.name() + "." + output.name);
-        frame.buffers.erase(stage.name() + "." + output.name);
-      }
-      time.ran = false, time.milliseconds = 0;
-      continue;
-    }
     const auto start = std::chrono::steady_clock::now();
     if (queries) glBeginQuery(GL_TIME_ELAPSED, queries_[i]);
     stage.run(frame);
@@ -401,7 +463,51 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
     std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
     time.ran = true, time.milliseconds = elapsed.count();
     time.median = sorted[sorted.size() / 2], time.runs = int(runs.size());
+  };
+  // 4. In order; a stage not needed loses its old outputs, so nothing downstream or on
+  //    screen is stale. After a stage that decides `auto` choices, what is needed is worked
+  //    out again, and a stage skipped before the decision but needed after it runs then
+  //    (its producers come before it, so they have run).
+  for (size_t i = 0; i < stages_.size(); ++i) {
+    Stage& stage = *stages_[i];
+    if (!willRun.count(stage.name())) {
+      for (const Output& output : stage.outputs()) {
+        frame.textures.erase(stage.name() + "." + output.name);
+        frame.buffers.erase(stage.name() + "." + output.name);
+      }
+      times_[i].ran = false, times_[i].milliseconds = 0;
+      continue;
+    }
+    runStage(i);
+    if (!decideAutoChoices(frame, stage.name(), undecided)) continue;
+    willRun = stagesNeeded();
+    for (size_t j = 0; j < i; ++j)
+      if (willRun.count(stages_[j]->name()) && !times_[j].ran) runStage(j);
   }
+}
+
+// The `auto` choices decided after stage `after`: each parameter takes the option its
+// stage's rule gives (its value, so source() and the window read it) and leaves
+// `undecided`; the reason goes to the frame's auto reasons. Whether any was decided.
+bool Pipeline::decideAutoChoices(Frame& frame, const std::string& after,
+                                 std::set<std::string>& undecided) {
+  bool decided = false;
+  for (const auto& owner : stages_)
+    for (const Input& input : owner->inputs()) {
+      if (!input.isChoice() || input.followsChoice() || input.decidedAfter != after) continue;
+      Param& choice = owner->param(input.choiceParam);
+      if (!choice.automatic) continue;
+      const AutoChoice chosen = owner->chooseAuto(input.choiceParam, frame);
+      const auto option = std::find(choice.options.begin(), choice.options.end(), chosen.option);
+      if (option == choice.options.end())
+        throw std::logic_error(owner->name() + "." + choice.key + ": auto chose '" +
+                               chosen.option + "', which is not an option");
+      choice.value = double(option - choice.options.begin());
+      undecided.erase(choiceKey(owner->name(), input));
+      frame.autoSettings.reasons.push_back(chosen.reason);
+      decided = true;
+    }
+  return decided;
 }
 
 std::string Pipeline::timingMethod() const {

@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -77,8 +78,9 @@ public:
   std::string timingMethod() const;
   ~Pipeline();
 
-  // Changes whenever any parameter changes (a fingerprint of every value): the window
-  // re-runs when it differs from the revision of its last run.
+  // Changes whenever any parameter changes (a fingerprint of every value and auto flag; an
+  // auto parameter's value is not a setting): the window re-runs when it differs from the
+  // revision of its last run.
   std::uint64_t revision() const;
 
   // The graph in Graphviz dot: stages as nodes, wired slots as edges (choice slots dashed).
@@ -91,6 +93,11 @@ private:
   };
   void wire(std::vector<StageEntry>& registry);
   void order();
+  void checkAutoChoices() const;
+  bool decideAutoChoices(Frame& frame, const std::string& after, std::set<std::string>& undecided);
+  std::string choiceKey(const std::string& stage, const Input& input) const;
+  std::vector<std::string> closure(const std::vector<std::string>& outputs,
+                                   const std::set<std::string>& undecided) const;
   void prepareCamera(Frame& frame) const;
   const Wire& wireOf(const std::string& stage, const std::string& slot) const;
   std::string timingKey(const Frame& frame) const;

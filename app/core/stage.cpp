@@ -25,3 +25,7 @@ const Output& Stage::output(const std::string& wanted) const {
 const Input& Stage::input(const std::string& wanted) const {
   return findByName(inputs_, wanted, [](const Input& i) { return i.name; }, name() + " input");
 }
+
+AutoChoice Stage::chooseAuto(const std::string& key, const Frame&) const {
+  throw std::logic_error("stage '" + name() + "' declares no auto rule for '" + key + "'");
+}

@@ -66,6 +66,12 @@ struct Input {
   std::string choiceParam;
   std::string defaultChoice;
   bool allowNone = false;
+  // A choice whose parameter allows `auto` is decided each frame by the owning stage's
+  // chooseAuto() right after stage `decidedAfter` has run (the rule may read what that stage
+  // wrote into the frame: trace.hierarchy reads the light's map size). The pipeline checks
+  // that every candidate depends on that stage, so no candidate is reached before the
+  // decision.
+  std::string decidedAfter;
 
   bool isChoice() const { return chooseRole != kRoleNone; }
   bool followsChoice() const { return isChoice() && choiceParam.find('.') != std::string::npos; }
@@ -86,6 +92,12 @@ struct Input {
   }
 };
 
+// What an `auto` choice took this frame, and why (one sentence for the inspector).
+struct AutoChoice {
+  std::string option;
+  std::string reason;
+};
+
 class Stage {
 public:
   virtual ~Stage() = default;
@@ -93,6 +105,9 @@ public:
   virtual std::string summary() const = 0;        // one sentence for the UI
   virtual std::string thesisSection() const = 0;  // "3.6", "" where none
   virtual void run(Frame& frame) = 0;             // reads its inputs, writes its outputs
+  // The option an `auto` choice parameter `key` takes this frame (see Input::decidedAfter).
+  // Only stages that declare such a parameter override it; the default throws.
+  virtual AutoChoice chooseAuto(const std::string& key, const Frame& frame) const;
 
   const std::vector<Input>& inputs() const { return inputs_; }
   const std::vector<Output>& outputs() const { return outputs_; }

@@ -2,6 +2,7 @@
 // light's depth layers, in the deferred form (a compute pass over the G-buffer) or the
 // forward form (every rasterized fragment traces; thesis Table 4.1).
 #include <cmath>
+#include <cstdio>
 
 #include "core/auto_params.h"
 #include "core/frame.h"
@@ -13,6 +14,7 @@ namespace gpu {
 #include "shared/screen_pass_layout.h"
 }  // namespace gpu
 #include "gl/minmax_build.h"
+#include "gl/nbuffer_build.h"
 #include "gl/shader_program.h"
 
 // The option index of trace.search and trace.sampling is the GLSL enum (trace_layout.h), and
@@ -29,8 +31,21 @@ Input hierarchyInput() {
                               "early out of §3.7): N-buffer or min-max mipmap.",
                               kRoleHierarchy, "hierarchy", "nbuffer", /*allowNone=*/false);
   input.format = GL_RGBA32F;
+  input.decidedAfter = "light";  // `auto` reads the map size the light stage settled
   return input;
 }
+
+// `auto` hierarchy: the min-max mipmap once the N-buffer's build costs more than the
+// min-max mipmap's looser bounds cost over the eye (classification's conservative cells
+// call more pixels penumbra, and rays are shortened less: classify about 1.5x, trace about
+// 1.3x on cube). The N-buffer's build is R^2 x (its level count) texel-levels; the extra
+// cost of the looser bounds grows with the eye's pixels. Measured on llvmpipe, three runs,
+// frames alternating (bench/hierarchy-auto/README.md), min-max frame time over the
+// N-buffer's, by N-buffer texel-levels per eye pixel: 7.7-10.7 (cube 320x240 map 256,
+// cube 640x480 map 512, spheres 128x96 map 128, dragon 640x480 map 512): 0.84-1.10, mostly
+// about 1; 14.7 (map 640 at 640x480): cube 0.89-0.94, dragon 0.95-1.08; 19-21 and up: 0.58-
+// 0.87 but for one dragon run at 1.03. The crossover lies between 10.7 and 14.7.
+constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
 
 class TraceStage final : public Stage {
 public:
@@ -69,11 +84,17 @@ public:
                                 "(binary refinement on suspicious transitions, §3.3) or "
                                 "hierarchical (Algorithm 2 over trace.hierarchy, §3.5).",
                       {"linear", "linear_binary", "hierarchical"}, 2),
-        Param::choice("hierarchy", "What the hierarchical search and the region early out "
-                                   "read: nbuffer (windows of 2^n around every texel, §3.5) "
-                                   "or minmax (a min-max mipmap, quadtree-aligned cells, 4/3 "
-                                   "of one level's memory; issue 14).",
-                      {}, 0),  // options: the stages with the hierarchy role (Pipeline fills them)
+        Param::choiceOrAuto(
+            "hierarchy",
+            "What classification, the hierarchical search and the region early out read: "
+            "nbuffer (windows of 2^n around every texel, §3.5: exact bounds over any "
+            "rectangle, log2 R + 1 full-size levels to build) or minmax (a min-max mipmap, "
+            "quadtree-aligned cells, a third of one level's memory, about 1/19 of the "
+            "N-buffer's build at 2048^2; conservative bounds, so more pixels are traced; "
+            "issue 14). auto (the default): minmax once the N-buffer's texel-levels "
+            "(R^2 x levels) exceed 12 per eye pixel: from map 640 at 640x480, 768 at the "
+            "window's 616x665 (measured crossovers between 10.7 and 14.7).",
+            {}, 0),  // options: the stages with the hierarchy role (Pipeline fills them)
         Param::real("linear_step", "Step of the linear search, in shadow-map texels.", 1.0,
                     0.25, 16),
         Param::integer("binary_steps", "Bisections per suspicious transition (linear_binary).",
@@ -112,6 +133,22 @@ public:
            "layers.";
   }
   std::string thesisSection() const override { return "3.1-3.7, Alg. 2"; }
+
+  AutoChoice chooseAuto(const std::string& key, const Frame& frame) const override {
+    if (key != "hierarchy") return Stage::chooseAuto(key, frame);
+    const double size = frame.light.mapSize;
+    const double texelLevels = size * size * nbufferLevelCount(int(size), int(size));
+    const double eyePixels = double(frame.eyeWidth) * frame.eyeHeight;
+    const bool minmax = texelLevels > kNBufferTexelLevelsPerEyePixel * eyePixels;
+    char reason[256];
+    std::snprintf(reason, sizeof reason,
+                  "hierarchy %s: the N-buffer of a %d^2 map is %.3g M texel-levels, %.1f per "
+                  "eye pixel (%dx%d); the min-max mipmap from %.0f",
+                  minmax ? "minmax" : "nbuffer", int(size), texelLevels / 1e6,
+                  texelLevels / eyePixels, frame.eyeWidth, frame.eyeHeight,
+                  kNBufferTexelLevelsPerEyePixel);
+    return {minmax ? "minmax" : "nbuffer", reason};
+  }
 
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;

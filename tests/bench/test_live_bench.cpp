@@ -80,8 +80,10 @@ TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
   EXPECT_EQ(matchingResult(results, window), int(results.size()) - 1);
   ASSERT_EQ(window.set("trace.rays=4"), "");  // changed since: not measured
   EXPECT_EQ(matchingResult(results, window), -1);
-  // The preset's hierarchical 2x2 map 512, two layers (the window's defaults are `auto`).
+  // The preset's hierarchical 2x2 map 512, two layers, over the N-buffer (the window's
+  // defaults are `auto`).
   ASSERT_EQ(window.set("trace.rays=2"), "");
+  ASSERT_EQ(window.set("trace.hierarchy=nbuffer"), "");
   ASSERT_EQ(window.set("light.resolution=512"), "");
   ASSERT_EQ(window.set("light.layers=two"), "");
   const int match = matchingResult(results, window);

@@ -222,7 +222,8 @@ TEST(StageGraph, TheRegistryIsAValidGraphAndAlgorithmOneRunsInOrder) {
 
 // Demand-driven runs: only the dependency closure of what is asked for runs.
 TEST(StageGraph, OnlyWhatTheRequestedOutputsNeedRuns) {
-  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, 64, 48);
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128", "trace.hierarchy=nbuffer"},
+                  64, 48);
   auto ran = [&] {
     std::set<std::string> names;
     for (const StageTime& time : run.pipeline->lastTimes())
@@ -251,6 +252,108 @@ TEST(StageGraph, OnlyWhatTheRequestedOutputsNeedRuns) {
   run.pipeline->run(*run.frame, {"hard_shadow.visibility"});
   EXPECT_EQ(ran(), (std::set<std::string>{"light", "gbuffer", "light_layers", "hard_shadow"}));
   EXPECT_EQ(run.pipeline->lastTime("trace").ran, false);
+}
+
+// `auto` hierarchy (issue 14): decided after the light stage from the map size and the eye's
+// pixels, and what runs follows the decision; the parameter stays auto and shows the choice.
+TEST(StageGraph, TheAutoHierarchyIsDecidedFromTheMapAndTheEye) {
+  auto ran = [](const Pipeline& pipeline) {
+    std::set<std::string> names;
+    for (const StageTime& time : pipeline.lastTimes())
+      if (time.ran) names.insert(time.stage);
+    return names;
+  };
+  // Map 512 (10 levels: 2.6 M texel-levels) over 64 x 48 eye pixels: 853 per pixel > 12.
+  PipelineRun small(makeBuiltinScene("cube"), {"light.resolution=512"}, 64, 48);
+  ASSERT_TRUE(small.pipeline->param("trace.hierarchy").automatic);
+  const auto revision = small.pipeline->revision();
+  small.pipeline->run(*small.frame, {"filter.visibility"});
+  EXPECT_EQ(ran(*small.pipeline), (std::set<std::string>{"light", "gbuffer", "light_layers",
+                                                         "minmax", "classify", "trace", "filter"}));
+  EXPECT_TRUE(small.pipeline->param("trace.hierarchy").automatic);
+  EXPECT_EQ(small.pipeline->param("trace.hierarchy").asEnum(), "minmax");
+  EXPECT_EQ(small.pipeline->revision(), revision);  // a decision is not a change of settings
+  const auto& reasons = small.frame->autoSettings.reasons;
+  EXPECT_TRUE(std::any_of(reasons.begin(), reasons.end(), [](const std::string& reason) {
+    return reason.rfind("hierarchy minmax", 0) == 0;
+  }));
+  // The same map over 512 x 512 pixels: 10 per pixel, the N-buffer.
+  PipelineRun large(makeBuiltinScene("cube"), {"light.resolution=512"}, 512, 512);
+  large.pipeline->run(*large.frame, {"filter.visibility"});
+  EXPECT_TRUE(large.pipeline->lastTime("nbuffer").ran);
+  EXPECT_FALSE(large.pipeline->lastTime("minmax").ran);
+  EXPECT_EQ(large.pipeline->source("classify", "levels"), "nbuffer.levels");
+  // A hand-set hierarchy overrides the rule.
+  ASSERT_EQ(small.pipeline->set("trace.hierarchy=nbuffer"), "");
+  small.pipeline->run(*small.frame, {"filter.visibility"});
+  EXPECT_TRUE(small.pipeline->lastTime("nbuffer").ran);
+  EXPECT_FALSE(small.pipeline->lastTime("minmax").ran);
+}
+
+namespace {
+// A stage whose `auto` choice picks `*pick` (set by the test).
+class AutoChooser final : public Stage {
+public:
+  AutoChooser(const std::string* pick, std::string decidedAfter) : pick_(pick) {
+    Input levels = Input::choice("levels", "", kRoleHierarchy, "which", "beta", false);
+    levels.format = GL_RGBA32F;
+    levels.decidedAfter = std::move(decidedAfter);
+    inputs_ = {levels, Input::texture("d", "")};
+    outputs_ = {texture("image")};
+    params_ = {Param::choiceOrAuto("which", "which", {}, 0)};
+  }
+  std::string name() const override { return "chooser"; }
+  std::string summary() const override { return "test stage"; }
+  std::string thesisSection() const override { return ""; }
+  void run(Frame&) override {}
+  AutoChoice chooseAuto(const std::string&, const Frame&) const override { return {*pick_, "test"}; }
+
+private:
+  const std::string* pick_;
+};
+
+std::vector<StageEntry> autoChoiceRegistry(const std::string* pick, const std::string& after) {
+  std::vector<StageEntry> r;
+  r.push_back(entry("early", {}, {texture("x")}));  // only alpha needs it; ordered first
+  r.push_back(entry("decider", {}, {texture("d")}));
+  r.push_back(entry("alpha", {Input::texture("x", ""), Input::texture("d", "")},
+                    {texture("levels", GL_RGBA32F, kRoleHierarchy)}));
+  r.push_back(entry("beta", {Input::texture("d", "")}, {texture("levels", GL_RGBA32F, kRoleHierarchy)}));
+  r.push_back(entry("unrelated", {}, {texture("u")}));
+  r.push_back({std::make_unique<AutoChooser>(pick, after), {}});
+  return r;
+}
+}  // namespace
+
+// The decision comes mid-run: a stage skipped before it (`early`, needed only by the option
+// chosen) runs once the decision needs it; a rule decided after a stage the chooser does not
+// depend on is refused when the graph is built.
+TEST(StageGraph, AnAutoChoiceMidRunRunsWhatItNeedsAndOnlyThat) {
+  std::string pick = "alpha";
+  Pipeline pipeline(autoChoiceRegistry(&pick, "decider"));
+  EXPECT_EQ(stageNames(pipeline).front(), "early");
+  EXPECT_EQ(pipeline.param("chooser.which").asEnum(), "beta");  // the declared default
+  headlessContext();
+  const Scene scene = makeBuiltinScene("plate");
+  GpuScene gpuScene(scene);
+  Frame frame(scene, gpuScene, pipeline);
+  pipeline.run(frame, {"chooser.image"});
+  EXPECT_EQ(pipeline.param("chooser.which").asEnum(), "alpha");
+  EXPECT_TRUE(pipeline.lastTime("early").ran);
+  EXPECT_TRUE(pipeline.lastTime("alpha").ran);
+  EXPECT_FALSE(pipeline.lastTime("beta").ran);
+  pick = "beta";
+  pipeline.run(frame, {"chooser.image"});
+  EXPECT_FALSE(pipeline.lastTime("early").ran);
+  EXPECT_FALSE(pipeline.lastTime("alpha").ran);
+  EXPECT_TRUE(pipeline.lastTime("beta").ran);
+  pick = "gamma";  // not an option: an internal error, not a silent default
+  EXPECT_THROW(pipeline.run(frame, {"chooser.image"}), std::logic_error);
+
+  const std::string error = buildError(autoChoiceRegistry(&pick, "unrelated"));
+  EXPECT_NE(error.find("decided after 'unrelated', which the slot's stage does not depend on"),
+            std::string::npos) << error;
+  EXPECT_NE(buildError(autoChoiceRegistry(&pick, "")).find("names no stage"), std::string::npos);
 }
 
 // Timings: a median over runs with identical settings; any change starts a new series.
