@@ -83,36 +83,41 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
       recordStep(-1, STEP_MISS, 0, ivec4(-1), vec4(0.0), vec4(0.0));
       continue;
     }
-    // 3. early out: the end point inside a solid (§3.7), one level-0 fetch.
-    if (trace.switches.y != 0) {
-      vec2 endLayers = fetchLayers(texelAt(rayPoint(ray, sEnd)));
-      float endDepth = rayLsDepth(ray, sEnd);
-      bool inside = layers == 1 ? endDepth >= endLayers.x
-                                : endDepth >= endLayers.x && endDepth <= endLayers.y &&
-                                      (layers == 2 || hiddenFromEye(wsEnd));
-      if (inside) {
-        counts.inside += 1u;
-        recordStep(0, STEP_EARLY_INSIDE, 0, ivec4(texelAt(rayPoint(ray, sEnd)), texelAt(rayPoint(ray, sEnd))),
-                   vec4(endLayers, endDepth, endDepth), vec4(sEnd, sEnd, rayPoint(ray, sEnd)));
-        continue;
-      }
-    }
-    // 4. Ray shortening to [zNearMin, zFarMax] (§3.7, Fig 3.9); one layer keeps its far end
+    // 3. Ray shortening to [zNearMin, zFarMax] (§3.7, Fig 3.9); one layer keeps its far end
     //    (behind the near layer is solid however deep).
     //    The band is widened by kShortenMargin: nothing can block the ray outside
     //    [zNearMin, zFarMax], so the margin costs nothing, and a zero-thickness occluder
     //    (zNearMin == zFarMax) keeps a ray of non-zero length through it.
+    float sEndPoint = sEnd;  // the receiver end, which the inside test reads
     if (trace.switches.w != 0) {
       const float kShortenMargin = 1e-4;
       sStart = max(sStart, raySAtLsDepth(ray, zBounds.x - kShortenMargin));
       if (layers >= 2) sEnd = min(sEnd, raySAtLsDepth(ray, zBounds.y + kShortenMargin));
     }
-    // 5. early out: nothing in the ray's region can block it (§3.7).
+    // 4. early out: nothing in the ray's region can block it (§3.7).
     if (sStart > sEnd || (trace.switches.z != 0 && regionIsEmpty(ray, sStart, sEnd, layers))) {
       counts.region += 1u;
       ++unblocked;
       recordStep(-1, STEP_EARLY_REGION, 0, ivec4(-1), vec4(0.0), vec4(sStart, sEnd, rayPoint(ray, sEnd)));
       continue;
+    }
+    // 5. early out: the end point inside a solid (§3.7), one level-0 fetch (two layers: near
+    //    and far). After the region test, which costs one fetch and ends more rays, and
+    //    never passes a ray this test would stop: an end point between near and far at its
+    //    texel has near <= its depth <= far <= zFarMax, so shortening keeps it on the ray
+    //    and the region's zNearMin is at most its depth. Same decisions in either order.
+    if (trace.switches.y != 0) {
+      vec2 endLayers = fetchLayers(texelAt(rayPoint(ray, sEndPoint)));
+      float endDepth = rayLsDepth(ray, sEndPoint);
+      bool inside = layers == 1 ? endDepth >= endLayers.x
+                                : endDepth >= endLayers.x && endDepth <= endLayers.y &&
+                                      (layers == 2 || hiddenFromEye(wsEnd));
+      if (inside) {
+        counts.inside += 1u;
+        recordStep(0, STEP_EARLY_INSIDE, 0, ivec4(texelAt(rayPoint(ray, sEndPoint)), texelAt(rayPoint(ray, sEndPoint))),
+                   vec4(endLayers, endDepth, endDepth), vec4(sEndPoint, sEndPoint, rayPoint(ray, sEndPoint)));
+        continue;
+      }
     }
     // 6. The search.
     counts.searched += 1u;

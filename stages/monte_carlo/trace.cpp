@@ -37,13 +37,13 @@ Input hierarchyInput() {
 
 // `auto` hierarchy: the min-max mipmap once the N-buffer's build costs more than the
 // min-max mipmap's looser bounds cost over the eye (classification's conservative cells
-// call more pixels penumbra, and rays are shortened less: classify about 1.5x, trace about
-// 1.3x on cube). The N-buffer's build is R^2 x (its level count) texel-levels; the extra
-// cost of the looser bounds grows with the eye's pixels. Measured on llvmpipe, three runs,
+// call more pixels penumbra, and rays are shortened less: classify 1.4-1.7x, trace
+// 1.0-1.5x). The N-buffer's build is R^2 x (its level count) texel-levels; the extra cost
+// of the looser bounds grows with the eye's pixels. Measured on llvmpipe, three runs,
 // frames alternating (bench/hierarchy-auto/README.md), min-max frame time over the
 // N-buffer's, by N-buffer texel-levels per eye pixel: 7.7-10.7 (cube 320x240 map 256,
 // cube 640x480 map 512, spheres 128x96 map 128, dragon 640x480 map 512): 0.84-1.10, mostly
-// about 1; 14.7 (map 640 at 640x480): cube 0.89-0.94, dragon 0.95-1.08; 19-21 and up: 0.58-
+// about 1; 14.7 (map 640 at 640x480): cube 0.89-0.94, dragon 0.95-1.08; 19 and up: 0.47-
 // 0.87 but for one dragon run at 1.03. The crossover lies between 10.7 and 14.7.
 constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
 
@@ -143,10 +143,10 @@ public:
     char reason[256];
     std::snprintf(reason, sizeof reason,
                   "hierarchy %s: the N-buffer of a %d^2 map is %.3g M texel-levels, %.1f per "
-                  "eye pixel (%dx%d); the min-max mipmap from %.0f",
+                  "eye pixel (%dx%d), %s the %.0f above which the min-max mipmap is faster",
                   minmax ? "minmax" : "nbuffer", int(size), texelLevels / 1e6,
                   texelLevels / eyePixels, frame.eyeWidth, frame.eyeHeight,
-                  kNBufferTexelLevelsPerEyePixel);
+                  minmax ? "above" : "not above", kNBufferTexelLevelsPerEyePixel);
     return {minmax ? "minmax" : "nbuffer", reason};
   }
 
