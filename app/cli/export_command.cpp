@@ -78,6 +78,8 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
   for (const StageTime& time : pipeline.lastTimes())
     run["stage_milliseconds"][time.stage] = time.milliseconds;
   for (const auto& [name, value] : frame.counters) run["counters"][name] = value;
+  // What the parameters left at `auto` chose this frame, and why (the inspector's list).
+  run["auto_choices"] = frame.autoSettings.reasons;
   writeTextFile(directory / "run.json", run.dump(2) + "\n");
   written.push_back((transaction.target() / "run.json").string());
   transaction.commit();

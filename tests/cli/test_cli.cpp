@@ -30,6 +30,13 @@ TEST(Cli, ExportWritesEveryOutputAndRunJson) {
   const auto run = nlohmann::json::parse(in);
   EXPECT_EQ(run["scene"], "cube");
   EXPECT_EQ(run["parameters"]["light"]["resolution"], "128");
+  // An `auto` parameter is recorded as auto, and what it chose beside it: map 128 has
+  // 16,384 x 8 N-buffer texel-levels, 10.7 per pixel of 128 x 96, so the N-buffer.
+  EXPECT_EQ(run["parameters"]["trace"]["hierarchy"], "auto");
+  bool hierarchyChoice = false;
+  for (const auto& reason : run["auto_choices"])
+    hierarchyChoice = hierarchyChoice || reason.get<std::string>().rfind("hierarchy nbuffer:", 0) == 0;
+  EXPECT_TRUE(hierarchyChoice) << run["auto_choices"].dump();
   EXPECT_TRUE(run["renderer"].get<std::string>().size() > 3);
   EXPECT_TRUE(run["stage_milliseconds"].contains("trace") || run["stage_milliseconds"].contains("hard_shadow"));
   for (const auto& entry : fs::directory_iterator(out))
