@@ -68,9 +68,10 @@ struct Input {
   bool allowNone = false;
   // A choice whose parameter allows `auto` is decided each frame by the owning stage's
   // chooseAuto() right after stage `decidedAfter` has run (the rule may read what that stage
-  // wrote into the frame: trace.hierarchy reads the light's map size). The pipeline checks
-  // that every candidate depends on that stage, so no candidate is reached before the
-  // decision.
+  // wrote into the frame: trace.hierarchy reads the light's map size). Until then the choice
+  // leads nowhere, so no candidate runs before the decision; the pipeline checks that the
+  // choosing stage and every slot following the choice depend on `decidedAfter` through
+  // fixed edges, so none of them runs before it either.
   std::string decidedAfter;
 
   bool isChoice() const { return chooseRole != kRoleNone; }

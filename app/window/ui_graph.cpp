@@ -1,5 +1,6 @@
 #include "window/ui_graph.h"
 
+#include "core/frame.h"
 #include "core/pipeline.h"
 
 namespace {
@@ -112,6 +113,13 @@ std::string recordingInput(const Pipeline& pipeline, const std::string& slot) {
   for (const Input& input : recorder->inputs())
     if (input.name == slot) return pipeline.source(recorder->name(), slot);
   return "";
+}
+
+RayOverlayTarget rayOverlayTarget(const Pipeline& pipeline, const Frame* frame) {
+  const std::string levels = recordingInput(pipeline, "levels");
+  if (levels.empty()) return {};
+  if (frame && frame->has(levels) && frame->texture(levels).isArray()) return {levels, true};
+  return {recordingInput(pipeline, "near"), false};
 }
 
 std::vector<std::string> traceOutputs(const Pipeline& pipeline) {

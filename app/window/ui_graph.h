@@ -7,6 +7,7 @@
 #include <vector>
 
 class Pipeline;
+struct Frame;
 class Stage;
 
 // The final image: the first output of the stage whose choice slot takes a shadow method's
@@ -41,5 +42,15 @@ Stage* recordingStage(const Pipeline& pipeline);
 // The producer wired to `slot` of the recording stage ("nbuffer.levels" for "levels"); "" if
 // there is no such stage or slot.
 std::string recordingInput(const Pipeline& pipeline, const std::string& slot);
+// Where the trace panel draws a ray's visited windows: the hierarchy the recording stage
+// searched when it holds one map-sized layer per level (the N-buffer; `perLevel`: show the
+// finest level visited); else the near layer, level 0, under the cells (a min-max mipmap is
+// an atlas of smaller levels that the windows, in level-0 texels, do not fit). Empty output:
+// nothing to show on.
+struct RayOverlayTarget {
+  std::string output;
+  bool perLevel = false;
+};
+RayOverlayTarget rayOverlayTarget(const Pipeline& pipeline, const Frame* frame);
 // What the trace panel needs run: the recording stage's texture outputs.
 std::vector<std::string> traceOutputs(const Pipeline& pipeline);

@@ -37,9 +37,10 @@ Input hierarchyInput() {
 
 // `auto` hierarchy: the min-max mipmap once the N-buffer's build costs more than the
 // min-max mipmap's looser bounds cost over the eye (classification's conservative cells
-// call more pixels penumbra, and rays are shortened less: classify 1.4-1.7x, trace
-// 1.0-1.5x). The N-buffer's build is R^2 x (its level count) texel-levels; the extra cost
-// of the looser bounds grows with the eye's pixels. Measured on llvmpipe, three runs,
+// call more pixels penumbra, and rays are shortened less: classify 1.4-2.1x, the trace
+// 1.0-1.7x in the runs below). The N-buffer's build is R^2 x (its level count,
+// ceil(log2 R) + 1) texel-levels; the extra cost of the looser bounds grows with the eye's
+// pixels. Measured on llvmpipe, three runs,
 // frames alternating (bench/hierarchy-auto/README.md), min-max frame time over the
 // N-buffer's, by N-buffer texel-levels per eye pixel: 7.7-10.7 (cube 320x240 map 256,
 // cube 640x480 map 512, spheres 128x96 map 128, dragon 640x480 map 512): 0.84-1.10, mostly
@@ -92,8 +93,9 @@ public:
             "quadtree-aligned cells, a third of one level's memory, about 1/19 of the "
             "N-buffer's build at 2048^2; conservative bounds, so more pixels are traced; "
             "issue 14). auto (the default): minmax once the N-buffer's texel-levels "
-            "(R^2 x levels) exceed 12 per eye pixel: from map 640 at 640x480, 768 at the "
-            "window's 616x665 (measured crossovers between 10.7 and 14.7).",
+            "(R^2 x levels) exceed 12 per eye pixel: of auto's map sizes, from 640 at "
+            "640x480, from 768 at the window's 616x665 (measured crossovers between 10.7 "
+            "and 14.7).",
             {}, 0),  // options: the stages with the hierarchy role (Pipeline fills them)
         Param::real("linear_step", "Step of the linear search, in shadow-map texels.", 1.0,
                     0.25, 16),

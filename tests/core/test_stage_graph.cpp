@@ -283,6 +283,15 @@ TEST(StageGraph, TheAutoHierarchyIsDecidedFromTheMapAndTheEye) {
   EXPECT_TRUE(large.pipeline->lastTime("nbuffer").ran);
   EXPECT_FALSE(large.pipeline->lastTime("minmax").ran);
   EXPECT_EQ(large.pipeline->source("classify", "levels"), "nbuffer.levels");
+  // The same pipeline, the eye grown to 512 x 512: decided again, the other way (a stale
+  // decision would keep the min-max mipmap).
+  small.frame->eyeWidth = small.frame->eyeHeight = 512;
+  small.pipeline->run(*small.frame, {"filter.visibility"});
+  EXPECT_EQ(small.pipeline->param("trace.hierarchy").asEnum(), "nbuffer");
+  EXPECT_TRUE(small.pipeline->lastTime("nbuffer").ran);
+  EXPECT_FALSE(small.pipeline->lastTime("minmax").ran);
+  EXPECT_FALSE(small.frame->has("minmax.levels"));
+  small.frame->eyeWidth = 64, small.frame->eyeHeight = 48;
   // A hand-set hierarchy overrides the rule.
   ASSERT_EQ(small.pipeline->set("trace.hierarchy=nbuffer"), "");
   small.pipeline->run(*small.frame, {"filter.visibility"});

@@ -174,19 +174,24 @@ void drawRayTrace(UiState& state) {
   const std::string nearLayer = recordingInput(state.session.pipeline, "near");
   if (state.session.frame->has(nearLayer))
     lightMap = {state.session.frame->texture(nearLayer).width(), state.session.frame->texture(nearLayer).height()};
-  const std::string levels = recordingInput(state.session.pipeline, "levels");
-  if (!levels.empty() && ImGui::Button("Show on N-buffer")) {  // the ray's windows over the levels
-    if (ViewPanel* target = state.views.selectionTarget(); target && state.selectOutput(levels).empty()) {
+  // The ray's windows over the N-buffer's levels, or over the near layer (min-max mipmap).
+  const RayOverlayTarget shown = rayOverlayTarget(state.session.pipeline, state.session.frame.get());
+  if (!shown.output.empty() &&
+      ImGui::Button(shown.perLevel ? "Show on N-buffer" : "Show on near layer")) {
+    if (ViewPanel* target = state.views.selectionTarget();
+        target && state.selectOutput(shown.output).empty()) {
       target->frameOverlays = true;
       int finest = 1 << 30;  // the finest level the ray visited (linear samples: level 0)
       for (const RayStepRecord& step : trace.steps)
         if (step.level >= 0) finest = std::min(finest, step.level);
-      target->settings.layer = finest == 1 << 30 ? 0 : finest;
+      if (shown.perLevel) target->settings.layer = finest == 1 << 30 ? 0 : finest;
     }
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Show %s in the active view, zoomed onto this ray's visited\n"
-                      "windows (hierarchical) or samples (linear).", levels.c_str());
+                      "windows (hierarchical) or samples (linear).%s", shown.output.c_str(),
+                      shown.perLevel ? "" : "\nThe min-max mipmap's cells, in level-0 texels,\n"
+                                        "are drawn over the near layer (its level 0).");
   sameLineIfButtonsFit({"[x] own window"});
   ImGui::Checkbox("own window", &state.views.traceWindow);
   if (!state.views.traceWindow) {

@@ -130,12 +130,12 @@ std::string zoomActiveView(UiState& state, const json& a) {
   return "";
 }
 
-// 4. As the trace panel's "Show on N-buffer" button.
+// 4. As the trace panel's "Show on N-buffer" (min-max mipmap: "Show on near layer") button.
 std::string showRay(UiState& state, const json& a) {
   ViewPanel* target = state.views.selectionTarget();
-  const std::string levels = recordingInput(state.session.pipeline, "levels");
-  if (levels.empty()) return "no stage records rays over an N-buffer (levels slot)";
-  if (std::string problem = state.selectOutput(levels); !problem.empty()) return problem;
+  const RayOverlayTarget shown = rayOverlayTarget(state.session.pipeline, state.session.frame.get());
+  if (shown.output.empty()) return "no stage records rays over a hierarchy (levels slot)";
+  if (std::string problem = state.selectOutput(shown.output); !problem.empty()) return problem;
   if (target) target->frameOverlays = a.get<bool>();
   return "";
 }
