@@ -223,12 +223,9 @@ void Pipeline::checkAutoChoices() const {
   for (const Wire& wire : wires_) {
     const Input& input = stage(wire.consumer).input(wire.slot);
     if (!input.isChoice()) continue;
-    const Stage& owner = input.followsChoice()
-                             ? stage(input.choiceParam.substr(0, input.choiceParam.find('.')))
-                             : stage(wire.consumer);
-    const std::string key = input.followsChoice()
-                                ? input.choiceParam.substr(input.choiceParam.find('.') + 1)
-                                : input.choiceParam;
+    const std::string choice = choiceKey(wire.consumer, input);  // "owner.key"
+    const Stage& owner = stage(choice.substr(0, choice.find('.')));
+    const std::string key = choice.substr(choice.find('.') + 1);
     if (!owner.param(key).allowsAuto) continue;
     const std::string slot = "stage '" + wire.consumer + "', input '" + wire.slot + "'";
     const std::string& after = decidingInput(owner, key).decidedAfter;

@@ -40,12 +40,12 @@ Input hierarchyInput() {
 // call more pixels penumbra, and rays are shortened less: classify 1.4-2.1x, the trace
 // 1.0-1.7x in the runs below). The N-buffer's build is R^2 x (its level count,
 // ceil(log2 R) + 1) texel-levels; the extra cost of the looser bounds grows with the eye's
-// pixels. Measured on llvmpipe, three runs,
-// frames alternating (bench/hierarchy-auto/README.md), min-max frame time over the
-// N-buffer's, by N-buffer texel-levels per eye pixel: 7.7-10.7 (cube 320x240 map 256,
-// cube 640x480 map 512, spheres 128x96 map 128, dragon 640x480 map 512): 0.84-1.10, mostly
-// about 1; 14.7 (map 640 at 640x480): cube 0.89-0.94, dragon 0.95-1.08; 19 and up: 0.47-
-// 0.87 but for one dragon run at 1.03. The crossover lies between 10.7 and 14.7.
+// pixels. Measured on llvmpipe, three runs, frames alternating (bench/hierarchy-auto/
+// README.md), min-max frame time over the N-buffer's, by N-buffer texel-levels per eye
+// pixel: 7.7-10.7 (cube 320x240 map 256, cube 640x480 map 512, spheres 128x96 map 128,
+// dragon 640x480 map 512): 0.84-1.10, mostly about 1; 14.7 (map 640 at 640x480): cube
+// 0.89-0.94, dragon 0.95-1.08; 19 and up: 0.47-0.87 but for one dragon run at 1.03. The
+// crossover lies between 10.7 and 14.7.
 constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
 
 class TraceStage final : public Stage {
