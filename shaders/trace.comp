@@ -15,7 +15,8 @@ layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
 };
 // TRACE_PIXELS_ALL: every pixel (rows from uRowOffset); _LISTED: the pixels classify listed
 // (penumbra, umbra; uRowOffset = the band's first group), everything else was cleared to
-// visibility 1 beforehand; _RECORDED: the recorded pixel alone.
+// visibility 1 beforehand; _RECORDED: the recorded pixel alone, with its steps (the
+// variant compiled with TRACE_RECORDING 1; the others compile the records out).
 layout(location = TRACE_PIXELS_LOCATION) uniform int uPixels;
 
 ivec2 tracedPixel() {
@@ -30,7 +31,7 @@ ivec2 tracedPixel() {
 void main() {
   ivec2 pixel = tracedPixel();
   if (pixel.x < 0) return;
-  gRecording = uPixels != TRACE_PIXELS_LISTED && all(equal(pixel, trace.record.xy));
+  gRecording = uPixels == TRACE_PIXELS_RECORDED;
   vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
   float visibility = 1.0;
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
@@ -44,8 +45,9 @@ void main() {
     vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
     vec4 zRange = texelFetch(zRangeTexture, pixel, 0);  // zNearMin, zNearMax, zFarMax, lsDepth
     visibility = traceVisibility(wsPosition.xyz, wsNormal, pixel, zRange.xz, counts);
-    int rays = trace.config.x * trace.config.x;
-    addTotals(counts, uint(rays));
+    // The recorded pixel's second trace is not counted again (the pass over every pixel,
+    // or over the listed ones, counted it).
+    if (uPixels != TRACE_PIXELS_RECORDED) addTotals(counts, uint(trace.config.x * trace.config.x));
   }
   imageStore(visibilityImage, pixel, vec4(visibility));
   imageStore(costImage, pixel, vec4(float(gFetches), float(gIterations), float(counts.searched),

@@ -29,8 +29,17 @@ uint gFetches = 0u, gIterations = 0u;
 bool gRecording = false;
 int gRayIndex = 0;
 
+// TRACE_RECORDING 0 compiles the step records out. The pipeline's passes over many pixels
+// use that variant and trace the recorded pixel again, alone, with recording on: the
+// records' branches cost about a fifth of the trace on llvmpipe even when no invocation
+// records (cube 640x480, map 512: 56 -> 46 ms, issue 14). Undefined: recording on.
+#ifndef TRACE_RECORDING
+#define TRACE_RECORDING 1
+#endif
+
 void recordStep(int level, int decision, int iteration, ivec4 window, vec4 depths,
                 vec4 stepping) {
+#if TRACE_RECORDING
   if (!gRecording) return;
   uint slot = atomicAdd(recordHeader.x, 1u);
   if (slot >= uint(trace.record.z)) return;
@@ -38,6 +47,7 @@ void recordStep(int level, int decision, int iteration, ivec4 window, vec4 depth
   records[slot].window = window;
   records[slot].depths = depths;
   records[slot].stepping = stepping;
+#endif
 }
 
 vec2 mapSize() { return vec2(light.mapSize.xy); }

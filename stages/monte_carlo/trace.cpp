@@ -205,10 +205,11 @@ public:
     glBindTextureUnit(TRACE_ZRANGE_UNIT, frame.input(*this, "zRange").id());
 
     // 4. The pass.
+    const bool recording = params.record.x >= 0 && params.record.y >= 0;
     if (param("deferred").asBool()) {
-      runDeferred(frame, visibility, cost, params.record.x >= 0 && params.record.y >= 0);
+      runDeferred(frame, visibility, cost, recording);
     } else {
-      runForward(frame, visibility, cost);
+      runForward(frame, visibility, cost, recording);
     }
 
     // 5. Totals and the recorded steps.
@@ -230,16 +231,27 @@ private:
 
   // With classification, only the pixels classify listed are dispatched (64 per group, in
   // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
+  // Then the recorded pixel once more, alone, with its steps (any class).
   void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
     deferred_.use();
     glBindImageTexture(TRACE_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_R32F);
     glBindImageTexture(TRACE_COST_IMAGE, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    if (!param("use_classification").asBool()) {
+    if (param("use_classification").asBool()) {
+      dispatchListed(frame, visibility, cost);
+    } else {
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_ALL);
       dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
-      return;
     }
+    if (recording) {
+      deferredRecording_.use();
+      glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
+      glDispatchCompute(1, 1, 1);
+      glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    }
+  }
+
+  void dispatchListed(Frame& frame, GlTexture& visibility, GlTexture& cost) {
     const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
     glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
     glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
@@ -255,14 +267,11 @@ private:
       glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
     }
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
-    if (recording) {  // the recorded pixel once more, alone, with its steps (any class)
-      glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
-      glDispatchCompute(1, 1, 1);
-      glMemoryBarrier(GL_ALL_BARRIER_BITS);
-    }
   }
 
-  void runForward(Frame& frame, GlTexture& visibility, GlTexture& cost) {
+  // Every fragment traces its rays; with a recorded pixel, the variant with step records
+  // (a fragment pass cannot trace one pixel alone the way the deferred pass does).
+  void runForward(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
     if (forwardDepth_.width() != frame.eyeWidth || forwardDepth_.height() != frame.eyeHeight)
       forwardDepth_ = GlTexture(GL_DEPTH_COMPONENT32F, frame.eyeWidth, frame.eyeHeight);
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, visibility.id(), 0);
@@ -280,7 +289,7 @@ private:
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    forward_.use();
+    (recording ? forwardRecording_ : forward_).use();
     frame.gpuScene.draw(/*includeReceivers=*/true);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -298,8 +307,15 @@ private:
     frame.counters["trace.recordedSteps"] = header[0];
   }
 
-  ShaderProgram deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
-  ShaderProgram forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
+  // Each pass twice: without the step records (shaders/shared/trace_ray.glsl says why),
+  // and with them, for the recorded pixel.
+  ShaderProgram deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}, "#define TRACE_RECORDING 0\n"};
+  ShaderProgram deferredRecording_{{{GL_COMPUTE_SHADER, "trace.comp"}}, "#define TRACE_RECORDING 1\n"};
+  ShaderProgram forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
+                         "#define TRACE_RECORDING 0\n"};
+  ShaderProgram forwardRecording_{
+      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
+      "#define TRACE_RECORDING 1\n"};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   bool buffersAllocated_ = false;
   GlFramebuffer framebuffer_;

@@ -84,6 +84,35 @@ TEST_P(TraceRecords, DecisionsAddUpToTheVisibilityAndSteppingNeverDecreases) {
 INSTANTIATE_TEST_SUITE_P(Searches, TraceRecords,
                          ::testing::Values("hierarchical", "linear_binary", "linear"));
 
+// The passes over many pixels compile the step records out and trace the recorded pixel
+// again with them (shaders/shared/trace_ray.glsl): recording a pixel must change no value
+// and no count, in each of the three ways the trace runs.
+TEST(TraceRecords, RecordingAPixelChangesNoOutputAndNoCount) {
+  const std::vector<std::vector<std::string>> ways = {
+      {"trace.deferred=true", "trace.use_classification=true"},
+      {"trace.deferred=true", "trace.use_classification=false"},
+      {"trace.deferred=false"}};
+  for (const auto& way : ways) {
+    std::vector<std::string> sets = {"trace.rays=2", "light.resolution=256"};
+    sets.insert(sets.end(), way.begin(), way.end());
+    const std::string where = way.size() == 2 ? way[0] + " " + way[1] : way[0];
+    PipelineRun plain(makeBuiltinScene("cube"), sets, 120, 120);
+    int x = -1, y = -1;
+    ASSERT_TRUE(findPenumbraPixel(plain, x, y)) << where;
+    sets.push_back("trace.record_x=" + std::to_string(x));
+    sets.push_back("trace.record_y=" + std::to_string(y));
+    PipelineRun recorded(makeBuiltinScene("cube"), sets, 120, 120);
+    EXPECT_GT(recorded.frame->traceSteps.size(), 4u) << where;
+    EXPECT_TRUE(plain.frame->traceSteps.empty()) << where;
+    EXPECT_EQ(recorded.read("trace.visibility"), plain.read("trace.visibility")) << where;
+    EXPECT_EQ(recorded.read("trace.cost"), plain.read("trace.cost")) << where;
+    for (const char* counter : {"trace.rays", "trace.raysSearched", "trace.fetches",
+                                "trace.iterations", "trace.earlyOutRegion"})
+      EXPECT_EQ(recorded.frame->counters.at(counter), plain.frame->counters.at(counter))
+          << counter << ", " << where;
+  }
+}
+
 TEST(TraceStability, EveryOutputFiniteAndVisibilityInRangeOnEveryScene) {
   std::vector<std::string> scenes = {"cube", "plate", "spheres", "engine"};
   for (const std::string& stress : stressSceneNames()) scenes.push_back(stress);
