@@ -30,7 +30,13 @@ layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
 };
 layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
 layout(location = CLASSIFY_UMBRA_TEST_LOCATION) uniform bool uUmbraTest;
-layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;  // 0: N-buffer
+layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;
+// The stage compiles one program per hierarchy, CLASSIFY_OVER_MINMAX 0 (N-buffer) or 1 (min-
+// max mipmap), so neither carries the other's code: on llvmpipe the min-max loops cost the
+// N-buffer's classification time although they never ran (bench/trace-variants).
+#if !defined(CLASSIFY_OVER_MINMAX)
+#error "classify.comp is compiled with CLASSIFY_OVER_MINMAX 0 or 1 (stages/monte_carlo/classify.cpp)"
+#endif
 
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
   uint listCount;  // = penumbra + umbra
@@ -50,7 +56,7 @@ bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
 
 // Bounds over the texel rectangle [lo, hi] from the chosen hierarchy.
 vec3 boundsOverRect(ivec2 lo, ivec2 hi, ivec2 mapSize) {
-  return uMinMaxCells > 0
+  return CLASSIFY_OVER_MINMAX != 0
              ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, lo, hi, mapSize, uMinMaxCells)
              : nbufferBoundsOverRect(nbufferLevels, lo, hi);
 }
@@ -83,7 +89,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   ivec2 size = ivec2(light.mapSize.xy);
   // The coarsest level's window (the min-max mipmap's one top cell) is the whole map: the
   // starting bounds (§3.6).
-  vec3 whole = uMinMaxCells > 0 ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0),
+  vec3 whole = CLASSIFY_OVER_MINMAX != 0 ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0),
                                                        size - 1, size, 1)
                                 : texelFetch(nbufferLevels, ivec3(0, 0, textureSize(nbufferLevels, 0).z - 1), 0).xyz;
   vec3 map = lightMapCoords(wsPosition + wsNormal * fullNormalOffset(wsPosition));

@@ -184,6 +184,12 @@ bool ShaderProgram::reloadAll(std::string& log) {
   return ok;
 }
 
+ShaderProgram& ShaderVariants::operator[](const std::string& defines) {
+  std::unique_ptr<ShaderProgram>& program = programs_[defines];
+  if (!program) program = std::make_unique<ShaderProgram>(sources_, defines);
+  return *program;
+}
+
 void dispatchRows(int width, int height, int rowsPerBand) {
   rowsPerBand = std::max(8, rowsPerBand / 8 * 8);
   for (int row = 0; row < height; row += rowsPerBand) {

@@ -5,6 +5,8 @@
 #include <epoxy/gl.h>
 
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,18 @@ private:
   std::vector<Source> sources_;
   std::string defines_;
   GLuint program_ = 0;
+};
+
+// The programs of the same sources compiled with different #defines (specializations),
+// each built on first use and kept: operator[] with the defines' text.
+class ShaderVariants {
+public:
+  explicit ShaderVariants(std::vector<ShaderProgram::Source> sources) : sources_(std::move(sources)) {}
+  ShaderProgram& operator[](const std::string& defines);
+
+private:
+  std::vector<ShaderProgram::Source> sources_;
+  std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
 };
 
 // Dispatches a compute program over width x height in 8x8 groups, split into row bands of

@@ -1,4 +1,5 @@
-"""Medians over the rounds of bench/trace-records/run.sh: per file kind, side and column."""
+"""Medians over the rounds of bench/trace-records/run.sh (or another folder of the same kind of
+files, bench/trace-variants): per file kind, side, column and shaders."""
 import glob, re, statistics, sys
 from collections import defaultdict
 
@@ -10,7 +11,7 @@ for path in sorted(glob.glob(f"{out}/*-r*.md")):
     header = [c.strip() for c in rows[0].split("|")]
     for row in rows[1:]:
         cells = dict(zip(header, [c.strip() for c in row.split("|")]))
-        for column in ("run ms", "trace ms", "trace.fetches", "fetches / searched ray"):
+        for column in ("run ms", "trace ms", "classify ms", "trace.fetches", "fetches / searched ray"):
             if cells.get(column, "-") != "-":
                 values[(kind, cells["side"], column, shaders)].append(float(cells[column]))
 for key in sorted(values):

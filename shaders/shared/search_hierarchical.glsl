@@ -16,7 +16,7 @@
 // direction; min-max mipmap, the aligned cell (texel cell >> level of that level).
 ivec4 forwardWindow(ivec2 cell, int level, vec2 direction, out ivec2 texel) {
   ivec2 size = ivec2(light.mapSize.xy);
-  if (trace.limits.z == HIERARCHY_MINMAX) {
+  if (traceHierarchy() == HIERARCHY_MINMAX) {
     texel = cell >> level;
     ivec2 lo = texel << level;
     return ivec4(lo, min(lo + (1 << level), size) - 1);

@@ -33,7 +33,7 @@ bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   int level = min(int(ceil(log2(float(span)))), trace.record.w);
   ivec2 size = ivec2(light.mapSize.xy);
   vec4 bounds;
-  if (trace.limits.z == HIERARCHY_MINMAX) {
+  if (traceHierarchy() == HIERARCHY_MINMAX) {
     ivec2 first = lo >> level, last = hi >> level;
     bounds = vec4(1.0, 0.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
     for (int y = first.y; y <= last.y; ++y)
@@ -73,7 +73,7 @@ bool endPointInside(Ray ray, float sEndPoint, vec3 wsEnd, int layers, inout RayC
 // (classify's Eq 3.3 region; the whole map where no classification ran).
 float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
                       inout RayCounts counts) {
-  int raysPerSide = trace.config.x, layers = trace.config.w, search = trace.config.z;
+  int raysPerSide = trace.config.x, layers = trace.config.w, search = traceSearch();
   int rayCount = raysPerSide * raysPerSide;
   int unblocked = 0;
   wsPosition = normalOffsetPoint(wsPosition, wsNormal, zBounds.x);  // capped by zNearMin

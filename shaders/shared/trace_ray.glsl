@@ -29,6 +29,22 @@ uint gFetches = 0u, gIterations = 0u;
 bool gRecording = false;
 int gRayIndex = 0;
 
+// Specializations (issue 14). The pipeline compiles one trace program per hierarchy and
+// search (TRACE_HIERARCHY, TRACE_SEARCH), so that no program carries the code of the ones
+// not chosen: on llvmpipe that code cost time although no ray ran it (bench/trace-variants).
+// Undefined (the test shaders): chosen at run time from the parameter block, which the
+// pipeline fills with the same values.
+#ifdef TRACE_HIERARCHY
+#define traceHierarchy() TRACE_HIERARCHY
+#else
+#define traceHierarchy() trace.limits.z
+#endif
+#ifdef TRACE_SEARCH
+#define traceSearch() TRACE_SEARCH
+#else
+#define traceSearch() trace.config.z
+#endif
+
 // TRACE_RECORDING 0 compiles the step records out. The pipeline's passes over many pixels
 // use that variant and trace the recorded pixel again, alone, with recording on: compiled
 // in, the records' branches cost time even where no invocation records (on llvmpipe the
@@ -100,16 +116,16 @@ vec2 fetchLayers(ivec2 texel) {
   gFetches += 2u;
   return vec2(texelFetch(nearLayer, texel, 0).r, texelFetch(farLayer, texel, 0).r);
 }
-// One texel of the hierarchy (trace.limits.z): an N-buffer texel (nbuffer.glsl), or a
+// One texel of the hierarchy (traceHierarchy()): an N-buffer texel (nbuffer.glsl), or a
 // min-max mipmap texel in level coordinates (minmax.glsl; level 0 is the layers).
 vec4 hierarchyTexel(ivec2 texel, int level) {
-  if (trace.limits.z != HIERARCHY_MINMAX) return texelFetch(nbufferLevels, ivec3(texel, level), 0);
+  if (traceHierarchy() != HIERARCHY_MINMAX) return texelFetch(nbufferLevels, ivec3(texel, level), 0);
   if (level > 0)
     return texelFetch(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel, 0);
   float nearDepth = texelFetch(nearLayer, texel, 0).r;
   return vec4(nearDepth, nearDepth, texelFetch(farLayer, texel, 0).r, 0.0);
 }
 vec4 fetchHierarchy(ivec2 texel, int level) {  // counted: level 0 of the min-max mipmap is 2
-  gFetches += trace.limits.z == HIERARCHY_MINMAX && level == 0 ? 2u : 1u;
+  gFetches += traceHierarchy() == HIERARCHY_MINMAX && level == 0 ? 2u : 1u;
   return hierarchyTexel(texel, level);
 }

@@ -114,16 +114,16 @@ public:
     glNamedBufferSubData(tracedPixels.id(), 0, sizeof zeroCount, &zeroCount);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
 
-    program_.use();
+    const GlTexture& levels = frame.input(*this, "levels");
+    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
+    (minmax ? overMinMax_ : overNBuffer_).use();
     bindLightInput(frame, *this);
     glBindTextureUnit(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
-    const GlTexture& levels = frame.input(*this, "levels");
-    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
     glBindTextureUnit(minmax ? CLASSIFY_MINMAX_UNIT : CLASSIFY_LEVELS_UNIT, levels.id());
     glBindTextureUnit(CLASSIFY_NEAR_UNIT, frame.input(*this, "near").id());
     glBindTextureUnit(CLASSIFY_FAR_UNIT, frame.input(*this, "far").id());
-    glUniform1i(CLASSIFY_MINMAX_CELLS_LOCATION, minmax ? param("minmax_cells").asInt() : 0);
+    if (minmax) glUniform1i(CLASSIFY_MINMAX_CELLS_LOCATION, param("minmax_cells").asInt());
     glBindImageTexture(CLASSIFY_MASK_IMAGE, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(CLASSIFY_ZRANGE_IMAGE, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);
@@ -143,7 +143,9 @@ public:
   }
 
 private:
-  ShaderProgram program_{{{GL_COMPUTE_SHADER, "classify.comp"}}};
+  // One program per hierarchy (classify.comp says why).
+  ShaderProgram overNBuffer_{{{GL_COMPUTE_SHADER, "classify.comp"}}, "#define CLASSIFY_OVER_MINMAX 0\n"};
+  ShaderProgram overMinMax_{{{GL_COMPUTE_SHADER, "classify.comp"}}, "#define CLASSIFY_OVER_MINMAX 1\n"};
   GlBuffer counts_;
 };
 

@@ -207,9 +207,10 @@ public:
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
     if (param("deferred").asBool()) {
-      runDeferred(frame, visibility, cost, recording);
+      runDeferred(frame, visibility, cost, deferred_[specialization(params, false)],
+                  recording ? &deferred_[specialization(params, true)] : nullptr);
     } else {
-      runForward(frame, visibility, cost, recording);
+      runForward(frame, visibility, cost, forward_[specialization(params, recording)]);
     }
 
     // 5. Totals and the recorded steps.
@@ -232,8 +233,9 @@ private:
   // With classification, only the pixels classify listed are dispatched (64 per group, in
   // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
   // Then the recorded pixel once more, alone, with its steps (any class).
-  void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
-    deferred_.use();
+  void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, ShaderProgram& pass,
+                   ShaderProgram* recordingPass) {
+    pass.use();
     glBindImageTexture(TRACE_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_R32F);
     glBindImageTexture(TRACE_COST_IMAGE, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
@@ -243,8 +245,8 @@ private:
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_ALL);
       dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
     }
-    if (recording) {
-      deferredRecording_.use();
+    if (recordingPass) {
+      recordingPass->use();
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
       glDispatchCompute(1, 1, 1);
       glMemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -269,9 +271,9 @@ private:
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
   }
 
-  // Every fragment traces its rays; with a recorded pixel, the variant with step records
-  // (a fragment pass cannot trace one pixel alone the way the deferred pass does).
-  void runForward(Frame& frame, GlTexture& visibility, GlTexture& cost, bool recording) {
+  // Every fragment traces its rays; with a recorded pixel, `pass` is the variant with step
+  // records (a fragment pass cannot trace one pixel alone the way the deferred pass does).
+  void runForward(Frame& frame, GlTexture& visibility, GlTexture& cost, ShaderProgram& pass) {
     if (forwardDepth_.width() != frame.eyeWidth || forwardDepth_.height() != frame.eyeHeight)
       forwardDepth_ = GlTexture(GL_DEPTH_COMPONENT32F, frame.eyeWidth, frame.eyeHeight);
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, visibility.id(), 0);
@@ -289,7 +291,7 @@ private:
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);
-    (recording ? forwardRecording_ : forward_).use();
+    pass.use();
     frame.gpuScene.draw(/*includeReceivers=*/true);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -307,15 +309,16 @@ private:
     frame.counters["trace.recordedSteps"] = header[0];
   }
 
-  // Each pass twice: without the step records (shaders/shared/trace_ray.glsl says why),
-  // and with them, for the recorded pixel.
-  ShaderProgram deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}, "#define TRACE_RECORDING 0\n"};
-  ShaderProgram deferredRecording_{{{GL_COMPUTE_SHADER, "trace.comp"}}, "#define TRACE_RECORDING 1\n"};
-  ShaderProgram forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
-                         "#define TRACE_RECORDING 0\n"};
-  ShaderProgram forwardRecording_{
-      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
-      "#define TRACE_RECORDING 1\n"};
+  // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy and
+  // search of this run, and compiled without the step records or, for the recorded pixel,
+  // with them.
+  std::string specialization(const gpu::TraceParams& params, bool recording) const {
+    return "#define TRACE_HIERARCHY " + std::to_string(params.limits.z) +
+           "\n#define TRACE_SEARCH " + std::to_string(params.config.z) +
+           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n";
+  }
+  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
+  ShaderVariants forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   bool buffersAllocated_ = false;
   GlFramebuffer framebuffer_;

@@ -15,11 +15,7 @@ ShaderProgram& ViewDifference::programFor(const GlTexture& a, const GlTexture& b
   if (b.isInteger()) defines += "#define B_UINT\n";
   defines += std::string("#define RESULT_FORMAT ") +
              (resultFormat == GL_R32F ? "r32f" : resultFormat == GL_RG32F ? "rg32f" : "rgba32f") + "\n";
-  std::unique_ptr<ShaderProgram>& program = programs_[defines];
-  if (!program)
-    program = std::make_unique<ShaderProgram>(
-        std::vector<ShaderProgram::Source>{{GL_COMPUTE_SHADER, "view_difference.comp"}}, defines);
-  return *program;
+  return programs_[defines];
 }
 
 // 2. One dispatch, skipped when nothing changed.

@@ -9,8 +9,6 @@
 // that the view then shows, reads back, autofits and exports like any output. It starts
 // with the diverging colormap, symmetric about 0.
 #pragma once
-#include <map>
-#include <memory>
 #include <string>
 
 #include "gl/gl_texture.h"
@@ -30,7 +28,7 @@ public:
 
 private:
   ShaderProgram& programFor(const GlTexture& a, const GlTexture& b, GLenum resultFormat);
-  std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "view_difference.comp"}}};
   GlTexture result_;
   struct Key {
     GLuint a = 0, b = 0;
