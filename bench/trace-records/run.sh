@@ -1,20 +1,17 @@
 #!/bin/sh
 # Issue 14, session 6: the trace with its step records compiled out (TRACE_RECORDING 0 in
-# shaders/shared/trace_ray.glsl), against the shaders before it (commit f53a80a: the records'
-# branches compiled in, checked at run time), and what the rest of the trace costs once the
-# search is taken out. Both sides run on the same binary: `before` swaps in the old shaders
-# with PENUMBRA_SHADER_DIR (they ignore the TRACE_RECORDING define). Processes alternate
+# shaders/shared/trace_ray.glsl; the shaders of commit cf71058), against the shaders before
+# it (commit f53a80a: the records' branches compiled in, checked at run time), and what the
+# rest of the trace costs once the search is taken out. Both sides run on the same binary,
+# their shaders swapped in with PENUMBRA_SHADER_DIR (f53a80a's ignore the TRACE_RECORDING
+# define; cf71058's ignore the later specialization defines). Processes alternate
 # before / after, three rounds; within a process the sides alternate frame by frame.
 # Run on a quiet machine from the repository root after building:
 #   sh bench/trace-records/run.sh
-set -e
-P=$(pwd)/build/penumbra
+BEFORE=f53a80a AFTER=cf71058
 OUT=${OUT:-bench/trace-records}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-git archive f53a80a shaders | tar -x -C "$TMP" && mv "$TMP/shaders" "$TMP/before"
-cp -r shaders "$TMP/after"
-# Ablations of the current shaders (timing only; their images are wrong on purpose):
+. bench/ab_shaders.sh
+# Ablations of the `after` shaders (timing only; their images are wrong on purpose):
 #  no_search: every searched ray gets a constant answer instead of its search;
 #  no_early_outs: as no_search, and the inside and region early outs are skipped too;
 #  empty: every invocation returns at once (dispatch, clears, the list).
@@ -37,20 +34,6 @@ variant("no_early_outs", [no_search,
     ("shared/trace_pixel.glsl", "    if (trace.switches.y != 0 && endKept &&", "    if (false && endKept &&")])
 variant("empty", [("trace.comp", "  if (pixel.x < 0) return;\n", "  if (pixel.x < 0 || trace.config.x > 0) return;\n")])
 PY
-cube() {  # $1 = shader dir name, $2 = round
-  PENUMBRA_SHADER_DIR="$TMP/$1" $P bench-compare --scene cube --width 640 --height 480 --frames 8 --warmup 1 \
-    --set trace.search=hierarchical --set trace.rays=2 --set trace.deferred=true --set light.layers=two \
-    --side "nbuffer_512:light.resolution=512;trace.hierarchy=nbuffer" \
-    --side "minmax_2048:light.resolution=2048;trace.hierarchy=minmax" \
-    --requested composite.color --counters trace.raysSearched,trace.fetches --out "$OUT/cube-$1-r$2.md"
-}
-dragon() {  # $1 = shader dir name, $2 = map, $3 = round
-  PENUMBRA_SHADER_DIR="$TMP/$1" $P bench-compare --scene dragon --width 512 --height 384 --frames 9 --warmup 1 \
-    --set light.resolution=$2 --set trace.rays=2 --set trace.deferred=true --set trace.hierarchy=nbuffer \
-    --side "hierarchical_2L:trace.search=hierarchical;light.layers=two" \
-    --side "linear_binary_3L:trace.search=linear_binary;light.layers=three" \
-    --requested filter.visibility --counters trace.raysSearched,trace.fetches --out "$OUT/dragon$2-$1-r$3.md"
-}
 for round in 1 2 3; do
   for side in before after; do
     cube $side $round
