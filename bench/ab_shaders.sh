@@ -23,3 +23,12 @@ dragon() {  # $1 = shader dir name under $TMP, $2 = map, $3 = round
     --side "linear_binary_3L:trace.search=linear_binary;light.layers=three" \
     --requested filter.visibility --counters trace.raysSearched,trace.fetches --out "$OUT/dragon$2-$1-r$3.md"
 }
+before_after_rounds() {  # three rounds, processes alternating before / after
+  for round in 1 2 3; do
+    for side in before after; do
+      cube $side $round
+      dragon $side 1024 $round
+      dragon $side 2048 $round
+    done
+  done
+}

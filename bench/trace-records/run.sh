@@ -34,13 +34,7 @@ variant("no_early_outs", [no_search,
     ("shared/trace_pixel.glsl", "    if (trace.switches.y != 0 && endKept &&", "    if (false && endKept &&")])
 variant("empty", [("trace.comp", "  if (pixel.x < 0) return;\n", "  if (pixel.x < 0 || trace.config.x > 0) return;\n")])
 PY
-for round in 1 2 3; do
-  for side in before after; do
-    cube $side $round
-    dragon $side 1024 $round
-    dragon $side 2048 $round
-  done
-done
+before_after_rounds
 for round in 1 2; do
   for side in after no_search no_early_outs empty; do
     dragon $side 2048 a$round

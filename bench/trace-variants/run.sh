@@ -12,10 +12,4 @@
 BEFORE=cf71058 AFTER=203c9b2
 OUT=${OUT:-bench/trace-variants}
 . bench/ab_shaders.sh
-for round in 1 2 3; do
-  for side in before after; do
-    cube $side $round
-    dragon $side 1024 $round
-    dragon $side 2048 $round
-  done
-done
+before_after_rounds
