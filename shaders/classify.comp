@@ -89,9 +89,9 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   ivec2 size = ivec2(light.mapSize.xy);
   // The coarsest level's window (the min-max mipmap's one top cell) is the whole map: the
   // starting bounds (§3.6).
-  vec3 whole = CLASSIFY_OVER_MINMAX != 0 ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0),
-                                                       size - 1, size, 1)
-                                : texelFetch(nbufferLevels, ivec3(0, 0, textureSize(nbufferLevels, 0).z - 1), 0).xyz;
+  vec3 whole = CLASSIFY_OVER_MINMAX != 0
+                   ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0), size - 1, size, 1)
+                   : texelFetch(nbufferLevels, ivec3(0, 0, textureSize(nbufferLevels, 0).z - 1), 0).xyz;
   vec3 map = lightMapCoords(wsPosition + wsNormal * fullNormalOffset(wsPosition));
   zRange = vec4(whole, zToLsDepth(map.z));
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))

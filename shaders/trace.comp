@@ -21,7 +21,10 @@ layout(location = TRACE_PIXELS_LOCATION) uniform int uPixels;
 
 ivec2 tracedPixel() {
   if (uPixels == TRACE_PIXELS_ALL) return screenPixel();
-  if (uPixels == TRACE_PIXELS_RECORDED) return gl_LocalInvocationIndex == 0u ? trace.record.xy : ivec2(-1);
+  if (uPixels == TRACE_PIXELS_RECORDED) {  // nothing where the recorded pixel is off the image
+    bool inImage = all(lessThan(uvec2(trace.record.xy), frame.sizes.xy));
+    return gl_LocalInvocationIndex == 0u && inImage ? trace.record.xy : ivec2(-1);
+  }
   uint index = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
   if (index >= listCount) return ivec2(-1);
   uint xy = tracedPixels[index];

@@ -48,7 +48,9 @@ private:
 };
 
 // The programs of the same sources compiled with different #defines (specializations),
-// each built on first use and kept: operator[] with the defines' text.
+// each built on first use and kept: operator[] with the defines' text. A variant first
+// used after a broken edit on disk throws like any first build (id()); the variants built
+// before keep their last good program on reload.
 class ShaderVariants {
 public:
   explicit ShaderVariants(std::vector<ShaderProgram::Source> sources) : sources_(std::move(sources)) {}

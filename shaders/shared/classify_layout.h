@@ -13,7 +13,7 @@
 #define CLASSIFY_ITERATIONS_LOCATION 1
 #define CLASSIFY_UMBRA_TEST_LOCATION 2
 #define CLASSIFY_MINMAX_CELLS_LOCATION 3  // int: cells per axis over the min-max mipmap
-                                          // (classify.minmax_cells); 0: the N-buffer
+                                          // (classify.minmax_cells; its program only)
 
 #define CLASSIFY_COUNTS_BINDING 2
 #define CLASSIFY_CLASS_COUNT 5

@@ -45,10 +45,12 @@ int gRayIndex = 0;
 #define traceSearch() trace.config.z
 #endif
 
-// TRACE_RECORDING 0 compiles the step records out. The pipeline's passes over many pixels
-// use that variant and trace the recorded pixel again, alone, with recording on: compiled
-// in, the records' branches cost time even where no invocation records (on llvmpipe the
-// trace takes 0.78-0.92 of its time without them; bench/trace-records). Undefined: on.
+// TRACE_RECORDING 0 compiles the step records out. The deferred pass over many pixels uses
+// that variant and traces the recorded pixel again, alone, with recording on (the forward
+// pass cannot trace one pixel alone: with a recorded pixel it runs the recording variant
+// throughout): compiled in, the records' branches cost time even where no invocation
+// records (on llvmpipe the trace takes 0.78-0.92 of its time without them;
+// bench/trace-records). Undefined: on.
 #ifndef TRACE_RECORDING
 #define TRACE_RECORDING 1
 #endif

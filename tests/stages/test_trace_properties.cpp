@@ -84,18 +84,22 @@ TEST_P(TraceRecords, DecisionsAddUpToTheVisibilityAndSteppingNeverDecreases) {
 INSTANTIATE_TEST_SUITE_P(Searches, TraceRecords,
                          ::testing::Values("hierarchical", "linear_binary", "linear"));
 
-// The passes over many pixels compile the step records out and trace the recorded pixel
-// again with them (shaders/shared/trace_ray.glsl): recording a pixel must change no value
-// and no count, in each of the three ways the trace runs.
-TEST(TraceRecords, RecordingAPixelChangesNoOutputAndNoCount) {
+// The deferred pass compiles the step records out and traces the recorded pixel again with
+// them; the forward pass switches to the recording variant (shaders/shared/trace_ray.glsl):
+// recording a pixel must change no value and no count, in each way the trace runs, over
+// both hierarchies and with a second search.
+TEST(TraceRecording, RecordingAPixelChangesNoOutputAndNoCount) {
   const std::vector<std::vector<std::string>> ways = {
-      {"trace.deferred=true", "trace.use_classification=true"},
-      {"trace.deferred=true", "trace.use_classification=false"},
-      {"trace.deferred=false"}};
+      {"trace.deferred=true", "trace.use_classification=true", "trace.hierarchy=minmax"},
+      {"trace.deferred=true", "trace.use_classification=true", "trace.hierarchy=nbuffer"},
+      {"trace.deferred=true", "trace.use_classification=false", "trace.hierarchy=nbuffer"},
+      {"trace.deferred=true", "trace.use_classification=true", "trace.search=linear_binary"},
+      {"trace.deferred=false", "trace.hierarchy=nbuffer"}};
   for (const auto& way : ways) {
     std::vector<std::string> sets = {"trace.rays=2", "light.resolution=256"};
     sets.insert(sets.end(), way.begin(), way.end());
-    const std::string where = way.size() == 2 ? way[0] + " " + way[1] : way[0];
+    std::string where;
+    for (const std::string& set : way) where += set + " ";
     PipelineRun plain(makeBuiltinScene("cube"), sets, 120, 120);
     int x = -1, y = -1;
     ASSERT_TRUE(findPenumbraPixel(plain, x, y)) << where;
@@ -110,6 +114,24 @@ TEST(TraceRecords, RecordingAPixelChangesNoOutputAndNoCount) {
                                 "trace.iterations", "trace.earlyOutRegion"})
       EXPECT_EQ(recorded.frame->counters.at(counter), plain.frame->counters.at(counter))
           << counter << ", " << where;
+  }
+}
+
+// record_x / record_y may name a pixel off the image (the parameters' ranges do not know
+// the eye size): the recording pass then reads nothing and records nothing.
+TEST(TraceRecording, APixelOffTheImageRecordsNothing) {
+  for (const char* classification : {"true", "false"}) {
+    const std::vector<std::string> sets = {"trace.rays=2", "light.resolution=256",
+                                           std::string("trace.use_classification=") + classification};
+    PipelineRun plain(makeBuiltinScene("cube"), sets, 120, 120);
+    auto offImage = sets;
+    offImage.push_back("trace.record_x=500");
+    offImage.push_back("trace.record_y=20");
+    PipelineRun recorded(makeBuiltinScene("cube"), offImage, 120, 120);
+    EXPECT_TRUE(recorded.frame->traceSteps.empty()) << classification;
+    EXPECT_EQ(recorded.read("trace.visibility"), plain.read("trace.visibility")) << classification;
+    EXPECT_EQ(recorded.frame->counters.at("trace.rays"), plain.frame->counters.at("trace.rays"))
+        << classification;
   }
 }
 
