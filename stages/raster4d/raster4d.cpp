@@ -18,7 +18,6 @@
 #include <cmath>
 #include <initializer_list>
 #include <utility>
-#include <map>
 #include <memory>
 
 #include "core/frame.h"
@@ -204,7 +203,7 @@ public:
       dispatchLinear(std::uint64_t(occluders_.triangles()));
       step4 += millisecondsSince(start);
       // STEP 5: the band's pairs.
-      program(occlusionPrograms_, "raster4d_occlusion.comp", m).use();
+      occlusionPrograms_[samplesDefine(m)].use();
       bind({{R4D_OCCLUSION_RECEIVERS, &receivers_}, {R4D_OCCLUSION_LS_TRIANGLES, &lsTriangles_},
             {R4D_OCCLUSION_BOXES, &boxes_}, {R4D_OCCLUSION_SAMPLE_LIST, &sampleList_},
             {R4D_OCCLUSION_TRIANGLE_STARTS, &triangleStarts_},
@@ -222,7 +221,7 @@ public:
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
     GlTexture& mask = frame.output(*this, "pickedMask", m, m);
     glClearTexImage(mask.id(), 0, GL_RED, GL_FLOAT, nullptr);
-    program(resolvePrograms_, "raster4d_resolve.comp", m).use();
+    resolvePrograms_[samplesDefine(m)].use();
     bind({{R4D_RESOLVE_RECEIVERS, &receivers_}, {R4D_RESOLVE_MASKS, &masks}});
     glBindImageTexture(0, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(1, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
@@ -385,15 +384,7 @@ private:
     glBindBufferBase(GL_UNIFORM_BUFFER, RASTER4D_PARAMS_BINDING, paramsBuffer_.id());
   }
   // The programs that depend on m (SAMPLES sizes their row arrays), built on first use.
-  static ShaderProgram& program(std::map<int, std::unique_ptr<ShaderProgram>>& programs,
-                                const char* file, int m) {
-    auto& slot = programs[m];
-    if (!slot)
-      slot = std::make_unique<ShaderProgram>(
-          std::vector<ShaderProgram::Source>{{GL_COMPUTE_SHADER, file}},
-          "#define SAMPLES " + std::to_string(m));
-    return *slot;
-  }
+  static std::string samplesDefine(int m) { return "#define SAMPLES " + std::to_string(m); }
 
   Raster4dOccluders occluders_;
   GlBuffer paramsBuffer_, state_, receivers_, lsTriangles_, boxes_, cursors_, cellPairs_;
@@ -403,7 +394,8 @@ private:
   ShaderProgram trianglesProgram_{{{GL_COMPUTE_SHADER, "raster4d_triangles.comp"}}};
   ShaderProgram scanProgram_{{{GL_COMPUTE_SHADER, "raster4d_scan.comp"}}};
   ShaderProgram cellsProgram_{{{GL_COMPUTE_SHADER, "raster4d_cells.comp"}}};
-  std::map<int, std::unique_ptr<ShaderProgram>> occlusionPrograms_, resolvePrograms_;
+  ShaderVariants occlusionPrograms_{{{GL_COMPUTE_SHADER, "raster4d_occlusion.comp"}}};
+  ShaderVariants resolvePrograms_{{{GL_COMPUTE_SHADER, "raster4d_resolve.comp"}}};
 };
 
 }  // namespace

@@ -291,7 +291,8 @@ TEST(StageGraph, TheAutoHierarchyIsDecidedFromTheMapAndTheEye) {
   EXPECT_TRUE(small.pipeline->lastTime("nbuffer").ran);
   EXPECT_FALSE(small.pipeline->lastTime("minmax").ran);
   EXPECT_FALSE(small.frame->has("minmax.levels"));
-  small.frame->eyeWidth = 64, small.frame->eyeHeight = 48;
+  small.frame->eyeWidth = 64;
+  small.frame->eyeHeight = 48;
   // A hand-set hierarchy overrides the rule.
   ASSERT_EQ(small.pipeline->set("trace.hierarchy=nbuffer"), "");
   small.pipeline->run(*small.frame, {"filter.visibility"});
