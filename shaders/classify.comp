@@ -100,9 +100,14 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
     zRange.w = isinf(zRange.w) || isnan(zRange.w) ? 0.0 : zRange.w;
     return CLASS_OUTSIDE;
   }
-  vec3 bounds = boundsForRays(map, map, whole, size);
-  if (normalOffsetDistance(wsPosition, wsNormal, bounds.x) < fullNormalOffset(wsPosition))
-    bounds = boundsForRays(map, lightMapCoords(wsPosition), whole, size);
+  // A loop, not an if: llvmpipe runs the body of an if that no lane of the 8 enters, but
+  // leaves a loop once no lane is left in it, so the second pass costs only where needed.
+  vec3 bounds, secondEnd = map;
+  for (int pass = 0; pass < 2; ++pass) {
+    bounds = boundsForRays(map, secondEnd, whole, size);
+    if (normalOffsetDistance(wsPosition, wsNormal, bounds.x) >= fullNormalOffset(wsPosition)) break;
+    secondEnd = lightMapCoords(wsPosition);
+  }
   zRange.xyz = bounds;
   // The capped point (the trace starts its rays there too).
   wsPosition = normalOffsetPoint(wsPosition, wsNormal, bounds.x);

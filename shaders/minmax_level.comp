@@ -2,6 +2,8 @@
 // the (up to) 2 x 2 children in level n-1. Level 1 reads its children from the layers as
 // (near, near, far): level 0 is the layers, never stored (issue 14: storing it was a full
 // RGBA32F copy, half the build).
+// Two programs (MINMAX_FROM_LAYERS 1: level 1; 0: the coarser levels), not one branch on
+// the level: llvmpipe runs both sides of a branch for every texel, also of one on a uniform.
 #include "shared/minmax.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/minmax_layout.h"
@@ -11,30 +13,40 @@ layout(binding = MINMAX_ATLAS_IMAGE, rgba32f) uniform coherent image2D atlas;
 layout(location = MINMAX_LEVEL_LOCATION) uniform int uLevel;
 layout(location = MINMAX_SIZE_LOCATION) uniform ivec2 uSize;
 
+#if !defined(MINMAX_FROM_LAYERS)
+#error "minmax_level.comp is compiled with MINMAX_FROM_LAYERS 0 or 1 (app/gl/minmax_build.h)"
+#endif
+
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 levelSize = ivec2(minmaxLevelSize(uLevel, uSize.x), minmaxLevelSize(uLevel, uSize.y));
   if (any(greaterThanEqual(texel, levelSize))) return;
   vec4 bounds;
-  if (uLevel == 1) {
-    for (int child = 0; child < 4; ++child) {
-      ivec2 finer = 2 * texel + ivec2(child & 1, child >> 1);
-      if (any(greaterThanEqual(finer, uSize))) continue;  // the first child always exists
-      float nearDepth = texelFetch(nearLayer, finer, 0).r, farDepth = texelFetch(farLayer, finer, 0).r;
-      vec4 b = vec4(nearDepth, nearDepth, farDepth, 0.0);
-      bounds = child == 0 ? b : vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
-    }
-  } else {
-    ivec2 finerSize = ivec2(minmaxLevelSize(uLevel - 1, uSize.x), minmaxLevelSize(uLevel - 1, uSize.y));
-    ivec2 finerOrigin = minmaxLevelOrigin(uLevel - 1, uSize);
-    // 1. The first child always exists; the others where the finer level reaches them.
-    bounds = imageLoad(atlas, finerOrigin + 2 * texel);
-    for (int child = 1; child < 4; ++child) {
-      ivec2 finer = 2 * texel + ivec2(child & 1, child >> 1);
-      if (any(greaterThanEqual(finer, finerSize))) continue;
-      vec4 b = imageLoad(atlas, finerOrigin + finer);
-      bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
-    }
+#if MINMAX_FROM_LAYERS
+  // Level 1: the 2 x 2 children from the layers as (near, near, far). The far layer in one
+  // gather around the children's common corner 2 * texel + 1 (gathers cost about what one
+  // fetch does on llvmpipe); past an odd map's last row or column the clamped texel repeats
+  // a child, which leaves the maximum unchanged. The near layer by texelFetch: gathering it
+  // too changed later classification in one case (bench/llvmpipe-branches/README.md).
+  ivec2 last = uSize - 1;
+  vec4 farDepths = textureGather(farLayer, vec2(2 * texel + 1) / vec2(uSize));
+  float near00 = texelFetch(nearLayer, 2 * texel, 0).r;
+  float near10 = texelFetch(nearLayer, min(2 * texel + ivec2(1, 0), last), 0).r;
+  float near01 = texelFetch(nearLayer, min(2 * texel + ivec2(0, 1), last), 0).r;
+  float near11 = texelFetch(nearLayer, min(2 * texel + 1, last), 0).r;
+  bounds = vec4(min(min(near00, near10), min(near01, near11)), max(max(near00, near10), max(near01, near11)),
+                max(max(farDepths.x, farDepths.y), max(farDepths.z, farDepths.w)), 0.0);
+#else
+  ivec2 finerSize = ivec2(minmaxLevelSize(uLevel - 1, uSize.x), minmaxLevelSize(uLevel - 1, uSize.y));
+  ivec2 finerOrigin = minmaxLevelOrigin(uLevel - 1, uSize);
+  // The first child always exists; the others where the finer level reaches them.
+  bounds = imageLoad(atlas, finerOrigin + 2 * texel);
+  for (int child = 1; child < 4; ++child) {
+    ivec2 finer = 2 * texel + ivec2(child & 1, child >> 1);
+    if (any(greaterThanEqual(finer, finerSize))) continue;
+    vec4 b = imageLoad(atlas, finerOrigin + finer);
+    bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
   }
+#endif
   imageStore(atlas, minmaxLevelOrigin(uLevel, uSize) + texel, bounds);
 }

@@ -57,12 +57,12 @@ void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
                        GL_RGBA, GL_FLOAT, zeros);
   }
   // 2. Level 1 from the layers, then level n from level n-1.
-  level_.use();
   glBindTextureUnit(MINMAX_NEAR_UNIT, nearLayer.id());
   glBindTextureUnit(MINMAX_FAR_UNIT, farLayer.id());
   glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glUniform2i(MINMAX_SIZE_LOCATION, width, height);
   for (int level = 1; level <= top; ++level) {
+    (level == 1 ? fromLayers_ : fromAtlas_).use();  // uniforms are per program: set each time
+    glUniform2i(MINMAX_SIZE_LOCATION, width, height);
     const glm::ivec2 size = minmaxLevelSize(level, width, height);
     glUniform1i(MINMAX_LEVEL_LOCATION, level);
     glDispatchCompute(GLuint(size.x + 7) / 8, GLuint(size.y + 7) / 8, 1);

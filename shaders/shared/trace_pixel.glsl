@@ -73,7 +73,7 @@ bool endPointInside(Ray ray, float sEndPoint, vec3 wsEnd, int layers, inout RayC
 // (classify's Eq 3.3 region; the whole map where no classification ran).
 float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
                       inout RayCounts counts) {
-  int raysPerSide = trace.config.x, layers = trace.config.w, search = traceSearch();
+  int raysPerSide = trace.config.x, layers = traceLayers(), search = traceSearch();
   int rayCount = raysPerSide * raysPerSide;
   int unblocked = 0;
   wsPosition = normalOffsetPoint(wsPosition, wsNormal, zBounds.x);  // capped by zNearMin

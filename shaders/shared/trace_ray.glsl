@@ -29,9 +29,9 @@ uint gFetches = 0u, gIterations = 0u;
 bool gRecording = false;
 int gRayIndex = 0;
 
-// Specializations (issue 14). The pipeline compiles one trace program per hierarchy and
-// search (TRACE_HIERARCHY, TRACE_SEARCH), so that no program carries the code of the ones
-// not chosen: on llvmpipe that code cost time although no ray ran it (bench/trace-variants).
+// Specializations (issue 14). The pipeline compiles one trace program per hierarchy,
+// search and layer count (TRACE_HIERARCHY, TRACE_SEARCH, TRACE_LAYERS), so that no program
+// carries the code of the ones not chosen: on llvmpipe that code cost time although no ray ran it (bench/trace-variants).
 // Undefined (the test shaders): chosen at run time from the parameter block, which the
 // pipeline fills with the same values.
 #ifdef TRACE_HIERARCHY
@@ -43,6 +43,11 @@ int gRayIndex = 0;
 #define traceSearch() TRACE_SEARCH
 #else
 #define traceSearch() trace.config.z
+#endif
+#ifdef TRACE_LAYERS
+#define traceLayers() TRACE_LAYERS
+#else
+#define traceLayers() trace.config.w
 #endif
 
 // TRACE_RECORDING 0 compiles the step records out. The deferred pass over many pixels uses

@@ -309,12 +309,13 @@ private:
     frame.counters["trace.recordedSteps"] = header[0];
   }
 
-  // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy and
-  // search of this run, and compiled without the step records or, for the recorded pixel,
+  // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy,
+  // search and layer count of this run, and compiled without the step records or, for the recorded pixel,
   // with them.
   std::string specialization(const gpu::TraceParams& params, bool recording) const {
     return "#define TRACE_HIERARCHY " + std::to_string(params.limits.z) +
            "\n#define TRACE_SEARCH " + std::to_string(params.config.z) +
+           "\n#define TRACE_LAYERS " + std::to_string(params.config.w) +
            "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n";
   }
   ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
