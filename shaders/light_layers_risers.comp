@@ -10,7 +10,8 @@
 // are copied unchanged.
 // Written without a branch on the texel: llvmpipe runs both sides of a branch for all 8
 // lanes, so the neighbours' reads cost every texel anyway (issue 14: at a 2048^2 map the
-// pass took 60 of the stage's 70 ms); here they are 4 near fetches and 2 far gathers.
+// pass took 60 of the stage's 70 ms); here a texel reads 5 near texels (itself and its
+// 4-neighbours) by texelFetch and the far ones by 2 gathers.
 #include "shared/frame.glsl"
 #include "shared/light_layers_layout.h"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -27,7 +28,8 @@ void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = textureSize(farLayer, 0);
   if (any(greaterThanEqual(texel, size))) return;
   // 1. The texel and its 4-neighbours (left, below, above, right). A neighbour past the
-  //    map's border is clamped to the texel itself, which never raises far (f > far fails).
+  //    map's border is clamped to the texel itself (the textures clamp to the edge,
+  //    gl_texture.cpp), which never raises far (its f is far itself).
   //    The far layer in two gathers, around the texel's lower-left corner (texels x-1..x,
   //    y-1..y) and its upper-right corner (x..x+1, y..y+1); gather order (GLSL 4.50
   //    §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). The near layer by texelFetch:
@@ -44,11 +46,13 @@ void main() {
                 texelFetch(nearLayer, min(texel + ivec2(1, 0), last), 0).r);
   // 2. One texel's width in world units at this depth, in lsDepth units.
   float z = lsDepthToZ(farDepth);
-  float texelWorld = 2.0 * z * max(light.lightDepthRange.z, light.lightDepthRange.w) / float(size.x);
+  float texelWorld =
+      2.0 * z * max(light.lightDepthRange.z, light.lightDepthRange.w) / float(size.x);
   float cap = kMaxSlope * texelWorld / (light.lightDepthRange.y - light.lightDepthRange.x);
   // 3. The deepest neighbour that is a sheet texel no more than `cap` deeper.
   float raised = farDepth;
   for (int k = 0; k < 4; ++k)
     if (isSheet(n[k], f[k]) && f[k] - farDepth <= cap) raised = max(raised, f[k]);
-  imageStore(farImage, texel, vec4(uCloseRisers && isSheet(nearDepth, farDepth) ? raised : farDepth));
+  bool close = uCloseRisers && isSheet(nearDepth, farDepth);
+  imageStore(farImage, texel, vec4(close ? raised : farDepth));
 }

@@ -14,7 +14,7 @@ layout(location = MINMAX_LEVEL_LOCATION) uniform int uLevel;
 layout(location = MINMAX_SIZE_LOCATION) uniform ivec2 uSize;
 
 #if !defined(MINMAX_FROM_LAYERS)
-#error "minmax_level.comp is compiled with MINMAX_FROM_LAYERS 0 or 1 (app/gl/minmax_build.h)"
+#error "minmax_level.comp needs MINMAX_FROM_LAYERS 0 or 1 (app/gl/minmax_build.h)"
 #endif
 
 void main() {
@@ -25,8 +25,8 @@ void main() {
 #if MINMAX_FROM_LAYERS
   // Level 1: the 2 x 2 children from the layers as (near, near, far). The far layer in one
   // gather around the children's common corner 2 * texel + 1 (gathers cost about what one
-  // fetch does on llvmpipe); past an odd map's last row or column the clamped texel repeats
-  // a child, which leaves the maximum unchanged. The near layer by texelFetch: gathering it
+  // fetch does on llvmpipe); past an odd map's last row or column the texel clamped to the
+  // edge (gl_texture.cpp) repeats a child, which leaves minimum and maximum unchanged. The near layer by texelFetch: gathering it
   // too changed later classification in one case (bench/llvmpipe-branches/README.md).
   ivec2 last = uSize - 1;
   vec4 farDepths = textureGather(farLayer, vec2(2 * texel + 1) / vec2(uSize));
@@ -34,10 +34,12 @@ void main() {
   float near10 = texelFetch(nearLayer, min(2 * texel + ivec2(1, 0), last), 0).r;
   float near01 = texelFetch(nearLayer, min(2 * texel + ivec2(0, 1), last), 0).r;
   float near11 = texelFetch(nearLayer, min(2 * texel + 1, last), 0).r;
-  bounds = vec4(min(min(near00, near10), min(near01, near11)), max(max(near00, near10), max(near01, near11)),
+  bounds = vec4(min(min(near00, near10), min(near01, near11)),
+                max(max(near00, near10), max(near01, near11)),
                 max(max(farDepths.x, farDepths.y), max(farDepths.z, farDepths.w)), 0.0);
 #else
-  ivec2 finerSize = ivec2(minmaxLevelSize(uLevel - 1, uSize.x), minmaxLevelSize(uLevel - 1, uSize.y));
+  ivec2 finerSize =
+      ivec2(minmaxLevelSize(uLevel - 1, uSize.x), minmaxLevelSize(uLevel - 1, uSize.y));
   ivec2 finerOrigin = minmaxLevelOrigin(uLevel - 1, uSize);
   // The first child always exists; the others where the finer level reaches them.
   bounds = imageLoad(atlas, finerOrigin + 2 * texel);

@@ -31,7 +31,8 @@ int gRayIndex = 0;
 
 // Specializations (issue 14). The pipeline compiles one trace program per hierarchy,
 // search and layer count (TRACE_HIERARCHY, TRACE_SEARCH, TRACE_LAYERS), so that no program
-// carries the code of the ones not chosen: on llvmpipe that code cost time although no ray ran it (bench/trace-variants).
+// carries the code of the ones not chosen: on llvmpipe that code cost time although no ray
+// ran it (bench/trace-variants, bench/llvmpipe-branches).
 // Undefined (the test shaders): chosen at run time from the parameter block, which the
 // pipeline fills with the same values.
 #ifdef TRACE_HIERARCHY

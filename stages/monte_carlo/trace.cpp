@@ -46,8 +46,8 @@ Input hierarchyInput() {
 // dragon 640x480 map 512): 0.84-1.10, mostly about 1; 14.7 (map 640 at 640x480): cube
 // 0.89-0.94, dragon 0.95-1.08; 19 and up: 0.47-0.87 but for one dragon run at 1.03. The
 // crossover lies between 10.7 and 14.7. Session 7 (bench/hierarchy-auto/README.md section
-// 4), after the shaders were rewritten for llvmpipe's lockstep lanes: on cube and dragon
-// the crossover fell to 4.8-8.5, but the window's default view of spheres (map 640 at
+// 4), after the shaders were rewritten for llvmpipe's lockstep lanes: the crossover fell
+// (cube 320x240: at or below 4.3; cube 640x480 and dragon 640x480: 4.8-8.5), but the window's default view of spheres (map 640 at
 // 616x665, 11.0) takes 1.36x the N-buffer's time with the min-max mipmap (the trace 2x:
 // 12.6 against 7.5 fetches per searched ray), so the constant stays.
 constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
