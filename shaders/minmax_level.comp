@@ -26,8 +26,9 @@ void main() {
   // Level 1: the 2 x 2 children from the layers as (near, near, far). The far layer in one
   // gather around the children's common corner 2 * texel + 1 (gathers cost about what one
   // fetch does on llvmpipe); past an odd map's last row or column the texel clamped to the
-  // edge (gl_texture.cpp) repeats a child, which leaves minimum and maximum unchanged. The near layer by texelFetch: gathering it
-  // too changed later classification in one case (bench/llvmpipe-branches/README.md).
+  // edge (gl_texture.cpp) repeats a child, which leaves minimum and maximum unchanged. The
+  // near layer by texelFetch: gathering it too changed later classification in one case
+  // (bench/llvmpipe-branches/README.md).
   ivec2 last = uSize - 1;
   vec4 farDepths = textureGather(farLayer, vec2(2 * texel + 1) / vec2(uSize));
   float near00 = texelFetch(nearLayer, 2 * texel, 0).r;
