@@ -61,7 +61,9 @@ void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
   glBindTextureUnit(MINMAX_FAR_UNIT, farLayer.id());
   glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   for (int level = 1; level <= top; ++level) {
-    (level == 1 ? fromLayers_ : fromAtlas_).use();  // uniforms are per program: set each time
+    const char* fromLayers = level == 1 ? "1" : "0";
+    levelPrograms_[std::string("#define MINMAX_FROM_LAYERS ") + fromLayers + "\n"].use();
+    // Uniforms are per program: set for each level.
     glUniform2i(MINMAX_SIZE_LOCATION, width, height);
     const glm::ivec2 size = minmaxLevelSize(level, width, height);
     glUniform1i(MINMAX_LEVEL_LOCATION, level);

@@ -25,10 +25,7 @@ public:
 private:
   // Level 1 from the layers, the coarser levels from the atlas (minmax_level.comp says why
   // two programs).
-  ShaderProgram fromLayers_{{{GL_COMPUTE_SHADER, "minmax_level.comp"}},
-                            "#define MINMAX_FROM_LAYERS 1\n"};
-  ShaderProgram fromAtlas_{{{GL_COMPUTE_SHADER, "minmax_level.comp"}},
-                           "#define MINMAX_FROM_LAYERS 0\n"};
+  ShaderVariants levelPrograms_{{{GL_COMPUTE_SHADER, "minmax_level.comp"}}};
 };
 
 // The same with a process-wide builder (tests); never deleted, like buildNBuffer's.

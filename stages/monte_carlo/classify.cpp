@@ -116,7 +116,7 @@ public:
 
     const GlTexture& levels = frame.input(*this, "levels");
     const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
-    (minmax ? overMinMax_ : overNBuffer_).use();
+    programs_[std::string("#define CLASSIFY_OVER_MINMAX ") + (minmax ? "1" : "0") + "\n"].use();
     bindLightInput(frame, *this);
     glBindTextureUnit(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
@@ -144,8 +144,7 @@ public:
 
 private:
   // One program per hierarchy (classify.comp says why).
-  ShaderProgram overNBuffer_{{{GL_COMPUTE_SHADER, "classify.comp"}}, "#define CLASSIFY_OVER_MINMAX 0\n"};
-  ShaderProgram overMinMax_{{{GL_COMPUTE_SHADER, "classify.comp"}}, "#define CLASSIFY_OVER_MINMAX 1\n"};
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "classify.comp"}}};
   GlBuffer counts_;
 };
 

@@ -47,9 +47,10 @@ Input hierarchyInput() {
 // 0.89-0.94, dragon 0.95-1.08; 19 and up: 0.47-0.87 but for one dragon run at 1.03. The
 // crossover lies between 10.7 and 14.7. Session 7 (bench/hierarchy-auto/README.md section
 // 4), after the shaders were rewritten for llvmpipe's lockstep lanes: the crossover fell
-// (cube 320x240: at or below 4.3; cube 640x480 and dragon 640x480: 4.8-8.5), but the window's default view of spheres (map 640 at
-// 616x665, 11.0) takes 1.36x the N-buffer's time with the min-max mipmap (the trace 2x:
-// 12.6 against 7.5 fetches per searched ray), so the constant stays.
+// (cube 320x240: at or below 4.3; cube 640x480 and dragon 640x480: 4.8-8.5), but the
+// window's default view of spheres (map 640 at 616x665, 11.0) takes 1.36x the N-buffer's
+// time with the min-max mipmap (the trace 2x: 12.6 against 7.5 fetches per searched ray),
+// so the constant stays.
 constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
 
 class TraceStage final : public Stage {
@@ -323,7 +324,8 @@ private:
            "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n";
   }
   ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
-  ShaderVariants forward_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
+  ShaderVariants forward_{
+      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   bool buffersAllocated_ = false;
   GlFramebuffer framebuffer_;
