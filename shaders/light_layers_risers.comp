@@ -8,10 +8,12 @@
 // tilted up to ~80 degrees, not another occluder), which closes every riser: the shallower
 // step of each pair now spans the gap. Texels of closed or thick occluders (far > near)
 // are copied unchanged.
-// Written without a branch on the texel: llvmpipe runs both sides of a branch for all 8
-// lanes, so the neighbours' reads cost every texel anyway (issue 14: at a 2048^2 map the
-// pass took 60 of the stage's 70 ms); here a texel reads 5 near texels (itself and its
-// 4-neighbours) by texelFetch and the far ones by 2 gathers.
+// Written for llvmpipe, where the pass is bound by its reads (issue 14): without a branch on
+// the texel (llvmpipe runs both sides of a branch for all 8 lanes, so the neighbours' reads
+// cost every texel anyway), and one invocation per 2 x 2 block of texels, which share their
+// neighbours: the block reads the 4 x 4 texels around it once (the near layer's 12 without
+// the corners by texelFetch, the far layer's 16 by 4 gathers), 16 reads for 4 texels where
+// one invocation per texel made 28 (5 near fetches and 2 far gathers each).
 #include "shared/frame.glsl"
 #include "shared/light_layers_layout.h"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -24,35 +26,54 @@ const float kSheet = 1e-6, kMaxSlope = 6.0;
 
 bool isSheet(float nearDepth, float farDepth) { return farDepth >= nearDepth && farDepth - nearDepth <= kSheet; }
 
-void main() {
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy), size = textureSize(farLayer, 0);
-  if (any(greaterThanEqual(texel, size))) return;
-  // 1. The texel and its 4-neighbours (left, below, above, right). A neighbour past the
-  //    map's border is clamped to the texel itself (the textures clamp to the edge,
-  //    gl_texture.cpp), which never raises far (its f is far itself).
-  //    The far layer in two gathers, around the texel's lower-left corner (texels x-1..x,
-  //    y-1..y) and its upper-right corner (x..x+1, y..y+1); gather order (GLSL 4.50
-  //    §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). The near layer by texelFetch:
-  //    gathering it too changed later classification in one case on llvmpipe (not
-  //    understood; bench/llvmpipe-branches/README.md).
-  vec4 farLowerLeft = textureGather(farLayer, vec2(texel) / vec2(size));
-  vec4 farUpperRight = textureGather(farLayer, vec2(texel + 1) / vec2(size));
-  float farDepth = farLowerLeft.y, nearDepth = texelFetch(nearLayer, texel, 0).r;
-  vec4 f = vec4(farLowerLeft.x, farLowerLeft.z, farUpperRight.x, farUpperRight.z);
-  ivec2 last = size - 1;
-  vec4 n = vec4(texelFetch(nearLayer, max(texel - ivec2(1, 0), 0), 0).r,
-                texelFetch(nearLayer, max(texel - ivec2(0, 1), 0), 0).r,
-                texelFetch(nearLayer, min(texel + ivec2(0, 1), last), 0).r,
-                texelFetch(nearLayer, min(texel + ivec2(1, 0), last), 0).r);
-  // 2. One texel's width in world units at this depth, in lsDepth units.
+// The far depth of one texel, from its near and far depths and those of its 4-neighbours
+// n, f (left, below, above, right).
+float closedFar(float nearDepth, float farDepth, vec4 n, vec4 f, int size) {
+  // One texel's width in world units at this depth, in lsDepth units.
   float z = lsDepthToZ(farDepth);
-  float texelWorld =
-      2.0 * z * max(light.lightDepthRange.z, light.lightDepthRange.w) / float(size.x);
+  float texelWorld = 2.0 * z * max(light.lightDepthRange.z, light.lightDepthRange.w) / float(size);
   float cap = kMaxSlope * texelWorld / (light.lightDepthRange.y - light.lightDepthRange.x);
-  // 3. The deepest neighbour that is a sheet texel no more than `cap` deeper.
+  // The deepest neighbour that is a sheet texel no more than `cap` deeper.
   float raised = farDepth;
   for (int k = 0; k < 4; ++k)
     if (isSheet(n[k], f[k]) && f[k] - farDepth <= cap) raised = max(raised, f[k]);
   bool close = uCloseRisers && isSheet(nearDepth, farDepth);
-  imageStore(farImage, texel, vec4(close ? raised : farDepth));
+  return close ? raised : farDepth;
+}
+
+void main() {
+  ivec2 size = textureSize(farLayer, 0), last = size - 1;
+  ivec2 origin = RISERS_BLOCK * ivec2(gl_GlobalInvocationID.xy);  // the block's lower-left texel
+  if (any(greaterThanEqual(origin, size))) return;
+  // 1. The 4 x 4 texels origin - 1 .. origin + 2 (near[i][j]: column i, row j; the corners are
+  //    not needed). A texel past the map's border is clamped to the edge, as one texel's
+  //    neighbour past the border was clamped to the texel itself: the same texel, which never
+  //    raises far (its f is far itself). The far layer by 4 gathers, each around a corner of
+  //    the 2 x 2 texels it returns (clamped to the edge: gl_texture.cpp); gather order (GLSL
+  //    4.50 §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). The near layer by texelFetch:
+  //    gathering it changed later classification in one case on llvmpipe (not understood;
+  //    bench/llvmpipe-branches/README.md).
+  float near[4][4], far[4][4];
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      bool corner = (i == 0 || i == 3) && (j == 0 || j == 3);
+      near[i][j] = corner ? 0.0 : texelFetch(nearLayer, clamp(origin + ivec2(i - 1, j - 1), ivec2(0), last), 0).r;
+    }
+  for (int j = 0; j < 4; j += 2)
+    for (int i = 0; i < 4; i += 2) {
+      vec4 g = textureGather(farLayer, vec2(origin + ivec2(i, j)) / vec2(size));
+      far[i][j + 1] = g.x;
+      far[i + 1][j + 1] = g.y;
+      far[i + 1][j] = g.z;
+      far[i][j] = g.w;
+    }
+  // 2. Each texel of the block that lies in the map, from its own and its neighbours' depths.
+  for (int j = 1; j <= 2; ++j)
+    for (int i = 1; i <= 2; ++i) {
+      ivec2 texel = origin + ivec2(i - 1, j - 1);
+      if (any(greaterThan(texel, last))) continue;
+      vec4 n = vec4(near[i - 1][j], near[i][j - 1], near[i][j + 1], near[i + 1][j]);
+      vec4 f = vec4(far[i - 1][j], far[i][j - 1], far[i][j + 1], far[i + 1][j]);
+      imageStore(farImage, texel, vec4(closedFar(near[i][j], far[i][j], n, f, size.x)));
+    }
 }

@@ -56,19 +56,20 @@ void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
     glClearTexSubImage(atlas.id(), 0, size.x, origin.y, 0, atlasSize.x - size.x, size.y, 1,
                        GL_RGBA, GL_FLOAT, zeros);
   }
-  // 2. Level 1 from the layers, then level n from level n-1.
+  // 2. Level 1 from the layers, then level n from level n-1, each drawn over its rectangle
+  //    of the atlas; the texture barrier makes the previous level's writes visible.
   glBindTextureUnit(MINMAX_NEAR_UNIT, nearLayer.id());
   glBindTextureUnit(MINMAX_FAR_UNIT, farLayer.id());
-  glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(MINMAX_ATLAS_IMAGE, atlas.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   for (int level = 1; level <= top; ++level) {
     const char* fromLayers = level == 1 ? "1" : "0";
     levelPrograms_[std::string("#define MINMAX_FROM_LAYERS ") + fromLayers + "\n"].use();
     // Uniforms are per program: set for each level.
     glUniform2i(MINMAX_SIZE_LOCATION, width, height);
-    const glm::ivec2 size = minmaxLevelSize(level, width, height);
     glUniform1i(MINMAX_LEVEL_LOCATION, level);
-    glDispatchCompute(GLuint(size.x + 7) / 8, GLuint(size.y + 7) / 8, 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glTextureBarrier();
+    screen_.drawRect(atlas, minmaxLevelOrigin(level, width, height),
+                     minmaxLevelSize(level, width, height));
   }
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }

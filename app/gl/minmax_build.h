@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/gl_texture.h"
+#include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
 
 // Top level: ceil(log2(max(W, H))), one texel over the whole map.
@@ -23,9 +24,11 @@ public:
   void build(const GlTexture& nearLayer, const GlTexture& farLayer, GlTexture& atlas);
 
 private:
-  // Level 1 from the layers, the coarser levels from the atlas (minmax_level.comp says why
+  // Level 1 from the layers, the coarser levels from the atlas (minmax_level.frag says why
   // two programs).
-  ShaderVariants levelPrograms_{{{GL_COMPUTE_SHADER, "minmax_level.comp"}}};
+  ShaderVariants levelPrograms_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
+                                 {GL_FRAGMENT_SHADER, "minmax_level.frag"}}};
+  ScreenTriangle screen_;
 };
 
 // The same with a process-wide builder (tests); never deleted, like buildNBuffer's.

@@ -4,7 +4,7 @@
 #include "shared/nbuffer_layout.h"
 
 static_assert(gpu::distinctBelow({NBUFFER_NEAR_UNIT, NBUFFER_FAR_UNIT}, gpu::kTextureUnits));
-static_assert(gpu::distinctBelow({NBUFFER_FINER_IMAGE, NBUFFER_COARSER_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({NBUFFER_FINER_IMAGE}, gpu::kImageUnits));
 
 #include <algorithm>
 #include <stdexcept>
@@ -30,25 +30,21 @@ void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer
     throw std::invalid_argument("buildNBuffer: levels must be an RGBA32F array of " +
                                 std::to_string(width) + "x" + std::to_string(height) + "x" +
                                 std::to_string(count) + " (nbufferLevelCount)");
-  const GLuint groupsX = GLuint(width + 7) / 8, groupsY = GLuint(height + 7) / 8;
-
   // Level 0: (near, near, far, 0).
   level0_.use();
   glBindTextureUnit(NBUFFER_NEAR_UNIT, nearLayer.id());
   glBindTextureUnit(NBUFFER_FAR_UNIT, farLayer.id());
-  glBindImageTexture(NBUFFER_COARSER_IMAGE, levels.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute(groupsX, groupsY, 1);
+  screen_.draw(levels, 0);
 
-  // Level n from level n-1: both bound as single-layer images of the same texture.
+  // Level n from level n-1, read as a single-layer image of the same texture. The texture
+  // barrier makes the previous draw's writes visible to this one's reads.
   level_.use();
   for (int level = 1; level < count; ++level) {
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glTextureBarrier();
     glBindImageTexture(NBUFFER_FINER_IMAGE, levels.id(), 0, GL_FALSE, level - 1, GL_READ_ONLY,
                        GL_RGBA32F);
-    glBindImageTexture(NBUFFER_COARSER_IMAGE, levels.id(), 0, GL_FALSE, level, GL_WRITE_ONLY,
-                       GL_RGBA32F);
     glUniform1i(NBUFFER_LEVEL_LOCATION, level);
-    glDispatchCompute(groupsX, groupsY, 1);
+    screen_.draw(levels, level);
   }
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }

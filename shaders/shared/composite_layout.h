@@ -1,7 +1,6 @@
-// Units and locations of composite.comp (C++: stages/output/composite.cpp).
+// Units and locations of composite.frag (C++: stages/output/composite.cpp).
 #define COMPOSITE_ALBEDO_UNIT 0
 #define COMPOSITE_WS_NORMAL_UNIT 1
 #define COMPOSITE_WS_POSITION_UNIT 2
 #define COMPOSITE_VISIBILITY_UNIT 3
-#define COMPOSITE_COLOR_IMAGE 0
-#define COMPOSITE_AMBIENT_LOCATION 1  // after ROW_OFFSET_LOCATION
+#define COMPOSITE_AMBIENT_LOCATION 1

@@ -1,4 +1,4 @@
-// Units of the min-max mipmap build (minmax_level.comp; C++: app/gl/minmax_build.cpp).
+// Units of the min-max mipmap build (minmax_level.frag; C++: app/gl/minmax_build.cpp).
 // Level 0 reads the layers; level n >= 1 reads level n-1 of the same atlas image.
 #define MINMAX_NEAR_UNIT 0
 #define MINMAX_FAR_UNIT 1

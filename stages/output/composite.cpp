@@ -2,15 +2,14 @@
 // shadow stage's visibility.
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
+#include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
 #include "shared/composite_layout.h"
-#include "shared/screen_pass_layout.h"
 
 static_assert(gpu::distinctBelow({COMPOSITE_ALBEDO_UNIT, COMPOSITE_WS_NORMAL_UNIT,
                                   COMPOSITE_WS_POSITION_UNIT, COMPOSITE_VISIBILITY_UNIT},
                                  gpu::kTextureUnits));
-static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, COMPOSITE_AMBIENT_LOCATION},
-                                 gpu::kUniformLocations));
+static_assert(COMPOSITE_AMBIENT_LOCATION < gpu::kUniformLocations);
 
 namespace {
 
@@ -52,8 +51,7 @@ public:
     glBindTextureUnit(COMPOSITE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(COMPOSITE_VISIBILITY_UNIT, visibility.id());
     GlTexture& color = frame.output(*this, "color", frame.eyeWidth, frame.eyeHeight);
-    glBindImageTexture(COMPOSITE_COLOR_IMAGE, color.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatchRows(frame.eyeWidth, frame.eyeHeight);
+    screen_.draw(color);
   }
 
 private:
@@ -65,7 +63,9 @@ private:
     }
     return ones_;
   }
-  ShaderProgram program_{{{GL_COMPUTE_SHADER, "composite.comp"}}};
+  ShaderProgram program_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
+                          {GL_FRAGMENT_SHADER, "composite.frag"}}};
+  ScreenTriangle screen_;
   GlTexture ones_;
 };
 

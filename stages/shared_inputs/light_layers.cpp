@@ -55,7 +55,8 @@ public:
     glBindTextureUnit(RISERS_NEAR_UNIT, frame.output(*this, "near", size, size).id());
     glBindTextureUnit(RISERS_FAR_UNIT, farRasterized_.id());
     glBindImageTexture(RISERS_FAR_IMAGE, far.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glDispatchCompute(GLuint(size + 7) / 8, GLuint(size + 7) / 8, 1);
+    const GLuint groups = GLuint((size + RISERS_BLOCK - 1) / RISERS_BLOCK + 7) / 8;
+    glDispatchCompute(groups, groups, 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
   }
 

@@ -4,24 +4,25 @@
 // RGBA32F copy, half the build).
 // Two programs (MINMAX_FROM_LAYERS 1: level 1; 0: the coarser levels), not one branch on
 // the level: llvmpipe runs both sides of a branch for every texel, also of one on a uniform.
+// A fragment shader drawn over the level's rectangle of the atlas (app/gl/screen_triangle.h:
+// why not a compute pass); the coarser levels read level n-1 of the same atlas through an
+// image unit, a rectangle this draw does not write (no rendering feedback loop: GL 4.5
+// §9.3.1 concerns textures bound to texture units).
 #include "shared/minmax.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/minmax_layout.h"
 layout(binding = MINMAX_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = MINMAX_FAR_UNIT) uniform sampler2D farLayer;
-layout(binding = MINMAX_ATLAS_IMAGE, rgba32f) uniform coherent image2D atlas;
+layout(binding = MINMAX_ATLAS_IMAGE, rgba32f) uniform readonly image2D atlas;
 layout(location = MINMAX_LEVEL_LOCATION) uniform int uLevel;
 layout(location = MINMAX_SIZE_LOCATION) uniform ivec2 uSize;
+layout(location = 0) out vec4 bounds;
 
 #if !defined(MINMAX_FROM_LAYERS)
-#error "minmax_level.comp needs MINMAX_FROM_LAYERS 0 or 1 (app/gl/minmax_build.h)"
+#error "minmax_level.frag needs MINMAX_FROM_LAYERS 0 or 1 (app/gl/minmax_build.h)"
 #endif
 
 void main() {
-  ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 levelSize = ivec2(minmaxLevelSize(uLevel, uSize.x), minmaxLevelSize(uLevel, uSize.y));
-  if (any(greaterThanEqual(texel, levelSize))) return;
-  vec4 bounds;
+  ivec2 texel = ivec2(gl_FragCoord.xy) - minmaxLevelOrigin(uLevel, uSize);
 #if MINMAX_FROM_LAYERS
   // Level 1: the 2 x 2 children from the layers as (near, near, far). The far layer in one
   // gather around the children's common corner 2 * texel + 1 (gathers cost about what one
@@ -51,5 +52,4 @@ void main() {
     bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
   }
 #endif
-  imageStore(atlas, minmaxLevelOrigin(uLevel, uSize) + texel, bounds);
 }
