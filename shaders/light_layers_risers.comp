@@ -45,22 +45,23 @@ void main() {
   ivec2 size = textureSize(farLayer, 0), last = size - 1;
   ivec2 origin = RISERS_BLOCK * ivec2(gl_GlobalInvocationID.xy);  // the block's lower-left texel
   if (any(greaterThanEqual(origin, size))) return;
-  // 1. The 4 x 4 texels origin - 1 .. origin + 2 (near[i][j]: column i, row j; the corners are
-  //    not needed). A texel past the map's border is clamped to the edge, as one texel's
-  //    neighbour past the border was clamped to the texel itself: the same texel, which never
-  //    raises far (its f is far itself). The far layer by 4 gathers, each around a corner of
-  //    the 2 x 2 texels it returns (clamped to the edge: gl_texture.cpp); gather order (GLSL
-  //    4.50 §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). The near layer by texelFetch:
-  //    gathering it changed later classification in one case on llvmpipe (not understood;
-  //    bench/llvmpipe-branches/README.md).
-  float near[4][4], far[4][4];
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      bool corner = (i == 0 || i == 3) && (j == 0 || j == 3);
+  // 1. The texels origin - 1 .. origin + RISERS_BLOCK (near[i][j]: column i, row j; the
+  //    corners are not needed). A texel past the map's border is clamped to the edge, as one
+  //    texel's neighbour past the border was clamped to the texel itself: the same texel,
+  //    which never raises far (its f is far itself). The far layer by gathers, each around
+  //    a corner of the 2 x 2 texels it returns (clamped to the edge: gl_texture.cpp); gather
+  //    order (GLSL 4.50 §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). The near layer by
+  //    texelFetch: gathering it changed later classification in one case on llvmpipe (not
+  //    understood; bench/llvmpipe-branches/README.md).
+  const int span = RISERS_BLOCK + 2;
+  float near[span][span], far[span][span];
+  for (int j = 0; j < span; ++j)
+    for (int i = 0; i < span; ++i) {
+      bool corner = (i == 0 || i == span - 1) && (j == 0 || j == span - 1);
       near[i][j] = corner ? 0.0 : texelFetch(nearLayer, clamp(origin + ivec2(i - 1, j - 1), ivec2(0), last), 0).r;
     }
-  for (int j = 0; j < 4; j += 2)
-    for (int i = 0; i < 4; i += 2) {
+  for (int j = 0; j < span; j += 2)
+    for (int i = 0; i < span; i += 2) {
       vec4 g = textureGather(farLayer, vec2(origin + ivec2(i, j)) / vec2(size));
       far[i][j + 1] = g.x;
       far[i + 1][j + 1] = g.y;
@@ -68,8 +69,8 @@ void main() {
       far[i][j] = g.w;
     }
   // 2. Each texel of the block that lies in the map, from its own and its neighbours' depths.
-  for (int j = 1; j <= 2; ++j)
-    for (int i = 1; i <= 2; ++i) {
+  for (int j = 1; j <= RISERS_BLOCK; ++j)
+    for (int i = 1; i <= RISERS_BLOCK; ++i) {
       ivec2 texel = origin + ivec2(i - 1, j - 1);
       if (any(greaterThan(texel, last))) continue;
       vec4 n = vec4(near[i - 1][j], near[i][j - 1], near[i][j + 1], near[i + 1][j]);

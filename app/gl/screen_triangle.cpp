@@ -1,21 +1,36 @@
 #include "gl/screen_triangle.h"
 
+#include <stdexcept>
+
 ScreenTriangle::~ScreenTriangle() {
   if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
 
-void ScreenTriangle::draw(const GlTexture& target, int layer) {
-  drawRect(target, {0, 0}, {target.width(), target.height()}, layer);
+void ScreenTriangle::draw(const std::vector<const GlTexture*>& targets, int layer) {
+  drawRect(targets, {0, 0}, {targets.at(0)->width(), targets.at(0)->height()}, layer);
 }
 
-void ScreenTriangle::drawRect(const GlTexture& target, glm::ivec2 origin, glm::ivec2 size,
-                              int layer) {
+void ScreenTriangle::drawRect(const GlTexture& target, glm::ivec2 origin, glm::ivec2 size) {
+  drawRect({&target}, origin, size, -1);
+}
+
+void ScreenTriangle::drawRect(const std::vector<const GlTexture*>& targets, glm::ivec2 origin,
+                              glm::ivec2 size, int layer) {
+  constexpr int kMaxTargets = 8;  // GL 4.5 guarantees 8 draw buffers
+  if (targets.empty() || targets.size() > kMaxTargets)
+    throw std::invalid_argument("ScreenTriangle: 1 to 8 targets");
   if (!vertexArray_) glCreateVertexArrays(1, &vertexArray_);
-  if (layer < 0)
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-  else
-    glNamedFramebufferTextureLayer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, target.id(), 0, layer);
-  glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+  GLenum buffers[kMaxTargets];
+  for (int i = 0; i < kMaxTargets; ++i) {
+    const GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
+    const GLuint texture = i < int(targets.size()) ? targets[size_t(i)]->id() : 0;
+    if (layer < 0 || texture == 0)
+      glNamedFramebufferTexture(framebuffer_.id(), attachment, texture, 0);
+    else
+      glNamedFramebufferTextureLayer(framebuffer_.id(), attachment, texture, 0, layer);
+    buffers[i] = attachment;
+  }
+  glNamedFramebufferDrawBuffers(framebuffer_.id(), GLsizei(targets.size()), buffers);
   framebuffer_.checkComplete("screen triangle");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(origin.x, origin.y, size.x, size.y);

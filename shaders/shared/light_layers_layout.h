@@ -3,4 +3,4 @@
 #define RISERS_FAR_UNIT 1
 #define RISERS_FAR_IMAGE 0
 #define RISERS_CLOSE_LOCATION 0
-#define RISERS_BLOCK 2  // texels per axis of one invocation's block
+#define RISERS_BLOCK 2  // texels per axis of one invocation's block (4: slower, bench/llvmpipe-writes)

@@ -9,6 +9,7 @@
 
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
+#include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
 
 namespace gpu {
@@ -23,7 +24,7 @@ static_assert(CLASS_OUTSIDE + 1 == CLASSIFY_CLASS_COUNT);
 static_assert(gpu::distinctBelow({CLASSIFY_WS_POSITION_UNIT, CLASSIFY_WS_NORMAL_UNIT,
                                   CLASSIFY_LEVELS_UNIT, CLASSIFY_MINMAX_UNIT, CLASSIFY_NEAR_UNIT,
                                   CLASSIFY_FAR_UNIT}, gpu::kTextureUnits));
-static_assert(gpu::distinctBelow({CLASSIFY_MASK_IMAGE, CLASSIFY_ZRANGE_IMAGE}, gpu::kImageUnits));
+static_assert(CLASSIFY_MASK_UNIT < gpu::kTextureUnits);
 static_assert(gpu::distinctBelow({CLASSIFY_COUNTS_BINDING, CLASSIFY_LIST_BINDING},
                                  gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, CLASSIFY_ITERATIONS_LOCATION,
@@ -102,6 +103,24 @@ public:
     GlTexture& mask = frame.output(*this, "mask", w, h);
     GlTexture& zRange = frame.output(*this, "zRange", w, h);
 
+    // 1. The class and the bounds per pixel (classify.frag).
+    const GlTexture& levels = frame.input(*this, "levels");
+    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
+    programs_[std::string("#define CLASSIFY_OVER_MINMAX ") + (minmax ? "1" : "0") + "\n"].use();
+    bindLightInput(frame, *this);
+    glBindTextureUnit(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
+    glBindTextureUnit(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    glBindTextureUnit(minmax ? CLASSIFY_MINMAX_UNIT : CLASSIFY_LEVELS_UNIT, levels.id());
+    glBindTextureUnit(CLASSIFY_NEAR_UNIT, frame.input(*this, "near").id());
+    glBindTextureUnit(CLASSIFY_FAR_UNIT, frame.input(*this, "far").id());
+    if (minmax) glUniform1i(CLASSIFY_MINMAX_CELLS_LOCATION, param("minmax_cells").asInt());
+    glUniform1i(CLASSIFY_ITERATIONS_LOCATION, param("iterations").asInt());
+    // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
+    // (§3.4) they can, so it is off there.
+    glUniform1i(CLASSIFY_UMBRA_TEST_LOCATION, param("umbra").asBool() && frame.light.layers < 3);
+    screen_.draw({&mask, &zRange});
+
+    // 2. The counts and the list of pixels that need rays (classify_list.comp).
     const gpu::ClassifyCounts zero{};
     counts_.upload(&zero, sizeof zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_COUNTS_BINDING, counts_.id());
@@ -113,24 +132,8 @@ public:
     const std::uint32_t zeroCount = 0;
     glNamedBufferSubData(tracedPixels.id(), 0, sizeof zeroCount, &zeroCount);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
-
-    const GlTexture& levels = frame.input(*this, "levels");
-    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
-    programs_[std::string("#define CLASSIFY_OVER_MINMAX ") + (minmax ? "1" : "0") + "\n"].use();
-    bindLightInput(frame, *this);
-    glBindTextureUnit(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
-    glBindTextureUnit(minmax ? CLASSIFY_MINMAX_UNIT : CLASSIFY_LEVELS_UNIT, levels.id());
-    glBindTextureUnit(CLASSIFY_NEAR_UNIT, frame.input(*this, "near").id());
-    glBindTextureUnit(CLASSIFY_FAR_UNIT, frame.input(*this, "far").id());
-    if (minmax) glUniform1i(CLASSIFY_MINMAX_CELLS_LOCATION, param("minmax_cells").asInt());
-    glBindImageTexture(CLASSIFY_MASK_IMAGE, mask.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    glBindImageTexture(CLASSIFY_ZRANGE_IMAGE, zRange.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       GL_RGBA32F);
-    glUniform1i(CLASSIFY_ITERATIONS_LOCATION, param("iterations").asInt());
-    // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
-    // (§3.4) they can, so it is off there.
-    glUniform1i(CLASSIFY_UMBRA_TEST_LOCATION, param("umbra").asBool() && frame.light.layers < 3);
+    listProgram_.use();
+    glBindTextureUnit(CLASSIFY_MASK_UNIT, mask.id());
     dispatchRows(w, h);
 
     gpu::ClassifyCounts counts{};
@@ -143,8 +146,11 @@ public:
   }
 
 private:
-  // One program per hierarchy (classify.comp says why).
-  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "classify.comp"}}};
+  // One program per hierarchy (classify.frag says why).
+  ShaderVariants programs_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
+                            {GL_FRAGMENT_SHADER, "classify.frag"}}};
+  ShaderProgram listProgram_{{{GL_COMPUTE_SHADER, "classify_list.comp"}}};
+  ScreenTriangle screen_;
   GlBuffer counts_;
 };
 

@@ -10,7 +10,10 @@
 //            n.l at its clamp) >= zNearMax: every ray ends behind the near layer (valid for
 //            a single-layer height field; off with three layers, §3.6);
 //   penumbra otherwise; outside: the receiver is not in the light's frustum.
-#include "shared/screen_pass.glsl"
+// Step 1 of 2: a fragment shader over the image writing the class and the bounds
+// (app/gl/screen_triangle.h: why not a compute pass); classify_list.comp then counts the
+// classes and lists the pixels that need rays.
+#include "shared/frame.glsl"
 #include "shared/bias.glsl"
 #include "shared/nbuffer.glsl"
 #include "shared/minmax.glsl"
@@ -23,11 +26,8 @@ layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
 layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
 layout(binding = CLASSIFY_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = CLASSIFY_FAR_UNIT) uniform sampler2D farLayer;
-layout(binding = CLASSIFY_MASK_IMAGE, r32f) uniform writeonly image2D maskImage;
-layout(binding = CLASSIFY_ZRANGE_IMAGE, rgba32f) uniform writeonly image2D zRangeImage;
-layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
-  ClassifyCounts counts;
-};
+layout(location = 0) out float maskOut;   // the class
+layout(location = 1) out vec4 zRangeOut;  // zNearMin, zNearMax, zFarMax, receiver lsDepth
 layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
 layout(location = CLASSIFY_UMBRA_TEST_LOCATION) uniform bool uUmbraTest;
 layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;
@@ -35,17 +35,8 @@ layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;
 // max mipmap), so neither carries the other's code: on llvmpipe the min-max loops cost the
 // N-buffer's classification time although they never ran (bench/trace-variants).
 #if !defined(CLASSIFY_OVER_MINMAX)
-#error "classify.comp is compiled with CLASSIFY_OVER_MINMAX 0 or 1 (stages/monte_carlo/classify.cpp)"
+#error "classify.frag is compiled with CLASSIFY_OVER_MINMAX 0 or 1 (stages/monte_carlo/classify.cpp)"
 #endif
-
-layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
-  uint listCount;  // = penumbra + umbra
-  uint listPadding[3];
-  uint tracedPixels[];
-};
-
-shared uint groupCounts[CLASSIFY_CLASS_COUNT];
-shared uint groupListBase;  // this group's first slot in tracedPixels
 
 bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
   vec3 right = light.wsLightRight.w * light.wsLightRight.xyz, up = light.wsLightUp.w * light.wsLightUp.xyz;
@@ -127,34 +118,12 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
 }
 
 void main() {
-  uint local = gl_LocalInvocationIndex;
-  if (local < uint(CLASSIFY_CLASS_COUNT)) groupCounts[local] = 0u;
-  barrier();
-  // 1. Classify this pixel.
-  ivec2 pixel = screenPixel();
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+  vec4 zRange = vec4(0.0);  // background: no bounds
   int pixelClass = CLASS_BACKGROUND;
-  uint slotInGroup = 0u;
-  if (pixel.x >= 0) {
-    vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
-    vec4 zRange = vec4(0.0);  // background: no bounds
-    if (wsPosition.w > 0.0)
-      pixelClass = classify(wsPosition.xyz, texelFetch(wsNormalTexture, pixel, 0).xyz, zRange);
-    imageStore(maskImage, pixel, vec4(float(pixelClass)));
-    imageStore(zRangeImage, pixel, zRange);
-    slotInGroup = atomicAdd(groupCounts[pixelClass], 1u);
-  }
-  barrier();
-  // 2. One global atomic per class and group: the counts, and the group's slots in the list
-  //    of pixels that need rays (penumbra first, then umbra; the list's order is not
-  //    deterministic, the trace's result does not depend on it).
-  if (local == 0u)
-    groupListBase = atomicAdd(listCount, groupCounts[CLASS_PENUMBRA] + groupCounts[CLASS_UMBRA]);
-  if (local < uint(CLASSIFY_CLASS_COUNT) && groupCounts[local] != 0u)
-    atomicAdd(counts.pixels[local], groupCounts[local]);
-  barrier();
-  if (pixelClass == CLASS_PENUMBRA || pixelClass == CLASS_UMBRA) {
-    uint slot = groupListBase + slotInGroup +
-                (pixelClass == CLASS_UMBRA ? groupCounts[CLASS_PENUMBRA] : 0u);
-    tracedPixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16);
-  }
+  if (wsPosition.w > 0.0)
+    pixelClass = classify(wsPosition.xyz, texelFetch(wsNormalTexture, pixel, 0).xyz, zRange);
+  maskOut = float(pixelClass);
+  zRangeOut = zRange;
 }
