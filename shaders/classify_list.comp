@@ -1,9 +1,13 @@
 // Stage `classify`, step 2 of 2 (classify.frag is step 1): the class counts, and the list of
 // pixels that need rays (penumbra and umbra), so the trace dispatches only those (thesis Fig
 // 3.8: "full calculations are only performed in blue areas").
-#include "shared/screen_pass.glsl"
+// One invocation per CLASSIFY_LIST_TILE^2 tile of pixels, counting in registers and listing
+// its penumbra pixels, then its umbra pixels, in scan order: no shared memory and no barrier
+// (on llvmpipe a pass's shared atomics and barriers cost about 4 ms at 640x480, issue 14).
+#include "shared/frame.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
+layout(local_size_x = 64) in;
 layout(binding = CLASSIFY_MASK_UNIT) uniform sampler2D classMask;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;
@@ -14,33 +18,44 @@ layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
   uint tracedPixels[];
 };
 
-shared uint groupCounts[CLASSIFY_CLASS_COUNT];
-shared uint groupListBase;  // this group's first slot in tracedPixels
-
 void main() {
-  uint local = gl_LocalInvocationIndex;
-  if (local < uint(CLASSIFY_CLASS_COUNT)) groupCounts[local] = 0u;
-  barrier();
-  // 1. This pixel's class, and its slot among the group's pixels of that class.
-  ivec2 pixel = screenPixel();
-  int pixelClass = CLASS_BACKGROUND;
-  uint slotInGroup = 0u;
-  if (pixel.x >= 0) {
-    pixelClass = int(texelFetch(classMask, pixel, 0).r);
-    slotInGroup = atomicAdd(groupCounts[pixelClass], 1u);
-  }
-  barrier();
-  // 2. One global atomic per class and group: the counts, and the group's slots in the list
-  //    of pixels that need rays (penumbra first, then umbra; the list's order is not
-  //    deterministic, the trace's result does not depend on it).
-  if (local == 0u)
-    groupListBase = atomicAdd(listCount, groupCounts[CLASS_PENUMBRA] + groupCounts[CLASS_UMBRA]);
-  if (local < uint(CLASSIFY_CLASS_COUNT) && groupCounts[local] != 0u)
-    atomicAdd(counts.pixels[local], groupCounts[local]);
-  barrier();
-  if (pixelClass == CLASS_PENUMBRA || pixelClass == CLASS_UMBRA) {
-    uint slot = groupListBase + slotInGroup +
-                (pixelClass == CLASS_UMBRA ? groupCounts[CLASS_PENUMBRA] : 0u);
-    tracedPixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16);
-  }
+  // 1. This invocation's tile.
+  ivec2 size = ivec2(frame.sizes.xy);
+  int tilesX = (size.x + CLASSIFY_LIST_TILE - 1) / CLASSIFY_LIST_TILE;
+  int index = int(gl_GlobalInvocationID.x);
+  ivec2 origin = ivec2(index % tilesX, index / tilesX) * CLASSIFY_LIST_TILE;
+  if (origin.y >= size.y) return;
+  ivec2 end = min(origin + CLASSIFY_LIST_TILE, size);
+  // 2. The pixels of each class (separate counters, not an array: llvmpipe would index a
+  //    private array lane by lane).
+  uint background = 0u, lit = 0u, penumbra = 0u, umbra = 0u, outside = 0u;
+  for (int y = origin.y; y < end.y; ++y)
+    for (int x = origin.x; x < end.x; ++x) {
+      int pixelClass = int(texelFetch(classMask, ivec2(x, y), 0).r);
+      background += pixelClass == CLASS_BACKGROUND ? 1u : 0u;
+      lit += pixelClass == CLASS_LIT ? 1u : 0u;
+      penumbra += pixelClass == CLASS_PENUMBRA ? 1u : 0u;
+      umbra += pixelClass == CLASS_UMBRA ? 1u : 0u;
+      outside += pixelClass == CLASS_OUTSIDE ? 1u : 0u;
+    }
+  if (background != 0u) atomicAdd(counts.pixels[CLASS_BACKGROUND], background);
+  if (lit != 0u) atomicAdd(counts.pixels[CLASS_LIT], lit);
+  if (penumbra != 0u) atomicAdd(counts.pixels[CLASS_PENUMBRA], penumbra);
+  if (umbra != 0u) atomicAdd(counts.pixels[CLASS_UMBRA], umbra);
+  if (outside != 0u) atomicAdd(counts.pixels[CLASS_OUTSIDE], outside);
+  // 3. The tile's slots in the list (penumbra first, then umbra; the order of the tiles is
+  //    not deterministic, the trace's result does not depend on it), and its pixels there.
+  //    Tiles without such pixels leave at once (a loop, not an if: llvmpipe leaves a loop
+  //    once no lane is in it, but runs an if's body for all 8 lanes).
+  uint traced = penumbra + umbra;
+  uint nextPenumbra = traced != 0u ? atomicAdd(listCount, traced) : 0u;
+  uint nextUmbra = nextPenumbra + penumbra;
+  int rows = traced != 0u ? end.y - origin.y : 0;
+  for (int y = origin.y; y < origin.y + rows; ++y)
+    for (int x = origin.x; x < end.x; ++x) {
+      int pixelClass = int(texelFetch(classMask, ivec2(x, y), 0).r);
+      uint xy = uint(x) | (uint(y) << 16);
+      if (pixelClass == CLASS_PENUMBRA) tracedPixels[nextPenumbra++] = xy;
+      if (pixelClass == CLASS_UMBRA) tracedPixels[nextUmbra++] = xy;
+    }
 }

@@ -6,9 +6,12 @@
 // tile is listed unless every pixel of the tile grown by r holds the same value, 0 or 1.
 // Background pixels are never taps, but they are looked at too: one fetch per pixel
 // instead of two, at the price of listing a tile where the background meets umbra.
+// One invocation per tile, reading the grown tile alone: no shared memory and no barrier (on
+// llvmpipe a pass's shared atomics and barriers cost about 4 ms at 640x480, issue 14; with
+// them this pass took as long as the blur itself).
 #include "shared/frame.glsl"
 #include "shared/filter_layout.h"
-layout(local_size_x = FILTER_TILE_SIZE, local_size_y = FILTER_TILE_SIZE) in;
+layout(local_size_x = 64) in;
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
 layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
 layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
@@ -16,28 +19,28 @@ layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
   uint tiles[];
 };
 
-shared uint seen;  // bit 0: a value 0 in the grown tile; bit 1: a 1; bit 2: any other
-
 void main() {
-  if (gl_LocalInvocationIndex == 0u) seen = 0u;
-  barrier();
-  // 1. The values over the tile grown by the radius, clipped to the image.
+  // 1. This invocation's tile.
   ivec2 size = ivec2(frame.sizes.xy);
-  ivec2 tileOrigin = ivec2(gl_WorkGroupID.xy) * FILTER_TILE_SIZE;
+  int tilesX = (size.x + FILTER_TILE_SIZE - 1) / FILTER_TILE_SIZE;
+  int index = int(gl_GlobalInvocationID.x);
+  ivec2 tile = ivec2(index % tilesX, index / tilesX);
+  ivec2 tileOrigin = tile * FILTER_TILE_SIZE;
+  if (tileOrigin.y >= size.y) return;
+  // 2. The values over the tile grown by the radius, clipped to the image: bit 0 a value 0,
+  //    bit 1 a 1, bit 2 any other.
   ivec2 low = max(tileOrigin - uRadius, ivec2(0));
   ivec2 high = min(tileOrigin + FILTER_TILE_SIZE + uRadius, size);
-  uint bits = 0u;
-  for (int y = low.y + int(gl_LocalInvocationID.y); y < high.y; y += FILTER_TILE_SIZE)
-    for (int x = low.x + int(gl_LocalInvocationID.x); x < high.x; x += FILTER_TILE_SIZE) {
+  uint seen = 0u;
+  for (int y = low.y; y < high.y; ++y)
+    for (int x = low.x; x < high.x; ++x) {
       uint value = floatBitsToUint(texelFetch(sourceTexture, ivec2(x, y), 0).r);
-      bits |= value == 0u ? 1u : value == floatBitsToUint(1.0) ? 2u : 4u;  // -0.0 is "other"
+      seen |= value == 0u ? 1u : value == floatBitsToUint(1.0) ? 2u : 4u;  // -0.0 is "other"
     }
-  if (bits != 0u) atomicOr(seen, bits);
-  barrier();
-  // 2. Listed when more than one value, or a value other than 0 and 1, was seen.
-  if (gl_LocalInvocationIndex != 0u || seen < 3u) return;
-  uint index = atomicAdd(header.groups[0], 1u);
-  tiles[index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
+  // 3. Listed when more than one value, or a value other than 0 and 1, was seen.
+  if (seen < 3u) return;
+  uint slot = atomicAdd(header.groups[0], 1u);
+  tiles[slot] = uint(tile.x) | (uint(tile.y) << 16);
   ivec2 inside = min(size - tileOrigin, ivec2(FILTER_TILE_SIZE));
   atomicAdd(header.pixels, uint(inside.x * inside.y));
 }

@@ -26,4 +26,5 @@ struct ClassifyCounts {
 // trace, so the trace pass runs over them alone (thesis Fig 3.8: "full calculations are
 // only performed in blue areas"). Frame buffer name "classify.tracedPixels".
 #define CLASSIFY_LIST_BINDING 3
+#define CLASSIFY_LIST_TILE 8  // classify_list.comp: pixels per axis of one invocation's tile
 #define CLASSIFY_LIST_HEADER_BYTES 16

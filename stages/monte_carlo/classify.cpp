@@ -15,7 +15,6 @@
 namespace gpu {
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-#include "shared/screen_pass_layout.h"
 }  // namespace gpu
 
 static_assert(offsetof(gpu::ClassifyCounts, pixels) == 0);
@@ -27,7 +26,7 @@ static_assert(gpu::distinctBelow({CLASSIFY_WS_POSITION_UNIT, CLASSIFY_WS_NORMAL_
 static_assert(CLASSIFY_MASK_UNIT < gpu::kTextureUnits);
 static_assert(gpu::distinctBelow({CLASSIFY_COUNTS_BINDING, CLASSIFY_LIST_BINDING},
                                  gpu::kStorageBindings));
-static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, CLASSIFY_ITERATIONS_LOCATION,
+static_assert(gpu::distinctBelow({CLASSIFY_ITERATIONS_LOCATION,
                                   CLASSIFY_UMBRA_TEST_LOCATION, CLASSIFY_MINMAX_CELLS_LOCATION},
                                  gpu::kUniformLocations));
 
@@ -134,7 +133,10 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
     listProgram_.use();
     glBindTextureUnit(CLASSIFY_MASK_UNIT, mask.id());
-    dispatchRows(w, h);
+    const int tiles = ((w + CLASSIFY_LIST_TILE - 1) / CLASSIFY_LIST_TILE) *
+                      ((h + CLASSIFY_LIST_TILE - 1) / CLASSIFY_LIST_TILE);
+    glDispatchCompute(GLuint(tiles + 63) / 64, 1, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
 
     gpu::ClassifyCounts counts{};
     glGetNamedBufferSubData(counts_.id(), 0, sizeof counts, &counts);
