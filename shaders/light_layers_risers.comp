@@ -11,9 +11,9 @@
 // Written for llvmpipe, where the pass is bound by its reads (issue 14): without a branch on
 // the texel (llvmpipe runs both sides of a branch for all 8 lanes, so the neighbours' reads
 // cost every texel anyway), and one invocation per 2 x 2 block of texels, which share their
-// neighbours: the block reads the 4 x 4 texels around it once (the near layer's 12 without
-// the corners by texelFetch, the far layer's 16 by 4 gathers), 16 reads for 4 texels where
-// one invocation per texel made 28 (5 near fetches and 2 far gathers each).
+// neighbours: the block reads the 4 x 4 texels around it once, by 4 gathers per layer, 8
+// reads for 4 texels where one invocation per texel made 28 (5 near fetches and 2 far
+// gathers each).
 #include "shared/frame.glsl"
 #include "shared/light_layers_layout.h"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -45,28 +45,20 @@ void main() {
   ivec2 size = textureSize(farLayer, 0), last = size - 1;
   ivec2 origin = RISERS_BLOCK * ivec2(gl_GlobalInvocationID.xy);  // the block's lower-left texel
   if (any(greaterThanEqual(origin, size))) return;
-  // 1. The texels origin - 1 .. origin + RISERS_BLOCK (near[i][j]: column i, row j; the
-  //    corners are not needed). A texel past the map's border is clamped to the edge, as one
-  //    texel's neighbour past the border was clamped to the texel itself: the same texel,
-  //    which never raises far (its f is far itself). The far layer by gathers, each around
-  //    a corner of the 2 x 2 texels it returns (clamped to the edge: gl_texture.cpp); gather
-  //    order (GLSL 4.50 §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). The near layer by
-  //    texelFetch: gathering it changed later classification in one case on llvmpipe (not
-  //    understood; bench/llvmpipe-branches/README.md).
+  // 1. The texels origin - 1 .. origin + RISERS_BLOCK of both layers (near[i][j]: column i,
+  //    row j), each layer by gathers around the corners of the 2 x 2 texels they return;
+  //    gather order (GLSL 4.50 §8.9.4): (i0, j1), (i1, j1), (i1, j0), (i0, j0). A texel past
+  //    the map's border is clamped to the edge (gl_texture.cpp), as one texel's neighbour
+  //    past the border was clamped to the texel itself: the same texel, which never raises
+  //    far (its f is far itself).
   const int span = RISERS_BLOCK + 2;
   float near[span][span], far[span][span];
-  for (int j = 0; j < span; ++j)
-    for (int i = 0; i < span; ++i) {
-      bool corner = (i == 0 || i == span - 1) && (j == 0 || j == span - 1);
-      near[i][j] = corner ? 0.0 : texelFetch(nearLayer, clamp(origin + ivec2(i - 1, j - 1), ivec2(0), last), 0).r;
-    }
   for (int j = 0; j < span; j += 2)
     for (int i = 0; i < span; i += 2) {
-      vec4 g = textureGather(farLayer, vec2(origin + ivec2(i, j)) / vec2(size));
-      far[i][j + 1] = g.x;
-      far[i + 1][j + 1] = g.y;
-      far[i + 1][j] = g.z;
-      far[i][j] = g.w;
+      vec2 corner = vec2(origin + ivec2(i, j)) / vec2(size);
+      vec4 n = textureGather(nearLayer, corner), f = textureGather(farLayer, corner);
+      near[i][j + 1] = n.x, near[i + 1][j + 1] = n.y, near[i + 1][j] = n.z, near[i][j] = n.w;
+      far[i][j + 1] = f.x, far[i + 1][j + 1] = f.y, far[i + 1][j] = f.z, far[i][j] = f.w;
     }
   // 2. Each texel of the block that lies in the map, from its own and its neighbours' depths.
   for (int j = 1; j <= RISERS_BLOCK; ++j)

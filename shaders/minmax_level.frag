@@ -24,20 +24,14 @@ layout(location = 0) out vec4 bounds;
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy) - minmaxLevelOrigin(uLevel, uSize);
 #if MINMAX_FROM_LAYERS
-  // Level 1: the 2 x 2 children from the layers as (near, near, far). The far layer in one
+  // Level 1: the 2 x 2 children from the layers as (near, near, far), each layer in one
   // gather around the children's common corner 2 * texel + 1 (gathers cost about what one
   // fetch does on llvmpipe); past an odd map's last row or column the texel clamped to the
-  // edge (gl_texture.cpp) repeats a child, which leaves minimum and maximum unchanged. The
-  // near layer by texelFetch: gathering it too changed later classification in one case
-  // (bench/llvmpipe-branches/README.md).
-  ivec2 last = uSize - 1;
-  vec4 farDepths = textureGather(farLayer, vec2(2 * texel + 1) / vec2(uSize));
-  float near00 = texelFetch(nearLayer, 2 * texel, 0).r;
-  float near10 = texelFetch(nearLayer, min(2 * texel + ivec2(1, 0), last), 0).r;
-  float near01 = texelFetch(nearLayer, min(2 * texel + ivec2(0, 1), last), 0).r;
-  float near11 = texelFetch(nearLayer, min(2 * texel + 1, last), 0).r;
-  bounds = vec4(min(min(near00, near10), min(near01, near11)),
-                max(max(near00, near10), max(near01, near11)),
+  // edge (gl_texture.cpp) repeats a child, which leaves minimum and maximum unchanged.
+  vec2 corner = vec2(2 * texel + 1) / vec2(uSize);
+  vec4 nearDepths = textureGather(nearLayer, corner), farDepths = textureGather(farLayer, corner);
+  bounds = vec4(min(min(nearDepths.x, nearDepths.y), min(nearDepths.z, nearDepths.w)),
+                max(max(nearDepths.x, nearDepths.y), max(nearDepths.z, nearDepths.w)),
                 max(max(farDepths.x, farDepths.y), max(farDepths.z, farDepths.w)), 0.0);
 #else
   ivec2 finerSize =
