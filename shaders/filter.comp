@@ -20,9 +20,20 @@
 // plate at auto's 2048^2) is not blurred at all, where the tail of a 0.4-pixel Gaussian
 // still added 4% of each lit neighbour per pass to the umbra (issue 12: filtered 0.034
 // against 0.014 unfiltered).
-#include "shared/screen_pass.glsl"
+// Written for llvmpipe, where the pass is bound by its reads (issue 14): one invocation
+// filters 4 consecutive pixels along the pass's direction, which share all but a few taps:
+// each tap's position, normal, penumbra width and value are read once for the 4 (2r + 4
+// taps where a pixel per invocation read 4 (2r + 1)). Each pixel still adds its taps in the
+// order k = -r .. r with the same operations, so its result is bit for bit the same. The 4
+// pixels' state is kept in vec4 components, not arrays (llvmpipe indexes private arrays
+// lane by lane).
+#include "shared/frame.glsl"
 #include "shared/filter_layout.h"
 #include "shared/filter_tiles.glsl"
+#if FILTER_PIXELS_PER_INVOCATION != 4
+#error "filter.comp keeps its pixels in vec4 components"
+#endif
+layout(local_size_x = FILTER_TILE_SIZE * FILTER_TILE_SIZE / 4) in;
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
 layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = FILTER_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
@@ -46,41 +57,84 @@ float penumbraPixels(ivec2 at, vec3 wsPosition) {
   return wsWidth / (distance(wsPosition, frame.wsEyePosition.xyz) * uPixelAngle);
 }
 
-void main() {
-  ivec2 pixel = filteredPixel();
-  if (pixel.x < 0) return;
-  vec4 center = texelFetch(wsPositionTexture, pixel, 0);
-  float centerValue = texelFetch(sourceTexture, pixel, 0).r;
-  if (center.w == 0.0 || uRadius == 0) {
-    imageStore(targetImage, pixel, vec4(centerValue));
-    return;
+// The 4 pixels' centres, component p for pixel p.
+struct Centers {
+  vec4 x, y, z, w;           // position
+  vec4 nx, ny, nz;           // normal
+  vec4 depth, tolerance, width;  // eye distance, tangent-plane tolerance, penumbra width
+};
+struct Tap {
+  int j;  // offset from pixel 0 along the direction
+  vec3 position;
+  float depth, width, value;
+  vec3 normal;
+};
+
+// Pixel p's weight of tap `tap` (k = tap.j - p), added to its sums.
+void addTap(int p, Tap tap, Centers c, float sigma, inout vec4 sum, inout vec4 weightSum) {
+  int k = tap.j - p;
+  if (abs(k) > uRadius) return;
+  float pairSigma = uPenumbraScale <= 0.0 ? sigma : min(sigma, uPenumbraScale * min(c.width[p], tap.width));
+  if (float(abs(k)) > 2.0 * pairSigma) return;
+  float weight = exp(-0.5 * float(k * k) / max(pairSigma * pairSigma, 1e-6));
+  weight /= 1.0 + uDepthScale * abs(tap.depth - c.depth[p]);
+  vec3 centerNormal = vec3(c.nx[p], c.ny[p], c.nz[p]);
+  if (uNormalPower > 0.0) weight *= pow(max(dot(centerNormal, tap.normal), 0.0), uNormalPower);
+  if (uPlaneSigma > 0.0) {
+    float plane = dot(centerNormal, tap.position - vec3(c.x[p], c.y[p], c.z[p])) / c.tolerance[p];
+    weight *= exp(-0.5 * plane * plane);
   }
+  sum[p] += weight * tap.value;
+  weightSum[p] += weight;
+}
+
+void main() {
+  // 1. This invocation's pixels: 4 consecutive ones along the direction, in the tile its
+  //    group covers; lanes next to each other take neighbouring rows (columns).
+  uint lane = gl_LocalInvocationIndex;
+  ivec2 first = filteredTile() + int(lane / uint(FILTER_TILE_SIZE)) * 4 * uDirection +
+                int(lane % uint(FILTER_TILE_SIZE)) * uDirection.yx;
+  ivec2 size = ivec2(frame.sizes.xy);
   vec3 eye = frame.wsEyePosition.xyz;
-  float centerDepth = distance(center.xyz, eye);
-  vec3 centerNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
   float sigma = max(0.5 * float(uRadius), 0.5);
-  float planeTolerance = uPlaneSigma * centerDepth * uPixelAngle;
-  float centerWidth = uPenumbraScale <= 0.0 ? 1e30 : penumbraPixels(pixel, center.xyz);
-  float sum = 0.0, weightSum = 0.0;
-  for (int k = -uRadius; k <= uRadius; ++k) {
-    ivec2 at = pixel + k * uDirection;
-    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, ivec2(frame.sizes.xy)))) continue;
+
+  // 2. The centres.
+  Centers c;
+  for (int p = 0; p < 4; ++p) {
+    ivec2 pixel = first + p * uDirection;
+    vec4 center = texelFetch(wsPositionTexture, pixel, 0);
+    vec3 normal = texelFetch(wsNormalTexture, pixel, 0).xyz;
+    c.x[p] = center.x, c.y[p] = center.y, c.z[p] = center.z, c.w[p] = center.w;
+    c.nx[p] = normal.x, c.ny[p] = normal.y, c.nz[p] = normal.z;
+    c.depth[p] = distance(center.xyz, eye);
+    c.tolerance[p] = uPlaneSigma * c.depth[p] * uPixelAngle;
+    c.width[p] = uPenumbraScale <= 0.0 ? 1e30 : penumbraPixels(pixel, center.xyz);
+  }
+
+  // 3. The taps j = -r .. r + 3, each read once; pixel p takes tap j as its k = j - p where
+  //    |k| <= r, so each pixel adds its taps in the order k = -r .. r.
+  vec4 sum = vec4(0.0), weightSum = vec4(0.0);
+  for (int j = -uRadius; j <= uRadius + 3; ++j) {
+    ivec2 at = first + j * uDirection;
+    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) continue;
     vec4 position = texelFetch(wsPositionTexture, at, 0);
     if (position.w == 0.0) continue;  // never blur the background into a shadow
-    float pairSigma = uPenumbraScale <= 0.0 ? sigma
-        : min(sigma, uPenumbraScale * min(centerWidth, penumbraPixels(at, position.xyz)));
-    if (float(abs(k)) > 2.0 * pairSigma) continue;
-    float weight = exp(-0.5 * float(k * k) / max(pairSigma * pairSigma, 1e-6));
-    weight /= 1.0 + uDepthScale * abs(distance(position.xyz, eye) - centerDepth);
-    if (uNormalPower > 0.0)
-      weight *= pow(max(dot(centerNormal, texelFetch(wsNormalTexture, at, 0).xyz), 0.0), uNormalPower);
-    if (uPlaneSigma > 0.0) {
-      float plane = dot(centerNormal, position.xyz - center.xyz) / planeTolerance;
-      weight *= exp(-0.5 * plane * plane);
-    }
-    sum += weight * texelFetch(sourceTexture, at, 0).r;
-    weightSum += weight;
+    Tap tap = Tap(j, position.xyz, distance(position.xyz, eye),
+                  uPenumbraScale <= 0.0 ? 1e30 : penumbraPixels(at, position.xyz),
+                  texelFetch(sourceTexture, at, 0).r, texelFetch(wsNormalTexture, at, 0).xyz);
+    addTap(0, tap, c, sigma, sum, weightSum);
+    addTap(1, tap, c, sigma, sum, weightSum);
+    addTap(2, tap, c, sigma, sum, weightSum);
+    addTap(3, tap, c, sigma, sum, weightSum);
   }
-  // The center always contributes weight 1, so weightSum > 0.
-  imageStore(targetImage, pixel, vec4(clamp(sum / weightSum, 0.0, 1.0)));
+
+  // 4. The results: a background pixel, or any pixel with radius 0, keeps its value; the
+  //    centre always contributes weight 1 otherwise, so weightSum > 0.
+  for (int p = 0; p < 4; ++p) {
+    ivec2 pixel = first + p * uDirection;
+    if (any(greaterThanEqual(pixel, size))) continue;
+    float centerValue = texelFetch(sourceTexture, pixel, 0).r;
+    bool keep = c.w[p] == 0.0 || uRadius == 0;
+    imageStore(targetImage, pixel, vec4(keep ? centerValue : clamp(sum[p] / weightSum[p], 0.0, 1.0)));
+  }
 }

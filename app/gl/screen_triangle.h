@@ -3,10 +3,10 @@
 //
 // Why not a compute pass: llvmpipe writes fragment outputs a tile at a time, while a compute
 // shader's imageStore goes lane by lane and, for RGBA32F, channel by channel: measured on
-// the project's machine (issue 14, bench/llvmpipe-writes), one RGBA32F imageStore per pixel
-// of 640x480 takes 3-3.7 ms, an R32F one 0.5-0.9. Passes that write whole images (the
-// N-buffer's and min-max mipmap's levels, classification, the composite) are fragment-shader
-// passes.
+// the project's machine (issue 14, bench/llvmpipe-writes/unit-costs.md), one RGBA32F
+// imageStore per pixel of 640x480 takes 5.1 ms, an R32F one 0.9. Passes that write whole
+// images (the N-buffer's and min-max mipmap's levels, classification, the composite) are
+// fragment-shader passes.
 #pragma once
 #include <glm/glm.hpp>
 

@@ -19,6 +19,9 @@
 // uint tiles[] packed x | y << 16 in tile units. Frame buffer name "filter.tiles".
 #define FILTER_TILES_BINDING 0
 #define FILTER_TILE_SIZE 8  // = the 8 x 8 groups of screen_pass.glsl
+// Pixels one invocation filters, consecutive along the pass's direction, sharing their taps
+// (filter.comp); a tile's group has FILTER_TILE_SIZE^2 / 4 invocations.
+#define FILTER_PIXELS_PER_INVOCATION 4
 struct FilterTilesHeader {
   uint groups[3];
   uint pixels;

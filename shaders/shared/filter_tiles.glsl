@@ -1,19 +1,21 @@
-// The pixel of a filter invocation (issue 14): with uTiled, the invocation's pixel in the
-// tile its group was given (filter_tiles.comp listed it); otherwise every pixel in rows.
+// The tile of a filter group (issue 14): with uTiled, the tile its group was given
+// (filter_tiles.comp listed it); otherwise the groups cover the image in row bands
+// (dispatchRows: one group per 8 x 8 pixels, the band's first row in uRowOffset).
 #include "filter_layout.h"
+#include "screen_pass_layout.h"
 #if FILTER_TILE_SIZE != 8
-#error "a filter tile is one 8 x 8 group of screen_pass.glsl"
+#error "a filter tile is the 8 x 8 pixels of one dispatchRows group"
 #endif
 layout(std430, binding = FILTER_TILES_BINDING) readonly buffer FilterTiles {
   FilterTilesHeader header;
   uint tiles[];
 };
 layout(location = FILTER_TILED_LOCATION) uniform int uTiled;
+layout(location = ROW_OFFSET_LOCATION) uniform int uRowOffset;
 
-ivec2 filteredPixel() {
-  if (uTiled == 0) return screenPixel();
+// The tile's lower-left pixel.
+ivec2 filteredTile() {
+  if (uTiled == 0) return ivec2(gl_WorkGroupID.xy) * FILTER_TILE_SIZE + ivec2(0, uRowOffset);
   uint tile = tiles[gl_WorkGroupID.x];
-  ivec2 pixel = ivec2(int(tile & 0xFFFFu), int(tile >> 16)) * FILTER_TILE_SIZE +
-                ivec2(gl_LocalInvocationID.xy);
-  return all(lessThan(pixel, ivec2(frame.sizes.xy))) ? pixel : ivec2(-1);
+  return ivec2(int(tile & 0xFFFFu), int(tile >> 16)) * FILTER_TILE_SIZE;
 }
