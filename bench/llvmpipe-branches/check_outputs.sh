@@ -6,9 +6,12 @@
 # near layer once changed classification); every EXR is compared at zero tolerance and the
 # counters of run.json must be equal. Prints the differing files; exit 1 if any differ.
 # From the repository root after building: bash bench/llvmpipe-branches/check_outputs.sh
-# (12 min on the 2 cores).
+# (12 min on the 2 cores). Where the C++ changed too (session 8), BEFORE_BIN is a binary
+# built from $BEFORE (e.g. by bench/llvmpipe-writes/run.sh), which the before side runs:
+#   BEFORE=ff1fdb6 BEFORE_BIN=/tmp/penumbra-ff1fdb6/build/penumbra bash bench/llvmpipe-branches/check_outputs.sh
 BEFORE=${BEFORE:-e6644b0} AFTER=${AFTER:-HEAD}
 P=$(pwd)/build/penumbra
+BEFORE_BIN=${BEFORE_BIN:-$P}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 for side in before after; do
@@ -33,7 +36,8 @@ compare() {  # $1 = case name; export_case has written $TMP/out/{before,after}/$
 export_case() {  # $1 = case name, then export options
   name=$1; shift
   for side in before after; do
-    PENUMBRA_SHADER_DIR="$TMP/$side" $P export "$@" --out "$TMP/out/$side/$name" >/dev/null 2>&1 ||
+    bin=$P; [ $side = before ] && bin=$BEFORE_BIN
+    PENUMBRA_SHADER_DIR="$TMP/$side" $bin export "$@" --out "$TMP/out/$side/$name" >/dev/null 2>&1 ||
       { echo "export failed: $name ($side)"; differ=$((differ + 1)); }
   done
   compare "$name"

@@ -12,7 +12,8 @@ for path in sorted(glob.glob(f"{out}/*-r*.md")):
     for row in rows[1:]:
         cells = dict(zip(header, [c.strip() for c in row.split("|")]))
         for column in ("run ms", "trace ms", "classify ms", "light_layers ms", "minmax ms", "nbuffer ms",
-                       "trace.fetches", "fetches / searched ray"):
+                       "filter ms", "composite ms", "gbuffer ms", "trace.fetches",
+                       "fetches / searched ray"):
             if cells.get(column, "-") != "-":
                 values[(kind, cells["side"], column, shaders)].append(float(cells[column]))
 for key in sorted(values):
