@@ -4,7 +4,7 @@
 #include "shared/nbuffer_layout.h"
 
 static_assert(gpu::distinctBelow({NBUFFER_NEAR_UNIT, NBUFFER_FAR_UNIT}, gpu::kTextureUnits));
-static_assert(gpu::distinctBelow({NBUFFER_FINER_IMAGE}, gpu::kImageUnits));
+static_assert(NBUFFER_FINER_IMAGE < gpu::kImageUnits);
 
 #include <algorithm>
 #include <stdexcept>
