@@ -1,13 +1,11 @@
 // Stage `classify`, step 2 of 2 (classify.frag is step 1): the class counts, and the list of
 // pixels that need rays (penumbra and umbra), so the trace dispatches only those (thesis Fig
 // 3.8: "full calculations are only performed in blue areas").
-// One invocation per CLASSIFY_LIST_TILE^2 tile of pixels, counting in registers and listing
-// its penumbra pixels, then its umbra pixels, in scan order: no shared memory and no barrier
-// (on llvmpipe a pass's shared atomics and barriers cost about 4 ms at 640x480, issue 14).
-#include "shared/frame.glsl"
+// One invocation per CLASSIFY_LIST_TILE^2 tile of pixels (tile_pass.glsl), counting in
+// registers and listing its penumbra pixels, then its umbra pixels, in scan order.
+#include "shared/tile_pass.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(local_size_x = 64) in;
 layout(binding = CLASSIFY_MASK_UNIT) uniform sampler2D classMask;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;
@@ -20,12 +18,9 @@ layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
 
 void main() {
   // 1. This invocation's tile.
-  ivec2 size = ivec2(frame.sizes.xy);
-  int tilesX = (size.x + CLASSIFY_LIST_TILE - 1) / CLASSIFY_LIST_TILE;
-  int index = int(gl_GlobalInvocationID.x);
-  ivec2 origin = ivec2(index % tilesX, index / tilesX) * CLASSIFY_LIST_TILE;
-  if (origin.y >= size.y) return;
-  ivec2 end = min(origin + CLASSIFY_LIST_TILE, size);
+  ivec2 origin = invocationTile(CLASSIFY_LIST_TILE);
+  if (origin.x < 0) return;
+  ivec2 end = min(origin + CLASSIFY_LIST_TILE, ivec2(frame.sizes.xy));
   // 2. The pixels of each class (separate counters, not an array: llvmpipe would index a
   //    private array lane by lane).
   uint background = 0u, lit = 0u, penumbra = 0u, umbra = 0u, outside = 0u;

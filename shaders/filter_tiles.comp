@@ -6,12 +6,10 @@
 // tile is listed unless every pixel of the tile grown by r holds the same value, 0 or 1.
 // Background pixels are never taps, but they are looked at too: one fetch per pixel
 // instead of two, at the price of listing a tile where the background meets umbra.
-// One invocation per tile, reading the grown tile alone: no shared memory and no barrier (on
-// llvmpipe a pass's shared atomics and barriers cost about 4 ms at 640x480, issue 14; with
-// them this pass took as long as the blur itself).
-#include "shared/frame.glsl"
+// One invocation per tile (tile_pass.glsl), reading the grown tile alone (with shared memory
+// and barriers this pass took as long as the blur itself on llvmpipe).
+#include "shared/tile_pass.glsl"
 #include "shared/filter_layout.h"
-layout(local_size_x = 64) in;
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
 layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
 layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
@@ -22,11 +20,9 @@ layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
 void main() {
   // 1. This invocation's tile.
   ivec2 size = ivec2(frame.sizes.xy);
-  int tilesX = (size.x + FILTER_TILE_SIZE - 1) / FILTER_TILE_SIZE;
-  int index = int(gl_GlobalInvocationID.x);
-  ivec2 tile = ivec2(index % tilesX, index / tilesX);
-  ivec2 tileOrigin = tile * FILTER_TILE_SIZE;
-  if (tileOrigin.y >= size.y) return;
+  ivec2 tileOrigin = invocationTile(FILTER_TILE_SIZE);
+  if (tileOrigin.x < 0) return;
+  ivec2 tile = tileOrigin / FILTER_TILE_SIZE;
   // 2. The values over the tile grown by the radius, clipped to the image: bit 0 a value 0,
   //    bit 1 a 1, bit 2 any other.
   ivec2 low = max(tileOrigin - uRadius, ivec2(0));

@@ -51,6 +51,8 @@ void main() {
   //    the map's border is clamped to the edge (gl_texture.cpp), as one texel's neighbour
   //    past the border was clamped to the texel itself: the same texel, which never raises
   //    far (its f is far itself).
+  // The arrays are indexed by constants only once the loops are unrolled, so they live in
+  // registers (llvmpipe indexes a private array by a variable lane by lane).
   const int span = RISERS_BLOCK + 2;
   float near[span][span], far[span][span];
   for (int j = 0; j < span; j += 2)

@@ -199,3 +199,9 @@ void dispatchRows(int width, int height, int rowsPerBand) {
   }
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
+
+void dispatchTiles(int width, int height, int tile) {
+  const int tiles = ((width + tile - 1) / tile) * ((height + tile - 1) / tile);
+  glDispatchCompute(GLuint((tiles + TILE_PASS_GROUP_SIZE - 1) / TILE_PASS_GROUP_SIZE), 1, 1);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}

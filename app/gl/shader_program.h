@@ -65,3 +65,7 @@ private:
 // at most `rowsPerBand` rows (llvmpipe blocks the calling thread for the whole dispatch).
 // The band's first row is passed in the uniform `uRowOffset` (location 0).
 void dispatchRows(int width, int height, int rowsPerBand = 1 << 30);
+
+// Dispatches a per-tile compute program (shaders/shared/tile_pass.glsl): one invocation per
+// tile x tile pixels of width x height.
+void dispatchTiles(int width, int height, int tile);

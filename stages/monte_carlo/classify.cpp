@@ -133,10 +133,7 @@ public:
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
     listProgram_.use();
     glBindTextureUnit(CLASSIFY_MASK_UNIT, mask.id());
-    const int tiles = ((w + CLASSIFY_LIST_TILE - 1) / CLASSIFY_LIST_TILE) *
-                      ((h + CLASSIFY_LIST_TILE - 1) / CLASSIFY_LIST_TILE);
-    glDispatchCompute(GLuint(tiles + 63) / 64, 1, 1);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    dispatchTiles(w, h, CLASSIFY_LIST_TILE);
 
     gpu::ClassifyCounts counts{};
     glGetNamedBufferSubData(counts_.id(), 0, sizeof counts, &counts);

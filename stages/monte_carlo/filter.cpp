@@ -111,8 +111,7 @@ public:
         tilesProgram_.use();
         glUniform1i(FILTER_RADIUS_LOCATION, radius);
         glBindTextureUnit(FILTER_SOURCE_UNIT, source.id());
-        glDispatchCompute(GLuint(tilesX * tilesY + 63) / 64, 1, 1);  // an invocation per tile
-        glMemoryBarrier(GL_ALL_BARRIER_BITS);
+        dispatchTiles(w, h, FILTER_TILE_SIZE);
       }
       // 2. Every other pixel keeps its value in both passes.
       glCopyImageSubData(source.id(), GL_TEXTURE_2D, 0, 0, 0, 0, horizontal.id(), GL_TEXTURE_2D,
