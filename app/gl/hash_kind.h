@@ -30,6 +30,12 @@ inline std::optional<HashKind> hashKindFromName(const std::string& name) {
   return std::nullopt;
 }
 
+// The line that compiles a program for one hash alone (shaders/shared/hash.glsl: hashRand),
+// for ShaderVariants: `kind` is frame.light.hashKind.
+inline std::string hashSpecialization(int kind) {
+  return "#define HASH_KIND " + std::to_string(kind) + "\n";
+}
+
 inline std::string hashKindList() {  // "md5_16, md5_64, pcg3d, ..."
   std::string list;
   for (const char* name : kHashKindNames) list += (list.empty() ? "" : ", ") + std::string(name);

@@ -15,6 +15,7 @@ struct LightFrame {
   glm::vec3 right, up, forward;  // orthonormal light frame
   int mapSize = 0;  // texels per side of the light maps (set by the `light` stage)
   int layers = 2;   // depth layers modelling the occluders, 1-3 (set by the `light` stage)
+  int hashKind = 0; // HASH_* of the light samples (shared/hash_kinds.h; set by the `light` stage)
 };
 
 // Eq 3.1 for a square light of side `size`: light depth = size / (2 tan(fov / 2)).

@@ -314,8 +314,13 @@ uvec4 xxhash32Rand(uvec4 seed, uint key) {
                xxhash32(p + uvec4(0u, 0u, 0u, 2u)), xxhash32(p + uvec4(0u, 0u, 0u, 3u)));
 }
 
-// The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h).
+// The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h). A program compiled with
+// HASH_KIND defined (the trace, PCSS, the hash view: hashSpecialization() in
+// app/gl/hash_kind.h) carries that hash alone: with the kind a uniform, llvmpipe ran every
+// case of the switch for every ray (cube 640x480, map 512: 3.5-4.5 ms of a 13-17 ms trace;
+// NOTES.md, session 9).
 uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
+#if !defined(HASH_KIND)
   switch (hashKind) {
     case HASH_MD5_64: return md5rand64(seed, key);
     case HASH_PCG3D: return pcg3dRand(seed, key);
@@ -326,6 +331,23 @@ uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
     case HASH_XXHASH32: return xxhash32Rand(seed, key);
   }
   return md5rand16(seed, key);
+#elif HASH_KIND == HASH_MD5_64
+  return md5rand64(seed, key);
+#elif HASH_KIND == HASH_PCG3D
+  return pcg3dRand(seed, key);
+#elif HASH_KIND == HASH_MD5_4
+  return md5randSteps(seed, key, 4);
+#elif HASH_KIND == HASH_MD5_8
+  return md5randSteps(seed, key, 8);
+#elif HASH_KIND == HASH_LCG15
+  return lcg15Rand(seed, key);
+#elif HASH_KIND == HASH_LCG32
+  return lcg32Rand(seed, key);
+#elif HASH_KIND == HASH_XXHASH32
+  return xxhash32Rand(seed, key);
+#else
+  return md5rand16(seed, key);
+#endif
 }
 
 // Two hash words -> a point of [0,1)^2: the top 24 bits of each word times 2^-24. 24 bits

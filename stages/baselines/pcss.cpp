@@ -15,6 +15,7 @@
 #include "core/frame.h"
 #include "gl/gpu_layout_pcss.h"
 #include "gl/gpu_layout_ssm.h"
+#include "gl/hash_kind.h"
 #include "gl/shader_program.h"
 #include "gl/tap_patterns.h"
 #include "shared/screen_pass_layout.h"
@@ -102,7 +103,8 @@ public:
     params.search = {zNearest, 0, 0, 0};
     paramBuffer_.upload(&params, sizeof params);
 
-    program_.use();
+    ShaderProgram& program = programs_[hashSpecialization(frame.light.hashKind)];
+    program.use();
     glBindBufferBase(GL_UNIFORM_BUFFER, PCSS_PARAMS_BINDING, paramBuffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PCSS_TAPS_BINDING, tapBuffer_.id());
     glBindTextureUnit(PCSS_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
@@ -118,7 +120,7 @@ public:
   }
 
 private:
-  ShaderProgram program_{{{GL_COMPUTE_SHADER, "pcss.comp"}}};
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "pcss.comp"}}};  // one per hash (hash.glsl)
   ShaderProgram boundsProgram_{{{GL_COMPUTE_SHADER, "depth_bounds.comp"}}};
   GlBuffer boundsBuffer_, tapBuffer_, paramBuffer_;
 };

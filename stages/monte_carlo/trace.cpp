@@ -15,6 +15,7 @@ namespace gpu {
 }  // namespace gpu
 #include "gl/minmax_build.h"
 #include "gl/nbuffer_build.h"
+#include "gl/hash_kind.h"
 #include "gl/shader_program.h"
 
 // The option index of trace.search and trace.sampling is the GLSL enum (trace_layout.h), and
@@ -212,10 +213,10 @@ public:
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
     if (param("deferred").asBool()) {
-      runDeferred(frame, visibility, cost, deferred_[specialization(params, false)],
-                  recording ? &deferred_[specialization(params, true)] : nullptr);
+      runDeferred(frame, visibility, cost, deferred_[specialization(params, frame.light.hashKind, false)],
+                  recording ? &deferred_[specialization(params, frame.light.hashKind, true)] : nullptr);
     } else {
-      runForward(frame, visibility, cost, forward_[specialization(params, recording)]);
+      runForward(frame, visibility, cost, forward_[specialization(params, frame.light.hashKind, recording)]);
     }
 
     // 5. Totals and the recorded steps.
@@ -317,11 +318,11 @@ private:
   // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy,
   // search and layer count of this run, and compiled without the step records or, for the
   // recorded pixel, with them.
-  std::string specialization(const gpu::TraceParams& params, bool recording) const {
+  std::string specialization(const gpu::TraceParams& params, int hashKind, bool recording) const {
     return "#define TRACE_HIERARCHY " + std::to_string(params.limits.z) +
            "\n#define TRACE_SEARCH " + std::to_string(params.config.z) +
            "\n#define TRACE_LAYERS " + std::to_string(params.config.w) +
-           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n";
+           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n" + hashSpecialization(hashKind);
   }
   ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
   ShaderVariants forward_{

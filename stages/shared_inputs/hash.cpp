@@ -5,6 +5,7 @@
 #include "shared/hash_layout.h"
 
 static_assert(gpu::distinctBelow({HASH_SAMPLES_IMAGE, HASH_BITS_IMAGE}, gpu::kImageUnits));
+#include "gl/hash_kind.h"
 #include "gl/shader_program.h"
 
 namespace {
@@ -34,7 +35,8 @@ public:
   std::string thesisSection() const override { return "3.1, App. A"; }
 
   void run(Frame& frame) override {
-    program_.use();
+    ShaderProgram& program = programs_[hashSpecialization(frame.light.hashKind)];
+    program.use();
     bindLightInput(frame, *this);
     GlTexture& samples = frame.output(*this, "samples", frame.eyeWidth, frame.eyeHeight);
     GlTexture& bits = frame.output(*this, "bits", frame.eyeWidth, frame.eyeHeight);
@@ -44,7 +46,7 @@ public:
   }
 
 private:
-  ShaderProgram program_{{{GL_COMPUTE_SHADER, "hash.comp"}}};
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "hash.comp"}}};  // one per hash (hash.glsl)
 };
 
 }  // namespace

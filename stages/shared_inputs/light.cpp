@@ -102,6 +102,7 @@ public:
     const AutoSettings& chosen = frame.autoSettings;
     frame.light.mapSize = effectiveResolution(param("resolution"), chosen);
     frame.light.layers = param("layers").automatic ? chosen.layers : param("layers").asInt() + 1;
+    frame.light.hashKind = param("hash").asInt();
     frame.counters["auto.resolution"] = chosen.resolution;
     // What the resolution weighed: 98% of the penumbra area at 6 texels, the largest map
     // whose build costs no more than the trace, half the area at 6 texels.
@@ -131,7 +132,7 @@ public:
     u.bias = glm::vec4(param("bias").asFloat(), param("adaptive_bias").asBool() ? 1.f : 0.f,
                        param("min_cosine").asFloat(), param("normal_offset").asFloat());
     // The option index is the HashKind, which equals the GLSL HASH_* number (hash_kind.h).
-    u.sampling = glm::uvec4(unsigned(param("hash").asInt()), 0, 0, 0);
+    u.sampling = glm::uvec4(unsigned(frame.light.hashKind), 0, 0, 0);
     frame.outputBuffer(*this, "light").upload(&u, sizeof u);
   }
 };
