@@ -20,12 +20,12 @@
 #include "shared/classify.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
-layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
-layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
-layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
+layout(binding = CLASSIFY_WS_POSITION_IMAGE, rgba32f) uniform readonly image2D wsPositionImage;
+layout(binding = CLASSIFY_WS_NORMAL_IMAGE, rgba32f) uniform readonly image2D wsNormalImage;
+layout(binding = CLASSIFY_LEVELS_IMAGE, rgba32f) uniform readonly image2DArray nbufferLevels;
+layout(binding = CLASSIFY_MINMAX_IMAGE, rgba32f) uniform readonly image2D minmaxAtlas;
 layout(binding = CLASSIFY_NEAR_UNIT) uniform sampler2D nearLayer;
-layout(binding = CLASSIFY_FAR_UNIT) uniform sampler2D farLayer;
+layout(binding = CLASSIFY_FAR_IMAGE, r32f) uniform readonly image2D farLayer;
 layout(location = 0) out float maskOut;   // the class
 layout(location = 1) out vec4 zRangeOut;  // zNearMin, zNearMax, zFarMax, receiver lsDepth
 layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
@@ -82,7 +82,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   // starting bounds (§3.6).
   vec3 whole = CLASSIFY_OVER_MINMAX != 0
                    ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0), size - 1, size, 1)
-                   : texelFetch(nbufferLevels, ivec3(0, 0, textureSize(nbufferLevels, 0).z - 1), 0).xyz;
+                   : imageLoad(nbufferLevels, ivec3(0, 0, imageSize(nbufferLevels).z - 1)).xyz;
   vec3 map = lightMapCoords(wsPosition + wsNormal * fullNormalOffset(wsPosition));
   zRange = vec4(whole, zToLsDepth(map.z));
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
@@ -119,11 +119,11 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+  vec4 wsPosition = imageLoad(wsPositionImage, pixel);
   vec4 zRange = vec4(0.0);  // background: no bounds
   int pixelClass = CLASS_BACKGROUND;
   if (wsPosition.w > 0.0)
-    pixelClass = classify(wsPosition.xyz, texelFetch(wsNormalTexture, pixel, 0).xyz, zRange);
+    pixelClass = classify(wsPosition.xyz, imageLoad(wsNormalImage, pixel).xyz, zRange);
   maskOut = float(pixelClass);
   zRangeOut = zRange;
 }

@@ -6,7 +6,7 @@
 #include "shared/tile_pass.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = CLASSIFY_MASK_UNIT) uniform sampler2D classMask;
+layout(binding = CLASSIFY_MASK_IMAGE, r32f) uniform readonly image2D classMask;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;
 };
@@ -26,7 +26,7 @@ void main() {
   uint background = 0u, lit = 0u, penumbra = 0u, umbra = 0u, outside = 0u;
   for (int y = origin.y; y < end.y; ++y)
     for (int x = origin.x; x < end.x; ++x) {
-      int pixelClass = int(texelFetch(classMask, ivec2(x, y), 0).r);
+      int pixelClass = int(imageLoad(classMask, ivec2(x, y)).r);
       background += pixelClass == CLASS_BACKGROUND ? 1u : 0u;
       lit += pixelClass == CLASS_LIT ? 1u : 0u;
       penumbra += pixelClass == CLASS_PENUMBRA ? 1u : 0u;
@@ -48,7 +48,7 @@ void main() {
   int rows = traced != 0u ? end.y - origin.y : 0;
   for (int y = origin.y; y < origin.y + rows; ++y)
     for (int x = origin.x; x < end.x; ++x) {
-      int pixelClass = int(texelFetch(classMask, ivec2(x, y), 0).r);
+      int pixelClass = int(imageLoad(classMask, ivec2(x, y)).r);
       uint xy = uint(x) | (uint(y) << 16);
       if (pixelClass == CLASS_PENUMBRA) tracedPixels[nextPenumbra++] = xy;
       if (pixelClass == CLASS_UMBRA) tracedPixels[nextUmbra++] = xy;

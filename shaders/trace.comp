@@ -4,8 +4,8 @@
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = TRACE_MASK_UNIT) uniform sampler2D classMask;
-layout(binding = TRACE_ZRANGE_UNIT) uniform sampler2D zRangeTexture;
+layout(binding = TRACE_MASK_IMAGE, r32f) uniform readonly image2D classMask;
+layout(binding = TRACE_ZRANGE_IMAGE, rgba32f) uniform readonly image2D zRangeImage;
 layout(binding = TRACE_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(binding = TRACE_COST_IMAGE, rgba32f) uniform writeonly image2D costImage;
 layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
@@ -38,7 +38,7 @@ void main() {
   vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
   float visibility = 1.0;
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
-  int pixelClass = int(texelFetch(classMask, pixel, 0).r);
+  int pixelClass = int(imageLoad(classMask, pixel).r);
   if (wsPosition.w == 0.0 || pixelClass == CLASS_OUTSIDE) {
     visibility = 1.0;  // background, or outside the light's frustum: nothing known blocks it
   } else if (trace.limits.w != 0 && (pixelClass == CLASS_LIT || pixelClass == CLASS_UMBRA)) {
@@ -46,7 +46,7 @@ void main() {
     recordStep(-1, STEP_CLASSIFIED, 0, ivec4(-1), vec4(visibility), vec4(0.0));
   } else {
     vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
-    vec4 zRange = texelFetch(zRangeTexture, pixel, 0);  // zNearMin, zNearMax, zFarMax, lsDepth
+    vec4 zRange = imageLoad(zRangeImage, pixel);  // zNearMin, zNearMax, zFarMax, lsDepth
     visibility = traceVisibility(wsPosition.xyz, wsNormal, pixel, zRange.xz, counts);
     // The recorded pixel's second trace is not counted again (the pass over every pixel,
     // or over the listed ones, counted it).

@@ -49,6 +49,19 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
   glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+void bindImageForReading(GLuint unit, const GlTexture& texture) {
+  glBindImageTexture(unit, texture.id(), 0, texture.isArray() ? GL_TRUE : GL_FALSE, 0,
+                     GL_READ_ONLY, texture.internalFormat());
+}
+
+void clearThroughFramebuffer(const GlFramebuffer& framebuffer, const GlTexture& texture,
+                             const float value[4]) {
+  glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, texture.id(), 0);
+  glNamedFramebufferDrawBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0);
+  framebuffer.checkComplete("clear");
+  glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, value);
+}
+
 // Appends only: `"x" + std::to_string(...)` (a literal plus a temporary string) makes GCC 12
 // print a false -Wrestrict from <string> (GCC bug 105329).
 std::string GlTexture::extentText() const {

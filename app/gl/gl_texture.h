@@ -48,6 +48,11 @@ private:
   int width_ = 0, height_ = 0, layers_ = 0;
 };
 
+// Binds level 0 of `texture` (all its layers) to image unit `unit` for imageLoad, in its own
+// format. Hot passes read through images where they can: on llvmpipe an imageLoad costs a
+// third of a texelFetch (NOTES.md, session 9). Depth textures have no image format.
+void bindImageForReading(GLuint unit, const GlTexture& texture);
+
 // Framebuffers and buffers are created on first use, so stages can be declared (for --set,
 // help, tests of parameters) before a GL context exists.
 class GlFramebuffer {
@@ -66,6 +71,12 @@ public:
 private:
   mutable GLuint id_ = 0;
 };
+
+// Clears level 0 of `texture` (not an array) to `value` as colour attachment 0 of
+// `framebuffer`: on llvmpipe glClearTexImage of a 640x480 RGBA32F texture took 1.45 ms, a
+// framebuffer clear next to nothing (NOTES.md, session 9).
+void clearThroughFramebuffer(const GlFramebuffer& framebuffer, const GlTexture& texture,
+                             const float value[4]);
 
 class GlBuffer {
 public:

@@ -7,16 +7,19 @@
 #define TRACE_RECORDS_BINDING 0   // storage: uvec4 header (x = count), TraceStep[]
 #define TRACE_TOTALS_BINDING 1    // storage: uint[TOTAL_COUNT]
 // (storage CLASSIFY_LIST_BINDING: the pixel list of classify_layout.h)
+// What the rays read is read through image units where it can: on llvmpipe an imageLoad
+// costs a third of a texelFetch (NOTES.md, session 9). The near layer is a depth texture,
+// which no image format reads; the G-buffer is read once per pixel (and by eye_layer.glsl).
 #define TRACE_WS_POSITION_UNIT 0  // eye_layer.glsl
 #define TRACE_WS_NORMAL_UNIT 1
 #define TRACE_NEAR_UNIT 2         // trace_ray.glsl
-#define TRACE_FAR_UNIT 3
-#define TRACE_LEVELS_UNIT 4
-#define TRACE_MASK_UNIT 5         // trace.comp
-#define TRACE_ZRANGE_UNIT 6
-#define TRACE_MINMAX_UNIT 7       // trace_ray.glsl: the min-max mipmap atlas (minmax.glsl)
-#define TRACE_VISIBILITY_IMAGE 0
+#define TRACE_VISIBILITY_IMAGE 0  // trace.comp (written)
 #define TRACE_COST_IMAGE 1
+#define TRACE_FAR_IMAGE 2         // trace_ray.glsl
+#define TRACE_LEVELS_IMAGE 3      // the N-buffer (image2DArray)
+#define TRACE_MINMAX_IMAGE 4      // the min-max mipmap atlas (minmax.glsl)
+#define TRACE_MASK_IMAGE 5        // trace.comp
+#define TRACE_ZRANGE_IMAGE 6
 #define TRACE_PIXELS_LOCATION 1   // which pixels (TRACE_PIXELS_*); ROW_OFFSET_LOCATION = 0
                                   // holds the first row, or the band's first group
 #define TRACE_PIXELS_ALL 0        // every pixel, rows from the row offset

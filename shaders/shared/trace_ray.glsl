@@ -14,9 +14,9 @@ layout(std430, binding = TRACE_RECORDS_BINDING) buffer TraceRecords { uvec4 reco
 layout(std430, binding = TRACE_TOTALS_BINDING) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
 
 layout(binding = TRACE_NEAR_UNIT) uniform sampler2D nearLayer;
-layout(binding = TRACE_FAR_UNIT) uniform sampler2D farLayer;
-layout(binding = TRACE_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
-layout(binding = TRACE_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
+layout(binding = TRACE_FAR_IMAGE, r32f) uniform readonly image2D farLayer;
+layout(binding = TRACE_LEVELS_IMAGE, rgba32f) uniform readonly image2DArray nbufferLevels;
+layout(binding = TRACE_MINMAX_IMAGE, rgba32f) uniform readonly image2D minmaxAtlas;
 
 struct Ray {
   vec2 a, d;            // texel space start and direction (B - A)
@@ -122,16 +122,16 @@ ivec2 texelAt(vec2 p) { return clamp(ivec2(floor(p)), ivec2(0), ivec2(light.mapS
 
 vec2 fetchLayers(ivec2 texel) {
   gFetches += 2u;
-  return vec2(texelFetch(nearLayer, texel, 0).r, texelFetch(farLayer, texel, 0).r);
+  return vec2(texelFetch(nearLayer, texel, 0).r, imageLoad(farLayer, texel).r);
 }
 // One texel of the hierarchy (traceHierarchy()): an N-buffer texel (nbuffer.glsl), or a
 // min-max mipmap texel in level coordinates (minmax.glsl; level 0 is the layers).
 vec4 hierarchyTexel(ivec2 texel, int level) {
-  if (traceHierarchy() != HIERARCHY_MINMAX) return texelFetch(nbufferLevels, ivec3(texel, level), 0);
+  if (traceHierarchy() != HIERARCHY_MINMAX) return imageLoad(nbufferLevels, ivec3(texel, level));
   if (level > 0)
-    return texelFetch(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel, 0);
+    return imageLoad(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel);
   float nearDepth = texelFetch(nearLayer, texel, 0).r;
-  return vec4(nearDepth, nearDepth, texelFetch(farLayer, texel, 0).r, 0.0);
+  return vec4(nearDepth, nearDepth, imageLoad(farLayer, texel).r, 0.0);
 }
 vec4 fetchHierarchy(ivec2 texel, int level) {  // counted: level 0 of the min-max mipmap is 2
   gFetches += traceHierarchy() == HIERARCHY_MINMAX && level == 0 ? 2u : 1u;

@@ -205,10 +205,10 @@ public:
     glBindTextureUnit(TRACE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(TRACE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
     glBindTextureUnit(TRACE_NEAR_UNIT, nearLayer.id());
-    glBindTextureUnit(TRACE_FAR_UNIT, frame.input(*this, "far").id());
-    glBindTextureUnit(minmax ? TRACE_MINMAX_UNIT : TRACE_LEVELS_UNIT, levels.id());
-    glBindTextureUnit(TRACE_MASK_UNIT, frame.input(*this, "mask").id());
-    glBindTextureUnit(TRACE_ZRANGE_UNIT, frame.input(*this, "zRange").id());
+    bindImageForReading(TRACE_FAR_IMAGE, frame.input(*this, "far"));
+    bindImageForReading(minmax ? TRACE_MINMAX_IMAGE : TRACE_LEVELS_IMAGE, levels);
+    bindImageForReading(TRACE_MASK_IMAGE, frame.input(*this, "mask"));
+    bindImageForReading(TRACE_ZRANGE_IMAGE, frame.input(*this, "zRange"));
 
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
@@ -260,9 +260,9 @@ private:
   }
 
   void dispatchListed(Frame& frame, GlTexture& visibility, GlTexture& cost) {
-    const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
-    glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
-    glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
+    const float one[4] = {1, 0, 0, 0}, zeros[4] = {0, 0, 0, 0};
+    clearThroughFramebuffer(clearFramebuffer_, visibility, one);
+    clearThroughFramebuffer(clearFramebuffer_, cost, zeros);
     // The list's header holds its length (penumbra + umbra pixels; classify_layout.h).
     const GlBuffer& tracedPixels = frame.inputBuffer(*this, "tracedPixels");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
@@ -329,7 +329,7 @@ private:
       {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   bool buffersAllocated_ = false;
-  GlFramebuffer framebuffer_;
+  GlFramebuffer framebuffer_, clearFramebuffer_;
   GlTexture forwardDepth_;
 };
 
