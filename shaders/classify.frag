@@ -120,10 +120,11 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 wsPosition = imageLoad(wsPositionImage, pixel);
-  vec4 zRange = vec4(0.0);  // background: no bounds
-  int pixelClass = CLASS_BACKGROUND;
-  if (wsPosition.w > 0.0)
-    pixelClass = classify(wsPosition.xyz, imageLoad(wsNormalImage, pixel).xyz, zRange);
-  maskOut = float(pixelClass);
+  // Background: the targets were cleared to its class and bounds (all 0) before the draw,
+  // and a discarded fragment writes nothing. A discard, not an if around the rest: llvmpipe
+  // runs an if's body for every lane, but leaves the shader once all lanes have discarded.
+  if (wsPosition.w == 0.0) discard;
+  vec4 zRange;
+  maskOut = float(classify(wsPosition.xyz, imageLoad(wsNormalImage, pixel).xyz, zRange));
   zRangeOut = zRange;
 }

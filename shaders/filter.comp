@@ -34,10 +34,10 @@
 #error "filter.comp keeps its pixels in vec4 components"
 #endif
 layout(local_size_x = FILTER_TILE_SIZE * FILTER_TILE_SIZE / 4) in;
-layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
-layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
-layout(binding = FILTER_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
-layout(binding = FILTER_ZRANGE_UNIT) uniform sampler2D zRangeTexture;  // zNearMin, .., .., receiver
+layout(binding = FILTER_SOURCE_IMAGE, r32f) uniform readonly image2D sourceImage;
+layout(binding = FILTER_WS_POSITION_IMAGE, rgba32f) uniform readonly image2D wsPositionImage;
+layout(binding = FILTER_WS_NORMAL_IMAGE, rgba32f) uniform readonly image2D wsNormalImage;
+layout(binding = FILTER_ZRANGE_IMAGE, rgba32f) uniform readonly image2D zRangeImage;  // zNearMin, .., .., receiver
 layout(binding = FILTER_TARGET_IMAGE, r32f) uniform writeonly image2D targetImage;
 layout(location = FILTER_DIRECTION_LOCATION) uniform ivec2 uDirection;
 layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
@@ -49,7 +49,7 @@ layout(location = FILTER_PENUMBRA_SCALE_LOCATION) uniform float uPenumbraScale; 
 
 // Estimated penumbra width at a pixel, in pixels (1e30: no limit: lit, or nothing known).
 float penumbraPixels(ivec2 at, vec3 wsPosition) {
-  vec4 zRange = texelFetch(zRangeTexture, at, 0);
+  vec4 zRange = imageLoad(zRangeImage, at);
   float occluder = zRange.x, receiver = zRange.w;
   if (!(occluder > 0.0 && occluder < receiver)) return 1e30;
   float lightSize = 2.0 * max(light.wsLightRight.w, light.wsLightUp.w);
@@ -102,8 +102,8 @@ void main() {
   Centers c;
   for (int p = 0; p < 4; ++p) {
     ivec2 pixel = first + p * uDirection;
-    vec4 center = texelFetch(wsPositionTexture, pixel, 0);
-    vec3 normal = texelFetch(wsNormalTexture, pixel, 0).xyz;
+    vec4 center = imageLoad(wsPositionImage, pixel);
+    vec3 normal = imageLoad(wsNormalImage, pixel).xyz;
     c.x[p] = center.x, c.y[p] = center.y, c.z[p] = center.z, c.w[p] = center.w;
     c.nx[p] = normal.x, c.ny[p] = normal.y, c.nz[p] = normal.z;
     c.depth[p] = distance(center.xyz, eye);
@@ -117,11 +117,11 @@ void main() {
   for (int j = -uRadius; j <= uRadius + 3; ++j) {
     ivec2 at = first + j * uDirection;
     if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) continue;
-    vec4 position = texelFetch(wsPositionTexture, at, 0);
+    vec4 position = imageLoad(wsPositionImage, at);
     if (position.w == 0.0) continue;  // never blur the background into a shadow
     Tap tap = Tap(j, position.xyz, distance(position.xyz, eye),
                   uPenumbraScale <= 0.0 ? 1e30 : penumbraPixels(at, position.xyz),
-                  texelFetch(sourceTexture, at, 0).r, texelFetch(wsNormalTexture, at, 0).xyz);
+                  imageLoad(sourceImage, at).r, imageLoad(wsNormalImage, at).xyz);
     addTap(0, tap, c, sigma, sum, weightSum);
     addTap(1, tap, c, sigma, sum, weightSum);
     addTap(2, tap, c, sigma, sum, weightSum);
@@ -133,7 +133,7 @@ void main() {
   for (int p = 0; p < 4; ++p) {
     ivec2 pixel = first + p * uDirection;
     if (any(greaterThanEqual(pixel, size))) continue;
-    float centerValue = texelFetch(sourceTexture, pixel, 0).r;
+    float centerValue = imageLoad(sourceImage, pixel).r;
     bool keep = c.w[p] == 0.0 || uRadius == 0;
     imageStore(targetImage, pixel, vec4(keep ? centerValue : clamp(sum[p] / weightSum[p], 0.0, 1.0)));
   }

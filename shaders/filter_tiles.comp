@@ -10,7 +10,7 @@
 // and barriers this pass took as long as the blur itself on llvmpipe).
 #include "shared/tile_pass.glsl"
 #include "shared/filter_layout.h"
-layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceTexture;
+layout(binding = FILTER_SOURCE_IMAGE, r32f) uniform readonly image2D sourceImage;
 layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
 layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {
   FilterTilesHeader header;
@@ -30,7 +30,7 @@ void main() {
   uint seen = 0u;
   for (int y = low.y; y < high.y; ++y)
     for (int x = low.x; x < high.x; ++x) {
-      uint value = floatBitsToUint(texelFetch(sourceTexture, ivec2(x, y), 0).r);
+      uint value = floatBitsToUint(imageLoad(sourceImage, ivec2(x, y)).r);
       seen |= value == 0u ? 1u : value == floatBitsToUint(1.0) ? 2u : 4u;  // -0.0 is "other"
     }
   // 3. Listed when more than one value, or a value other than 0 and 1, was seen.

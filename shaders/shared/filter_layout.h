@@ -1,8 +1,11 @@
-// Units and locations of filter.comp (C++: stages/monte_carlo/filter.cpp).
-#define FILTER_SOURCE_UNIT 0
-#define FILTER_WS_POSITION_UNIT 1
-#define FILTER_WS_NORMAL_UNIT 2
-#define FILTER_TARGET_IMAGE 0
+// Image units and locations of filter.comp and filter_tiles.comp (C++:
+// stages/monte_carlo/filter.cpp). Read through image units, not texture units: on llvmpipe
+// an imageLoad costs a third of a texelFetch (NOTES.md, session 9).
+#define FILTER_TARGET_IMAGE 0        // written
+#define FILTER_SOURCE_IMAGE 1
+#define FILTER_WS_POSITION_IMAGE 2
+#define FILTER_WS_NORMAL_IMAGE 3
+#define FILTER_ZRANGE_IMAGE 4
 #define FILTER_DIRECTION_LOCATION 1  // after ROW_OFFSET_LOCATION
 #define FILTER_RADIUS_LOCATION 2
 #define FILTER_DEPTH_SCALE_LOCATION 3
@@ -11,7 +14,6 @@
 #define FILTER_PLANE_SIGMA_LOCATION 6
 #define FILTER_PIXEL_ANGLE_LOCATION 7
 #define FILTER_PENUMBRA_SCALE_LOCATION 8
-#define FILTER_ZRANGE_UNIT 3
 
 // The tiles the filter runs on (issue 14; filter_tiles.comp writes it, filter.comp reads
 // it): a std430 storage buffer holding a glDispatchComputeIndirect command (groups x, y, z:

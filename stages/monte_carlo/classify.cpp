@@ -117,6 +117,11 @@ public:
     // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
     // (§3.4) they can, so it is off there.
     glUniform1i(CLASSIFY_UMBRA_TEST_LOCATION, param("umbra").asBool() && frame.light.layers < 3);
+    // Background pixels keep these values (classify.frag discards them).
+    static_assert(CLASS_BACKGROUND == 0);
+    const float background[4] = {0, 0, 0, 0};
+    clearThroughFramebuffer(clearFramebuffer_, mask, background);
+    clearThroughFramebuffer(clearFramebuffer_, zRange, background);
     screen_.draw({&mask, &zRange});
 
     // 2. The counts and the list of pixels that need rays (classify_list.comp).
@@ -150,6 +155,7 @@ private:
                             {GL_FRAGMENT_SHADER, "classify.frag"}}};
   ShaderProgram listProgram_{{{GL_COMPUTE_SHADER, "classify_list.comp"}}};
   ScreenTriangle screen_;
+  GlFramebuffer clearFramebuffer_;
   GlBuffer counts_;
 };
 

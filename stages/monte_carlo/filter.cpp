@@ -16,9 +16,9 @@ namespace gpu {
 
 static_assert(offsetof(gpu::FilterTilesHeader, pixels) == 12);
 static_assert(sizeof(gpu::FilterTilesHeader) == 16);  // std430: uint[3] stride 4, then uint
-static_assert(gpu::distinctBelow({FILTER_SOURCE_UNIT, FILTER_WS_POSITION_UNIT, FILTER_WS_NORMAL_UNIT,
-                                  FILTER_ZRANGE_UNIT},
-                                 gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({FILTER_TARGET_IMAGE, FILTER_SOURCE_IMAGE,
+                                  FILTER_WS_POSITION_IMAGE, FILTER_WS_NORMAL_IMAGE,
+                                  FILTER_ZRANGE_IMAGE}, gpu::kImageUnits));
 static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, FILTER_DIRECTION_LOCATION,
                                   FILTER_RADIUS_LOCATION, FILTER_DEPTH_SCALE_LOCATION,
                                   FILTER_NORMAL_POWER_LOCATION, FILTER_TILED_LOCATION,
@@ -92,8 +92,8 @@ public:
     const GlTexture& source = frame.input(*this, "visibility");
     GlTexture& horizontal = frame.output(*this, "horizontal", w, h);
     GlTexture& filtered = frame.output(*this, "visibility", w, h);
-    glBindTextureUnit(FILTER_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(FILTER_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    bindImageForReading(FILTER_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
+    bindImageForReading(FILTER_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
     if (tiled) {
       // 1. The tiles where the blur can change a value, and an indirect dispatch over them.
       GlBuffer& tiles = frame.outputBuffer(*this, "tiles");
@@ -110,7 +110,7 @@ public:
       if (radius > 0) {
         tilesProgram_.use();
         glUniform1i(FILTER_RADIUS_LOCATION, radius);
-        glBindTextureUnit(FILTER_SOURCE_UNIT, source.id());
+        bindImageForReading(FILTER_SOURCE_IMAGE, source);
         dispatchTiles(w, h, FILTER_TILE_SIZE);
       }
       // 2. Every other pixel keeps its value in both passes.
@@ -130,7 +130,7 @@ public:
     glUniform1f(FILTER_PIXEL_ANGLE_LOCATION,
                 2.0f * std::tan(glm::radians(frame.scene.camera.fovYDegrees) * 0.5f) / float(h));
     bindLightInput(frame, *this);
-    glBindTextureUnit(FILTER_ZRANGE_UNIT, frame.input(*this, "zRange").id());
+    bindImageForReading(FILTER_ZRANGE_IMAGE, frame.input(*this, "zRange"));
     pass(source, horizontal, {1, 0}, tiled, w, h);
     pass(horizontal, filtered, {0, 1}, tiled, w, h);
     if (!tiled) {
@@ -146,7 +146,7 @@ public:
 private:
   void pass(const GlTexture& source, GlTexture& target, glm::ivec2 direction, bool tiled, int w,
             int h) {
-    glBindTextureUnit(FILTER_SOURCE_UNIT, source.id());
+    bindImageForReading(FILTER_SOURCE_IMAGE, source);
     glBindImageTexture(FILTER_TARGET_IMAGE, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform2i(FILTER_DIRECTION_LOCATION, direction.x, direction.y);
     if (!tiled) return dispatchRows(w, h);

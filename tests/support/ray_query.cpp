@@ -10,11 +10,10 @@ RayQueryRunner::RayQueryRunner(int width, int height, const std::vector<float>& 
     : width_(width), height_(height), zNear_(zNear), zFar_(zFar) {
   headlessContext();
   near_ = GlTexture(GL_DEPTH_COMPONENT32F, width, height);
-  far_ = GlTexture(GL_DEPTH_COMPONENT32F, width, height);
+  far_ = GlTexture(GL_R32F, width, height);  // as the pipeline's far layer: the trace reads it as an image
   glTextureSubImage2D(near_.id(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT,
                       nearLayer.data());
-  glTextureSubImage2D(far_.id(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      farLayer.data());
+  glTextureSubImage2D(far_.id(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, farLayer.data());
   levels_ = GlTexture(GL_RGBA32F, width, height, nbufferLevelCount(width, height));
   buildNBuffer(near_, far_, levels_);
   const glm::ivec2 atlas = minmaxAtlasSize(width, height);
