@@ -54,14 +54,6 @@ void bindImageForReading(GLuint unit, const GlTexture& texture) {
                      GL_READ_ONLY, texture.internalFormat());
 }
 
-void clearThroughFramebuffer(const GlFramebuffer& framebuffer, const GlTexture& texture,
-                             const float value[4]) {
-  glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, texture.id(), 0);
-  glNamedFramebufferDrawBuffer(framebuffer.id(), GL_COLOR_ATTACHMENT0);
-  framebuffer.checkComplete("clear");
-  glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, value);
-}
-
 // Appends only: `"x" + std::to_string(...)` (a literal plus a temporary string) makes GCC 12
 // print a false -Wrestrict from <string> (GCC bug 105329).
 std::string GlTexture::extentText() const {

@@ -72,12 +72,6 @@ private:
   mutable GLuint id_ = 0;
 };
 
-// Clears level 0 of `texture` (not an array) to `value` as colour attachment 0 of
-// `framebuffer`: on llvmpipe glClearTexImage of a 640x480 RGBA32F texture took 1.45 ms, a
-// framebuffer clear next to nothing (NOTES.md, session 9).
-void clearThroughFramebuffer(const GlFramebuffer& framebuffer, const GlTexture& texture,
-                             const float value[4]);
-
 class GlBuffer {
 public:
   GlBuffer() = default;

@@ -120,8 +120,8 @@ public:
     // Background pixels keep these values (classify.frag discards them).
     static_assert(CLASS_BACKGROUND == 0);
     const float background[4] = {0, 0, 0, 0};
-    clearThroughFramebuffer(clearFramebuffer_, mask, background);
-    clearThroughFramebuffer(clearFramebuffer_, zRange, background);
+    glClearTexImage(mask.id(), 0, GL_RED, GL_FLOAT, background);
+    glClearTexImage(zRange.id(), 0, GL_RGBA, GL_FLOAT, background);
     screen_.draw({&mask, &zRange});
 
     // 2. The counts and the list of pixels that need rays (classify_list.comp).
@@ -155,7 +155,6 @@ private:
                             {GL_FRAGMENT_SHADER, "classify.frag"}}};
   ShaderProgram listProgram_{{{GL_COMPUTE_SHADER, "classify_list.comp"}}};
   ScreenTriangle screen_;
-  GlFramebuffer clearFramebuffer_;
   GlBuffer counts_;
 };
 

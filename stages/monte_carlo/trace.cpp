@@ -213,10 +213,10 @@ public:
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
     if (param("deferred").asBool()) {
-      runDeferred(frame, visibility, cost, deferred_[specialization(params, frame.light.hashKind, false)],
-                  recording ? &deferred_[specialization(params, frame.light.hashKind, true)] : nullptr);
+      runDeferred(frame, visibility, cost, deferred_[specialization(params, frame, false)],
+                  recording ? &deferred_[specialization(params, frame, true)] : nullptr);
     } else {
-      runForward(frame, visibility, cost, forward_[specialization(params, frame.light.hashKind, recording)]);
+      runForward(frame, visibility, cost, forward_[specialization(params, frame, recording)]);
     }
 
     // 5. Totals and the recorded steps.
@@ -260,9 +260,9 @@ private:
   }
 
   void dispatchListed(Frame& frame, GlTexture& visibility, GlTexture& cost) {
-    const float one[4] = {1, 0, 0, 0}, zeros[4] = {0, 0, 0, 0};
-    clearThroughFramebuffer(clearFramebuffer_, visibility, one);
-    clearThroughFramebuffer(clearFramebuffer_, cost, zeros);
+    const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
+    glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
+    glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
     // The list's header holds its length (penumbra + umbra pixels; classify_layout.h).
     const GlBuffer& tracedPixels = frame.inputBuffer(*this, "tracedPixels");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
@@ -316,20 +316,22 @@ private:
   }
 
   // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy,
-  // search and layer count of this run, and compiled without the step records or, for the
-  // recorded pixel, with them.
-  std::string specialization(const gpu::TraceParams& params, int hashKind, bool recording) const {
+  // search, layer count and sample hash of this run, and compiled without the step records
+  // or, for the recorded pixel, with them.
+  std::string specialization(const gpu::TraceParams& params, const Frame& frame,
+                             bool recording) const {
     return "#define TRACE_HIERARCHY " + std::to_string(params.limits.z) +
            "\n#define TRACE_SEARCH " + std::to_string(params.config.z) +
            "\n#define TRACE_LAYERS " + std::to_string(params.config.w) +
-           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n" + hashSpecialization(hashKind);
+           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n" +
+           hashSpecialization(frame.light.hashKind);
   }
   ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
   ShaderVariants forward_{
       {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   bool buffersAllocated_ = false;
-  GlFramebuffer framebuffer_, clearFramebuffer_;
+  GlFramebuffer framebuffer_;
   GlTexture forwardDepth_;
 };
 
