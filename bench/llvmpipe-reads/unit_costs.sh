@@ -40,19 +40,5 @@ for round in $(seq 1 "$ROUNDS"); do
       --out "$TMP/$stub-$round.md" >/dev/null
   done
 done
-python3 - "$TMP" "$OUT" "${!STUBS[@]}" <<'PY'
-import glob, statistics, sys
-tmp, out, stubs = sys.argv[1], sys.argv[2], sys.argv[3:]
-def trace_ms(path):
-    rows = [l for l in open(path) if l.startswith("| ")]
-    header = [c.strip() for c in rows[0].split("|")]
-    return float(dict(zip(header, [c.strip() for c in rows[1].split("|")]))["trace ms"])
-ms = {s: [trace_ms(p) for p in sorted(glob.glob(f"{tmp}/{s}-*.md"))] for s in stubs}
-base = statistics.median(ms["store_only"])
-with open(out, "w") as f:
-    f.write("| stub: 4 reads per pixel of 640x480 | trace ms, median | minus store_only | per read | rounds |\n|---|---|---|---|---|\n")
-    for s in sorted(stubs, key=lambda s: statistics.median(ms[s])):
-        m = statistics.median(ms[s])
-        f.write(f"| {s} | {m:.2f} | {m - base:.2f} | {(m - base) / 4:.2f} | " + ", ".join(f"{x:g}" for x in ms[s]) + " |\n")
-print(open(out).read())
-PY
+python3 bench/stub_table.py --dir "$TMP" --out "$OUT" --column "trace ms" --baseline store_only \
+  --title "stub: 4 reads per pixel of 640x480" --per 4 "${!STUBS[@]}"

@@ -37,19 +37,5 @@ for round in $(seq 1 "$ROUNDS"); do
       --side "x:trace.rays=2" --requested classify.mask --out "$TMP/$stub-$round.md" >/dev/null
   done
 done
-python3 - "$TMP" "$OUT" "${!STUBS[@]}" <<'PY'
-import glob, statistics, sys
-tmp, out, stubs = sys.argv[1], sys.argv[2], sys.argv[3:]
-def classify_ms(path):
-    rows = [l for l in open(path) if l.startswith("| ")]
-    header = [c.strip() for c in rows[0].split("|")]
-    return float(dict(zip(header, [c.strip() for c in rows[1].split("|")]))["classify ms"])
-ms = {s: [classify_ms(p) for p in sorted(glob.glob(f"{tmp}/{s}-*.md"))] for s in stubs}
-empty = statistics.median(ms["empty"])
-with open(out, "w") as f:
-    f.write("| stub (one per pixel of 640x480) | classify ms, median | minus the empty stub | rounds |\n|---|---|---|---|\n")
-    for s in sorted(stubs, key=lambda s: statistics.median(ms[s])):
-        m = statistics.median(ms[s])
-        f.write(f"| {s} | {m:.2f} | {m - empty:.2f} | " + ", ".join(f"{x:g}" for x in ms[s]) + " |\n")
-print(open(out).read())
-PY
+python3 bench/stub_table.py --dir "$TMP" --out "$OUT" --column "classify ms" --baseline empty \
+  --title "stub (one per pixel of 640x480)" "${!STUBS[@]}"

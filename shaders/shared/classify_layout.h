@@ -3,7 +3,7 @@
 // uint per class of classes.h (std430 uint arrays have stride 4, as in C++).
 // Units and locations of classify.frag and classify_list.comp (C++:
 // stages/monte_carlo/classify.cpp). What can be is read through image units, not texture
-// units: on llvmpipe an imageLoad costs a third of a texelFetch (NOTES.md, session 9); the
+// units: on llvmpipe an imageLoad costs a third of a texelFetch (bench/llvmpipe-reads); the
 // near layer is a depth texture, which no image format reads.
 #define CLASSIFY_WS_POSITION_IMAGE 0
 #define CLASSIFY_WS_NORMAL_IMAGE 1

@@ -1,6 +1,6 @@
 // Image units and locations of filter.comp and filter_tiles.comp (C++:
 // stages/monte_carlo/filter.cpp). Read through image units, not texture units: on llvmpipe
-// an imageLoad costs a third of a texelFetch (NOTES.md, session 9).
+// an imageLoad costs a third of a texelFetch (bench/llvmpipe-reads).
 #define FILTER_TARGET_IMAGE 0        // written
 #define FILTER_SOURCE_IMAGE 1
 #define FILTER_WS_POSITION_IMAGE 2

@@ -317,8 +317,8 @@ uvec4 xxhash32Rand(uvec4 seed, uint key) {
 // The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h). A program compiled with
 // HASH_KIND defined (the trace, PCSS, the hash view: hashSpecialization() in
 // app/gl/hash_kind.h) carries that hash alone: with the kind a uniform, llvmpipe ran every
-// case of the switch for every ray (cube 640x480, map 512: 3.5-4.5 ms of a 13-17 ms trace;
-// NOTES.md, session 9).
+// case of the switch for every ray (cube 640x480, map 512: the trace took 0.81x as long
+// without them; bench/llvmpipe-reads/README.md).
 uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
 #if !defined(HASH_KIND)
   switch (hashKind) {

@@ -8,7 +8,7 @@
 #define TRACE_TOTALS_BINDING 1    // storage: uint[TOTAL_COUNT]
 // (storage CLASSIFY_LIST_BINDING: the pixel list of classify_layout.h)
 // What the rays read is read through image units where it can: on llvmpipe an imageLoad
-// costs a third of a texelFetch (NOTES.md, session 9). The near layer is a depth texture,
+// costs a third of a texelFetch (bench/llvmpipe-reads). The near layer is a depth texture,
 // which no image format reads; the G-buffer is read once per pixel (and by eye_layer.glsl).
 #define TRACE_WS_POSITION_UNIT 0  // eye_layer.glsl
 #define TRACE_WS_NORMAL_UNIT 1
