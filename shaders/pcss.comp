@@ -18,8 +18,8 @@
 #include "shared/pcss_layout.h"
 layout(std140, binding = PCSS_PARAMS_BINDING) uniform PcssBlock { PcssParams pcss; };
 layout(std430, binding = PCSS_TAPS_BINDING) readonly buffer Taps { vec2 taps[]; };
-layout(binding = PCSS_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
-layout(binding = PCSS_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = PCSS_WS_POSITION_IMAGE, rgba32f) uniform readonly image2D wsPositionImage;
+layout(binding = PCSS_WS_NORMAL_IMAGE, rgba32f) uniform readonly image2D wsNormalImage;
 layout(binding = PCSS_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = PCSS_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(binding = PCSS_SEARCH_RADIUS_IMAGE, r32f) uniform writeonly image2D searchRadiusImage;  // texels
@@ -69,14 +69,14 @@ bool blocks(Receiver receiver, ivec2 texel, float lsDepth) {
 void main() {
   ivec2 pixel = screenPixel();
   if (pixel.x < 0) return;
-  vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+  vec4 wsPosition = imageLoad(wsPositionImage, pixel);
   vec3 map = lightMapCoords(wsPosition.xyz);
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
                    && map.z > light.lightDepthRange.x;
   float visibility = 1.0, searchHalf = 0.0, blockerDepth = 0.0, filterHalf = 0.0;
   if (wsPosition.w > 0.0 && insideMap) {
     vec2 size = vec2(light.mapSize.xy);
-    vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
+    vec3 wsNormal = imageLoad(wsNormalImage, pixel).xyz;
     vec3 wsToLight = normalize(light.wsLightCenter.xyz - wsPosition.xyz);
     float bias = light.bias.x;  // the light's Eq 3.2 group, as every shadow-map test
     if (light.bias.y != 0.0)

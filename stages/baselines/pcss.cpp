@@ -26,10 +26,10 @@ static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, PCSS
                                  gpu::kUniformBindings));
 static_assert(gpu::distinctBelow({PCSS_TAPS_BINDING}, gpu::kStorageBindings) &&
               gpu::distinctBelow({DEPTH_BOUNDS_BINDING}, gpu::kStorageBindings));
-static_assert(gpu::distinctBelow({PCSS_WS_POSITION_UNIT, PCSS_WS_NORMAL_UNIT, PCSS_NEAR_UNIT},
-                                 gpu::kTextureUnits));
+static_assert(PCSS_NEAR_UNIT < gpu::kTextureUnits);
 static_assert(gpu::distinctBelow({PCSS_VISIBILITY_IMAGE, PCSS_SEARCH_RADIUS_IMAGE,
-                                  PCSS_BLOCKER_DEPTH_IMAGE, PCSS_FILTER_RADIUS_IMAGE},
+                                  PCSS_BLOCKER_DEPTH_IMAGE, PCSS_FILTER_RADIUS_IMAGE,
+                                  PCSS_WS_POSITION_IMAGE, PCSS_WS_NORMAL_IMAGE},
                                  gpu::kImageUnits));
 
 namespace {
@@ -107,8 +107,8 @@ public:
     program.use();
     glBindBufferBase(GL_UNIFORM_BUFFER, PCSS_PARAMS_BINDING, paramBuffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PCSS_TAPS_BINDING, tapBuffer_.id());
-    glBindTextureUnit(PCSS_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
-    glBindTextureUnit(PCSS_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
+    bindImageForReading(PCSS_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
+    bindImageForReading(PCSS_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
     glBindTextureUnit(PCSS_NEAR_UNIT, nearLayer.id());
     const std::pair<GLuint, const char*> images[] = {
         {PCSS_VISIBILITY_IMAGE, "visibility"}, {PCSS_SEARCH_RADIUS_IMAGE, "searchRadius"},
