@@ -316,11 +316,13 @@ uvec4 xxhash32Rand(uvec4 seed, uint key) {
 
 // The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h). A program compiled with
 // HASH_KIND defined (the trace, PCSS, the hash view: hashSpecialization() in
-// app/gl/hash_kind.h) carries that hash alone: with the kind a uniform, llvmpipe ran every
-// case of the switch for every ray (cube 640x480, map 512: the trace took 0.81x as long
-// without them; bench/llvmpipe-reads/README.md).
+// app/gl/hash_kind.h) has a constant kind, so the compiler keeps its case alone: with the
+// kind a uniform, llvmpipe ran every case of the switch for every ray (cube 640x480, map 512:
+// the trace took 0.81-0.88x as long without them; bench/llvmpipe-reads/README.md).
 uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
-#if !defined(HASH_KIND)
+#ifdef HASH_KIND
+  hashKind = HASH_KIND;
+#endif
   switch (hashKind) {
     case HASH_MD5_64: return md5rand64(seed, key);
     case HASH_PCG3D: return pcg3dRand(seed, key);
@@ -331,23 +333,6 @@ uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
     case HASH_XXHASH32: return xxhash32Rand(seed, key);
   }
   return md5rand16(seed, key);
-#elif HASH_KIND == HASH_MD5_64
-  return md5rand64(seed, key);
-#elif HASH_KIND == HASH_PCG3D
-  return pcg3dRand(seed, key);
-#elif HASH_KIND == HASH_MD5_4
-  return md5randSteps(seed, key, 4);
-#elif HASH_KIND == HASH_MD5_8
-  return md5randSteps(seed, key, 8);
-#elif HASH_KIND == HASH_LCG15
-  return lcg15Rand(seed, key);
-#elif HASH_KIND == HASH_LCG32
-  return lcg32Rand(seed, key);
-#elif HASH_KIND == HASH_XXHASH32
-  return xxhash32Rand(seed, key);
-#else
-  return md5rand16(seed, key);
-#endif
 }
 
 // Two hash words -> a point of [0,1)^2: the top 24 bits of each word times 2^-24. 24 bits
