@@ -13,6 +13,7 @@
 // Step 1 of 2: a fragment shader over the image writing the class and the bounds
 // (app/gl/screen_triangle.h: why not a compute pass); classify_list.comp then counts the
 // classes and lists the pixels that need rays.
+#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/frame.glsl"
 #include "shared/bias.glsl"
 #include "shared/nbuffer.glsl"
@@ -83,7 +84,10 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   vec3 whole = CLASSIFY_OVER_MINMAX != 0
                    ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0), size - 1, size, 1)
                    : imageLoad(nbufferLevels, ivec3(0, 0, imageSize(nbufferLevels).z - 1)).xyz;
-  vec3 map = lightMapCoords(wsPosition + wsNormal * fullNormalOffset(wsPosition));
+  // The point's own map coordinates, once: every offset below is worked out from them.
+  vec3 pointMap = lightMapCoords(wsPosition);
+  float fullOffset = fullNormalOffset(pointMap.z);
+  vec3 map = lightMapCoords(wsPosition + wsNormal * fullOffset);
   zRange = vec4(whole, zToLsDepth(map.z));
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
                    && map.z > light.lightDepthRange.x;
@@ -96,12 +100,12 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   vec3 bounds, secondEnd = map;
   for (int pass = 0; pass < 2; ++pass) {
     bounds = boundsForRays(map, secondEnd, whole, size);
-    if (normalOffsetDistance(wsPosition, wsNormal, bounds.x) >= fullNormalOffset(wsPosition)) break;
-    secondEnd = lightMapCoords(wsPosition);
+    if (normalOffsetDistance(pointMap.z, wsNormal, bounds.x) >= fullOffset) break;
+    secondEnd = pointMap;
   }
   zRange.xyz = bounds;
   // The capped point (the trace starts its rays there too).
-  wsPosition = normalOffsetPoint(wsPosition, wsNormal, bounds.x);
+  wsPosition = normalOffsetPoint(wsPosition, pointMap.z, wsNormal, bounds.x);
   float receiverZ = lightMapCoords(wsPosition).z;
   float largestBias = light.bias.x;
   if (light.bias.y != 0.0) largestBias += adaptiveBias(receiverZ, vec3(0.0), vec3(0.0), light.bias.z);

@@ -1,5 +1,6 @@
 // Stage `composite` (thesis Algorithm 1, last step): albedo x (ambient + visibility x Lambert).
 // A fragment shader over the image (app/gl/screen_triangle.h: why not a compute pass).
+#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/frame.glsl"
 #include "shared/composite_layout.h"
 layout(binding = COMPOSITE_ALBEDO_IMAGE, rgba8) uniform readonly image2D albedoImage;

@@ -1,6 +1,7 @@
 // Light depth layers (thesis §3.3): the fragment's linear light depth (frame_block.h) is
 // written as its depth, so the depth test picks the nearest (near layer, LESS) or the
 // farthest (far layer, GREATER) surface along each light ray.
+#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/frame.glsl"
 layout(location = 0) in vec3 wsPosition;
 void main() {

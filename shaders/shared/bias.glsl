@@ -13,9 +13,12 @@ float adaptiveBias(float z, vec3 wsNormal, vec3 wsToLight, float minCosine) {
 // box's side face towards the part of the light in front of it): such rays stayed inside
 // the box's own near/far interval and were blocked. The full offset is light.bias.w texel
 // widths at the point's depth.
-float fullNormalOffset(vec3 wsPosition) {
+// `pointZ` below is the point's distance along the light axis, lightMapCoords(wsPosition).z:
+// the caller computes it once (a matrix product is dear on llvmpipe, and a product inside
+// classify's loop is not hoisted out of it by the compiler).
+float fullNormalOffset(float pointZ) {
   float tanHalfFov = max(light.lightDepthRange.z, light.lightDepthRange.w);
-  return light.bias.w * 2.0 * lightMapCoords(wsPosition).z * tanHalfFov / float(light.mapSize.x);
+  return light.bias.w * 2.0 * pointZ * tanHalfFov / float(light.mapSize.x);
 }
 
 // The offset is capped by the contact distance: it may bring the point towards the light by
@@ -29,21 +32,21 @@ float fullNormalOffset(vec3 wsPosition) {
 // An occluder within the Eq 3.2 bias (n . l = 1) of the point is its own surface (a lit box
 // top: zNearMin is the top itself), or one the bias alone already passes: no cap there.
 const float kNormalOffsetGapFraction = 0.25;
-float ownSurfaceBand(vec3 wsPosition) {  // Eq 3.2 at n . l = 1, plus the constant bias
+float ownSurfaceBand(float pointZ) {  // Eq 3.2 at n . l = 1, plus the constant bias
   float tanHalfFov = max(light.lightDepthRange.z, light.lightDepthRange.w);
-  return light.bias.x + sqrt(2.0) * lightMapCoords(wsPosition).z * tanHalfFov / float(light.mapSize.x);
+  return light.bias.x + sqrt(2.0) * pointZ * tanHalfFov / float(light.mapSize.x);
 }
-float occluderGap(vec3 wsPosition, float zNearMinLs) {  // light depth, point - zNearMin
-  return lightMapCoords(wsPosition).z - lsDepthToZ(zNearMinLs);
+float occluderGap(float pointZ, float zNearMinLs) {  // light depth, point - zNearMin
+  return pointZ - lsDepthToZ(zNearMinLs);
 }
-float normalOffsetDistance(vec3 wsPosition, vec3 wsNormal, float zNearMinLs) {
-  float offset = fullNormalOffset(wsPosition);
+float normalOffsetDistance(float pointZ, vec3 wsNormal, float zNearMinLs) {
+  float offset = fullNormalOffset(pointZ);
   float towardsLight = -dot(wsNormal, light.wsLightForward.xyz);
-  float gap = occluderGap(wsPosition, zNearMinLs);
-  if (towardsLight > 0.0 && gap > ownSurfaceBand(wsPosition))
+  float gap = occluderGap(pointZ, zNearMinLs);
+  if (towardsLight > 0.0 && gap > ownSurfaceBand(pointZ))
     offset = min(offset, kNormalOffsetGapFraction * gap / towardsLight);
   return offset;
 }
-vec3 normalOffsetPoint(vec3 wsPosition, vec3 wsNormal, float zNearMinLs) {
-  return wsPosition + wsNormal * normalOffsetDistance(wsPosition, wsNormal, zNearMinLs);
+vec3 normalOffsetPoint(vec3 wsPosition, float pointZ, vec3 wsNormal, float zNearMinLs) {
+  return wsPosition + wsNormal * normalOffsetDistance(pointZ, wsNormal, zNearMinLs);
 }

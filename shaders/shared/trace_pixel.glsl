@@ -76,7 +76,8 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
   int raysPerSide = trace.config.x, layers = traceLayers(), search = traceSearch();
   int rayCount = raysPerSide * raysPerSide;
   int unblocked = 0;
-  wsPosition = normalOffsetPoint(wsPosition, wsNormal, zBounds.x);  // capped by zNearMin
+  // Capped by zNearMin.
+  wsPosition = normalOffsetPoint(wsPosition, lightMapCoords(wsPosition).z, wsNormal, zBounds.x);
   float receiverZ = lightMapCoords(wsPosition).z;
   for (int i = 0; i < rayCount; ++i) {
     gRayIndex = i;
