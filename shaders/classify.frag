@@ -83,7 +83,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   // starting bounds (§3.6).
   vec3 whole = CLASSIFY_OVER_MINMAX != 0
                    ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0), size - 1, size, 1)
-                   : imageLoad(nbufferLevels, ivec3(0, 0, imageSize(nbufferLevels).z - 1)).xyz;
+                   : nbufferWholeMap(nbufferLevels);
   // The point's own map coordinates, once: every offset below is worked out from them.
   vec3 pointMap = lightMapCoords(wsPosition);
   float fullOffset = fullNormalOffset(pointMap.z);

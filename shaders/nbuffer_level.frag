@@ -15,11 +15,14 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   ivec2 lo = ivec2(nbufferWindow1D(uLevel, texel.x, size.x).x,
                    nbufferWindow1D(uLevel, texel.y, size.y).x);
-  // The level-(n-1) texels whose windows start at lo and lo + 2^(n-1) (clamped to the map:
-  // where the map is narrower than 2^n both halves are shifted inward and still tile it).
+  // The level-(n-1) windows starting at lo and lo + 2^(n-1) tile this one (where the map is
+  // narrower than 2^n, both are shifted inward and still cover it), read at the texels that
+  // hold them: the distinct ones, written also when the levels are not shown (nbuffer.glsl).
   int halfSpan = 1 << (uLevel - 1);
-  ivec2 first = min(lo + nbufferHalf(uLevel - 1), size - 1);
-  ivec2 second = min(lo + halfSpan + nbufferHalf(uLevel - 1), size - 1);
+  ivec2 first = ivec2(nbufferTexelForWindow(uLevel - 1, lo.x, size.x),
+                      nbufferTexelForWindow(uLevel - 1, lo.y, size.y));
+  ivec2 second = ivec2(nbufferTexelForWindow(uLevel - 1, lo.x + halfSpan, size.x),
+                       nbufferTexelForWindow(uLevel - 1, lo.y + halfSpan, size.y));
   vec4 a = imageLoad(finer, first);
   vec4 b = imageLoad(finer, ivec2(second.x, first.y));
   vec4 c = imageLoad(finer, ivec2(first.x, second.y));

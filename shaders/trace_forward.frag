@@ -14,7 +14,14 @@ void main() {
   vec3 n = normalize(wsNormal);
   if (!gl_FrontFacing) n = -n;
   int topLevel = trace.record.w;
-  vec4 whole = hierarchyTexel(ivec2(0), topLevel);  // either hierarchy's whole map
+  // Either hierarchy's whole map: the top level's one window (for the N-buffer at the texel
+  // holding it, nbuffer.glsl).
+  ivec2 size = ivec2(light.mapSize.xy);
+  ivec2 topTexel = traceHierarchy() == HIERARCHY_MINMAX
+                       ? ivec2(0)
+                       : ivec2(nbufferTexelForWindow(topLevel, 0, size.x),
+                               nbufferTexelForWindow(topLevel, 0, size.y));
+  vec4 whole = hierarchyTexel(topTexel, topLevel);
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
   float visibility = 1.0;
   vec3 map = lightMapCoords(wsPosition);

@@ -77,5 +77,8 @@ const GlTexture& Frame::texture(const std::string& stageDotOutput) const {
   auto found = textures.find(stageDotOutput);
   if (found == textures.end())
     throw std::runtime_error("output '" + stageDotOutput + "' has not been written this run");
+  if (partial.count(stageDotOutput))
+    throw std::runtime_error("output '" + stageDotOutput + "' was written only where the "
+                             "stages after it read it this run (not requested)");
   return found->second;
 }

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 
 #include "core/stage.h"
@@ -34,6 +35,12 @@ struct Frame {
   AutoSettings autoSettings;  // what `auto` parameters chose (stage `light`; issue 12)
   std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
   std::map<std::string, std::unique_ptr<GlBuffer>> buffers;  // buffer outputs, "stage.output"
+  // Demand (issue 14): the outputs this run was asked for (Pipeline::run; empty: all), and
+  // those a stage wrote only where the stages after it read them because nobody asked for
+  // them (the N-buffer's texels that repeat a border window): inputs to the stages after,
+  // not outputs to show or export: has() and texture() treat them as not written.
+  std::set<std::string> requested;
+  std::set<std::string> partial;
 
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}
@@ -52,7 +59,13 @@ struct Frame {
 
   // An output by name, for views, export and tests; throws naming what is missing.
   const GlTexture& texture(const std::string& stageDotOutput) const;
-  bool has(const std::string& stageDotOutput) const { return textures.count(stageDotOutput) > 0; }
+  bool has(const std::string& stageDotOutput) const {
+    return textures.count(stageDotOutput) > 0 && partial.count(stageDotOutput) == 0;
+  }
+  // Whether the caller of this run asked for an output (to show or export it).
+  bool wanted(const std::string& stageDotOutput) const {
+    return requested.empty() || requested.count(stageDotOutput) > 0;
+  }
   // MiB of an output written this run (texture: from its format and size; buffer: its
   // allocated size); 0 when not written.
   double megabytes(const std::string& stageDotOutput) const;

@@ -424,6 +424,8 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
     return std::set<std::string>(needed.begin(), needed.end());
   };
   std::set<std::string> willRun = stagesNeeded();
+  frame.requested = std::set<std::string>(requested.begin(), requested.end());
+  frame.partial.clear();
 
   // 2. A new timing series whenever parameters, scene or size change.
   const std::string key = timingKey(frame);

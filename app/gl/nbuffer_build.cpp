@@ -17,8 +17,16 @@ int nbufferLevelCount(int width, int height) {
   return levels;
 }
 
+TexelSpan nbufferDistinctTexels(int level, int size) {
+  const int span = 1 << level, half = level == 0 ? 0 : span / 2;
+  // Windows start at 0 .. max(size - 2^n, 0); the one starting at lo sits at texel lo + a_n
+  // (on an axis shorter than 2^n, the single window at the last texel or before).
+  const int first = std::min(half, size - 1);
+  return {first, std::min(half + std::max(size - span, 0), size - 1) - first + 1};
+}
+
 void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
-                           GlTexture& levels) {
+                           GlTexture& levels, NBufferTexels texels) {
   const int width = nearLayer.width(), height = nearLayer.height();
   const int count = nbufferLevelCount(width, height);
   if (width < 1 || height < 1 || farLayer.width() != width || farLayer.height() != height ||
@@ -44,7 +52,12 @@ void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer
     glBindImageTexture(NBUFFER_FINER_IMAGE, levels.id(), 0, GL_FALSE, level - 1, GL_READ_ONLY,
                        GL_RGBA32F);
     glUniform1i(NBUFFER_LEVEL_LOCATION, level);
-    screen_.draw(levels, level);
+    if (texels == NBufferTexels::All) {
+      screen_.draw(levels, level);
+    } else {
+      const TexelSpan x = nbufferDistinctTexels(level, width), y = nbufferDistinctTexels(level, height);
+      screen_.drawRect(levels, level, {x.first, y.first}, {x.count, y.count});
+    }
   }
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }

@@ -29,6 +29,9 @@ public:
   void draw(const GlTexture& target, int layer = -1) { draw({&target}, layer); }
   // The same over the texels [origin, origin + size) of one target only (the viewport).
   void drawRect(const GlTexture& target, glm::ivec2 origin, glm::ivec2 size);
+  void drawRect(const GlTexture& target, int layer, glm::ivec2 origin, glm::ivec2 size) {
+    drawRect({&target}, origin, size, layer);
+  }
 
 private:
   void drawRect(const std::vector<const GlTexture*>& targets, glm::ivec2 origin, glm::ivec2 size,

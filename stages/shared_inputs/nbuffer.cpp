@@ -15,7 +15,9 @@ public:
     };
     outputs_ = {{"levels",
                  "N-buffer: layer n holds min/max light depths over a 2^n x 2^n window "
-                 "around each texel (x: min near, y: max near, z: max far).",
+                 "around each texel (x: min near, y: max near, z: max far). The texels "
+                 "whose window repeats a border window (2^(n-1) wide bands) are written "
+                 "only when the levels are shown or exported: nothing reads them.",
                  GL_RGBA32F,
                  {"zNearMin", "zNearMax", "zFarMax", "unused"},
                  {0, 0, 1, Colormap::Gray},
@@ -34,7 +36,12 @@ public:
     const int count = nbufferLevelCount(nearLayer.width(), nearLayer.height());
     GlTexture& levels =
         frame.output(*this, "levels", nearLayer.width(), nearLayer.height(), count);
-    builder_.build(nearLayer, farLayer, levels);
+    // Demand-driven (issue 14): the stages after read only the texels holding distinct
+    // windows (nbuffer.glsl); the border bands that repeat them are written when someone
+    // shows or exports the levels.
+    const bool whole = frame.wanted(name() + ".levels");
+    builder_.build(nearLayer, farLayer, levels, whole ? NBufferTexels::All : NBufferTexels::Distinct);
+    if (!whole) frame.partial.insert(name() + ".levels");
     frame.counters["nbuffer.levels"] = count;
   }
 

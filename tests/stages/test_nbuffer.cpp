@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <random>
+#include <set>
 
 #include "gl/nbuffer_build.h"
 #include "scene/scene_builtin.h"
@@ -19,6 +20,13 @@ std::pair<int, int> window1D(int level, int x, int size) {
   const int span = 1 << level, centerOffset = span / 2;
   const int lo = std::clamp(x - centerOffset, 0, std::max(size - span, 0));
   return {lo, std::min(lo + span, size) - 1};
+}
+
+// The texel a search reads for the level-`level` window starting at `lo`, also from the
+// comment in nbuffer.glsl: lo + a_n, lo clamped like the window, kept inside the map.
+int texelForWindow(int level, int lo, int size) {
+  const int span = 1 << level;
+  return std::min(std::clamp(lo, 0, std::max(size - span, 0)) + span / 2, size - 1);
 }
 
 // Brute-force min/max over every texel's window. The window is a rectangle, so it is done
@@ -55,6 +63,47 @@ std::vector<float> bruteForceLevel(const Layers& layers, int level) {
       out[0] = nearMin, out[1] = nearMax, out[2] = farMax, out[3] = 0;
     }
   return result;
+}
+
+// Distinct mode writes the texels holding distinct windows and leaves the others as they
+// were: cleared to a sentinel first, the band texels keep it, the rest equal brute force.
+void checkDistinctTexels(int width, int height) {
+  headlessContext();
+  const Layers layers = randomLayers(width, height, unsigned(width * 31 + height));
+  const GlTexture nearLayer = uploadDepth(layers.nearDepth, width, height);
+  const GlTexture farLayer = uploadDepth(layers.farDepth, width, height);
+  const int count = nbufferLevelCount(width, height);
+  GlTexture levels(GL_RGBA32F, width, height, count);
+  const float sentinel[4] = {-7, -7, -7, -7};
+  glClearTexImage(levels.id(), 0, GL_RGBA, GL_FLOAT, sentinel);
+  NBufferBuilder builder;
+  builder.build(nearLayer, farLayer, levels, NBufferTexels::Distinct);
+  size_t written = 0, skipped = 0;
+  for (int level = 0; level < count; ++level) {
+    const std::vector<float> gpu = levels.readFloats(level);
+    const std::vector<float> expected = bruteForceLevel(layers, level);
+    const TexelSpan xs = nbufferDistinctTexels(level, width), ys = nbufferDistinctTexels(level, height);
+    size_t mismatches = 0;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const bool distinct = x >= xs.first && x < xs.first + xs.count && y >= ys.first &&
+                              y < ys.first + ys.count;
+        (distinct ? written : skipped) += 1;
+        for (int c = 0; c < 4; ++c) {
+          const size_t i = (size_t(y) * width + x) * 4 + c;
+          const float want = distinct ? expected[i] : sentinel[c];
+          if (gpu[i] != want && ++mismatches <= 5)
+            ADD_FAILURE() << width << "x" << height << " level " << level << " texel (" << x
+                          << ", " << y << ") channel " << c << ": gpu " << gpu[i] << ", want "
+                          << want << (distinct ? " (brute force)" : " (not written)");
+        }
+      }
+    EXPECT_EQ(mismatches, 0u) << width << "x" << height << " level " << level;
+  }
+  if (width >= 4 && height >= 4) {
+    EXPECT_GT(skipped, 0u) << "nothing skipped";
+  }
+  EXPECT_GT(written, 0u);
 }
 
 void checkEveryTexel(int width, int height) {
@@ -99,6 +148,34 @@ TEST(NBuffer, LevelCountCoversTheMapWithTheCoarsestWindow) {
     const int top = nbufferLevelCount(size, 1) - 1;
     for (int x = 0; x < size; ++x) ASSERT_EQ(window1D(top, x, size), std::make_pair(0, size - 1));
   }
+}
+
+// The distinct span is exactly the set of texels searches read (texelForWindow over every
+// window start), and it holds every window of the level once.
+TEST(NBuffer, DistinctTexelsAreTheTexelsSearchesRead) {
+  for (int size : {1, 2, 3, 5, 7, 37, 64, 100, 512, 513}) {
+    for (int level = 0; level < nbufferLevelCount(size, 1); ++level) {
+      std::set<int> read;
+      for (int lo = 0; lo < size; ++lo) read.insert(texelForWindow(level, lo, size));
+      const TexelSpan span = nbufferDistinctTexels(level, size);
+      ASSERT_EQ(int(read.size()), span.count) << "size " << size << " level " << level;
+      EXPECT_EQ(*read.begin(), span.first) << "size " << size << " level " << level;
+      EXPECT_EQ(*read.rbegin(), span.first + span.count - 1) << "size " << size << " level " << level;
+      std::set<std::pair<int, int>> spanWindows, allWindows;
+      for (int x = span.first; x < span.first + span.count; ++x) spanWindows.insert(window1D(level, x, size));
+      for (int x = 0; x < size; ++x) allWindows.insert(window1D(level, x, size));
+      EXPECT_EQ(int(spanWindows.size()), span.count) << "a window twice, size " << size;
+      EXPECT_EQ(spanWindows, allWindows) << "a window missing, size " << size << " level " << level;
+    }
+  }
+}
+
+TEST(NBuffer, DistinctTexelsEqualBruteForceAndTheRestStayUnwritten) {
+  for (int size : {1, 2, 3, 5, 64, 100}) checkDistinctTexels(size, size);
+  checkDistinctTexels(100, 37);
+  checkDistinctTexels(7, 1);
+  checkDistinctTexels(1, 6);
+  checkDistinctTexels(512, 512);
 }
 
 TEST(NBuffer, EveryTexelOfEveryLevelEqualsBruteForceSmallSizes) {
@@ -148,5 +225,37 @@ TEST(NBufferStage, BuiltFromTheLightLayersOfTheFrame) {
     ASSERT_EQ(top[i * 4 + 0], nearMin);
     ASSERT_EQ(top[i * 4 + 1], nearMax);
     ASSERT_EQ(top[i * 4 + 2], farMax);
+  }
+}
+
+// Demand: a run that asks only for the composite writes the distinct texels alone, marks the
+// levels partial (not shown, not exported) and gives the same images to the last bit as a run
+// that asks for everything: deferred (classification, trace) and forward (the top level's
+// bounds), one to three layers, a map whose size is no power of two.
+TEST(NBufferStage, LevelsNotAskedForArePartialAndChangeNoResult) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"cube", {"light.resolution=128", "light.layers=two"}},
+      {"spheres", {"light.resolution=200", "light.layers=one"}},
+      {"cube", {"light.resolution=200", "light.layers=three"}},
+      {"spheres", {"light.resolution=128", "trace.deferred=false"}},
+  };
+  for (const auto& [scene, sets] : cases) {
+    std::vector<std::string> all = {"trace.search=hierarchical", "trace.hierarchy=nbuffer",
+                                    "trace.rays=2"};
+    all.insert(all.end(), sets.begin(), sets.end());
+    PipelineRun run(makeBuiltinScene(scene), all, 96, 72);
+    const auto everything = run.read("composite.color");
+    const auto visibility = run.read("trace.visibility");
+    EXPECT_TRUE(run.frame->has("nbuffer.levels"));
+    // The texture is reused: a sentinel in it makes any read of a texel not written show.
+    const float sentinel[4] = {-7, -7, -7, -7};
+    glClearTexImage(run.frame->textures.at("nbuffer.levels").id(), 0, GL_RGBA, GL_FLOAT, sentinel);
+    run.pipeline->run(*run.frame, {"composite.color"});
+    EXPECT_FALSE(run.frame->has("nbuffer.levels")) << scene << " " << sets[0];
+    EXPECT_THROW(run.frame->texture("nbuffer.levels"), std::runtime_error);
+    EXPECT_EQ(run.read("composite.color"), everything) << scene << " " << sets[0] << " " << sets[1];
+    EXPECT_EQ(run.read("trace.visibility"), visibility) << scene << " " << sets[0] << " " << sets[1];
+    run.pipeline->run(*run.frame, {"composite.color", "nbuffer.levels"});
+    EXPECT_TRUE(run.frame->has("nbuffer.levels"));
   }
 }
