@@ -27,6 +27,7 @@
 // order k = -r .. r with the same operations, so its result is bit for bit the same. The 4
 // pixels' state is kept in vec4 components, not arrays (llvmpipe indexes private arrays
 // lane by lane).
+#define UNIFORM_BLOCKS_LOADED_AT_START  // frame.glsl: why
 #include "shared/frame.glsl"
 #include "shared/filter_layout.h"
 #include "shared/filter_tiles.glsl"
@@ -89,6 +90,7 @@ void addTap(int p, Tap tap, Centers c, float sigma, inout vec4 sum, inout vec4 w
 }
 
 void main() {
+  loadFrameBlocks();
   // 1. This invocation's pixels: 4 consecutive ones along the direction, in the tile its
   //    group covers; lanes next to each other take neighbouring rows (columns).
   uint lane = gl_LocalInvocationIndex;

@@ -12,6 +12,7 @@
 // tangent plane (receiver-plane depth bias): a tap compared with the receiver's own depth
 // finds the receiver's surface itself in front wherever that surface slopes away from the
 // light, and the region then collapses onto the receiver's texel (acne, self-shadow noise).
+#define UNIFORM_BLOCKS_LOADED_AT_START  // frame.glsl: why
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/hash.glsl"
@@ -67,6 +68,7 @@ bool blocks(Receiver receiver, ivec2 texel, float lsDepth) {
 }
 
 void main() {
+  loadFrameBlocks();
   ivec2 pixel = screenPixel();
   if (pixel.x < 0) return;
   vec4 wsPosition = imageLoad(wsPositionImage, pixel);

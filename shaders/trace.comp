@@ -1,5 +1,6 @@
 // Stage `trace`, deferred form (thesis Algorithm 1, step 3): per G-buffer pixel, n x n rays
 // through the light's depth layers.
+#define UNIFORM_BLOCKS_LOADED_AT_START  // frame.glsl: why
 #include "shared/screen_pass.glsl"
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
@@ -32,6 +33,8 @@ ivec2 tracedPixel() {
 }
 
 void main() {
+  loadFrameBlocks();
+  loadTraceBlock();
   ivec2 pixel = tracedPixel();
   if (pixel.x < 0) return;
   gRecording = uPixels == TRACE_PIXELS_RECORDED;

@@ -9,7 +9,15 @@
 #include "minmax.glsl"
 #include "trace_layout.h"
 
-layout(std140, binding = TRACE_PARAMS_BINDING) uniform TraceBlock { TraceParams trace; };
+// The trace's parameters, loaded by main() first thing (loadTraceBlock): the searches read
+// them inside loops, where a uniform block costs a lane-by-lane read per use on llvmpipe
+// (frame.glsl, UNIFORM_BLOCKS_LOADED_AT_START).
+layout(std140, binding = TRACE_PARAMS_BINDING) uniform TraceBlock { TraceParams traceBlock; };
+TraceParams trace;
+void loadTraceBlock() {
+  trace = TraceParams(traceBlock.config, traceBlock.switches, traceBlock.limits,
+                      traceBlock.stepping, traceBlock.record, traceBlock.eye);
+}
 layout(std430, binding = TRACE_RECORDS_BINDING) buffer TraceRecords { uvec4 recordHeader; TraceStep records[]; };
 layout(std430, binding = TRACE_TOTALS_BINDING) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
 
