@@ -56,6 +56,8 @@ void main() {
     if (uPixels != TRACE_PIXELS_RECORDED) addTotals(counts, uint(trace.config.x * trace.config.x));
   }
   imageStore(visibilityImage, pixel, vec4(visibility));
+#if TRACE_COST  // 0 where nobody shows or exports the cost (stages/monte_carlo/trace.cpp)
   imageStore(costImage, pixel, vec4(float(gFetches), float(gIterations), float(counts.searched),
                                     float(counts.backface + counts.inside + counts.region)));
+#endif
 }

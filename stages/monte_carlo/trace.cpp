@@ -161,7 +161,14 @@ public:
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
-    GlTexture& cost = frame.output(*this, "cost", w, h);
+    // Demand (issue 14): the deferred pass writes the per-pixel cost only when someone shows
+    // or exports it (an RGBA32F store per traced pixel and a clear of the image: trace 0.92
+    // without the store); the totals below are counted either way. The forward pass writes
+    // it as a second colour output, nearly free.
+    const bool deferred = param("deferred").asBool();
+    const bool costWanted = !deferred || frame.wanted(name() + ".cost");
+    if (!costWanted) frame.textures.erase(name() + ".cost");
+    GlTexture* cost = costWanted ? &frame.output(*this, "cost", w, h) : nullptr;
     const GlTexture& levels = frame.input(*this, "levels");
     const GlTexture& nearLayer = frame.input(*this, "near");
 
@@ -212,11 +219,11 @@ public:
 
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
-    if (param("deferred").asBool()) {
-      runDeferred(frame, visibility, cost, deferred_[specialization(params, frame, false)],
-                  recording ? &deferred_[specialization(params, frame, true)] : nullptr);
+    if (deferred) {
+      runDeferred(frame, visibility, cost, deferred_[specialization(params, frame, false, cost)],
+                  recording ? &deferred_[specialization(params, frame, true, cost)] : nullptr);
     } else {
-      runForward(frame, visibility, cost, forward_[specialization(params, frame, recording)]);
+      runForward(frame, visibility, *cost, forward_[specialization(params, frame, recording, cost)]);
     }
 
     // 5. Totals and the recorded steps.
@@ -239,12 +246,14 @@ private:
   // With classification, only the pixels classify listed are dispatched (64 per group, in
   // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
   // Then the recorded pixel once more, alone, with its steps (any class).
-  void runDeferred(Frame& frame, GlTexture& visibility, GlTexture& cost, ShaderProgram& pass,
+  // cost: null where nobody asked for it (the pass is compiled without its store).
+  void runDeferred(Frame& frame, GlTexture& visibility, GlTexture* cost, ShaderProgram& pass,
                    ShaderProgram* recordingPass) {
     pass.use();
     glBindImageTexture(TRACE_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_R32F);
-    glBindImageTexture(TRACE_COST_IMAGE, cost.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    if (cost)
+      glBindImageTexture(TRACE_COST_IMAGE, cost->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     if (param("use_classification").asBool()) {
       dispatchListed(frame, visibility, cost);
     } else {
@@ -259,10 +268,10 @@ private:
     }
   }
 
-  void dispatchListed(Frame& frame, GlTexture& visibility, GlTexture& cost) {
+  void dispatchListed(Frame& frame, GlTexture& visibility, GlTexture* cost) {
     const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
     glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
-    glClearTexImage(cost.id(), 0, GL_RGBA, GL_FLOAT, zeros);
+    if (cost) glClearTexImage(cost->id(), 0, GL_RGBA, GL_FLOAT, zeros);
     // The list's header holds its length (penumbra + umbra pixels; classify_layout.h).
     const GlBuffer& tracedPixels = frame.inputBuffer(*this, "tracedPixels");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
@@ -319,11 +328,12 @@ private:
   // search, layer count and sample hash of this run, and compiled without the step records
   // or, for the recorded pixel, with them.
   std::string specialization(const gpu::TraceParams& params, const Frame& frame,
-                             bool recording) const {
+                             bool recording, const GlTexture* cost) const {
     return "#define TRACE_HIERARCHY " + std::to_string(params.limits.z) +
            "\n#define TRACE_SEARCH " + std::to_string(params.config.z) +
            "\n#define TRACE_LAYERS " + std::to_string(params.config.w) +
-           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") + "\n" +
+           "\n#define TRACE_RECORDING " + (recording ? "1" : "0") +
+           "\n#define TRACE_COST " + (cost ? "1" : "0") + "\n" +
            hashSpecialization(frame.light.hashKind);
   }
   ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};

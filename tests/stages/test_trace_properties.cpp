@@ -187,3 +187,35 @@ TEST(TraceVersusHardShadow, PointLightGivesTheHardShadow) {
     EXPECT_LT(differ, int(0.01 * traced.size())) << name << ": " << differ << " pixels differ";
   }
 }
+
+// Demand: a run that asks only for the composite writes no cost image (the deferred pass is
+// compiled without its store) and changes no result: the same composite, visibility and
+// counters to the last bit, with and without a recorded pixel; asked for, the cost is there.
+TEST(TraceDemand, CostNotAskedForIsNotWrittenAndChangesNoResult) {
+  auto traceCounters = [](const Frame& frame) {
+    std::map<std::string, double> trace;
+    for (const auto& [name, value] : frame.counters)
+      if (name.rfind("trace.", 0) == 0) trace[name] = value;
+    return trace;
+  };
+  for (const std::string record : {"trace.record_x=-1", "trace.record_x=40"}) {
+    PipelineRun run(makeBuiltinScene("cube"),
+                    {"light.resolution=128", "trace.rays=2", "trace.search=hierarchical", record,
+                     "trace.record_y=30"},
+                    96, 72);
+    const auto composite = run.read("composite.color");
+    const auto visibility = run.read("trace.visibility");
+    const auto counters = traceCounters(*run.frame);
+    ASSERT_GT(counters.at("trace.fetches"), 0.0);
+    const size_t steps = run.frame->traceSteps.size();
+    ASSERT_TRUE(run.frame->has("trace.cost"));
+    run.pipeline->run(*run.frame, {"composite.color"});
+    EXPECT_FALSE(run.frame->has("trace.cost")) << record;
+    EXPECT_EQ(run.read("composite.color"), composite) << record;
+    EXPECT_EQ(run.read("trace.visibility"), visibility) << record;
+    EXPECT_EQ(traceCounters(*run.frame), counters) << record;
+    EXPECT_EQ(run.frame->traceSteps.size(), steps) << record;
+    run.pipeline->run(*run.frame, {"trace.cost"});
+    EXPECT_TRUE(run.frame->has("trace.cost")) << record;
+  }
+}
