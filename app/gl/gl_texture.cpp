@@ -41,8 +41,8 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
     throw;
   }
   // Exact values: every read is a texelFetch, an imageLoad, a nearest sample or a gather.
-  // Clamped to the edge: the gathers of light_layers_risers.comp and minmax_level.frag rely
-  // on it at the map's borders (a clamped texel repeats one already read).
+  // Clamped to the edge: the gathers of minmax_level.frag rely on it at the map's borders (a
+  // clamped texel repeats one already read).
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
