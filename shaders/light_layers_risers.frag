@@ -8,16 +8,15 @@
 // tilted up to ~80 degrees, not another occluder), which closes every riser: the shallower
 // step of each pair now spans the gap. Texels of closed or thick occluders (far > near), and
 // texels with no occluder, keep what the far pass wrote.
-// A fragment shader over the texels the occluders cover (drawn once more with scene.vert),
-// discarding every texel but a sheet's (issue 14): a compute pass over every texel was 43 of
-// the stage's 50 ms at 2048^2 on cube, and a fragment pass over every texel that discarded
-// at once still about 30; llvmpipe leaves the shader once all lanes have discarded, and a
-// discarded fragment writes nothing.
+// A fragment shader over the rectangle of the map the occluders can cover
+// (app/gl/screen_triangle.h), discarding every texel but a sheet's (issue 14): llvmpipe
+// leaves the shader once all lanes have discarded, and a discarded fragment writes nothing
+// (a compute pass that rewrote every texel was 43 of the stage's 50 ms at 2048^2 on cube).
 #define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/frame.glsl"
 #include "shared/light_layers_layout.h"
 layout(binding = RISERS_NEAR_UNIT) uniform sampler2D nearLayer;
-layout(binding = RISERS_FAR_IMAGE, r32f) uniform readonly image2D farRasterized;
+layout(binding = RISERS_FAR_UNIT) uniform sampler2D farRasterized;  // the far pass's depth buffer
 layout(location = RISERS_CLOSE_LOCATION) uniform bool uCloseRisers;
 layout(location = 0) out float farOut;
 
@@ -26,9 +25,9 @@ const float kSheet = 1e-6, kMaxSlope = 6.0;
 bool isSheet(float nearDepth, float farDepth) { return farDepth >= nearDepth && farDepth - nearDepth <= kSheet; }
 
 void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy), last = imageSize(farRasterized) - 1;
+  ivec2 texel = ivec2(gl_FragCoord.xy), last = textureSize(farRasterized, 0) - 1;
   float nearDepth = texelFetch(nearLayer, texel, 0).r;
-  float farDepth = imageLoad(farRasterized, texel).r;
+  float farDepth = texelFetch(farRasterized, texel, 0).r;
   if (!uCloseRisers || !isSheet(nearDepth, farDepth)) discard;
   // One texel's width in world units at this depth, in lsDepth units.
   float z = lsDepthToZ(farDepth);
@@ -41,7 +40,7 @@ void main() {
   float raised = farDepth;
   for (int k = 0; k < 4; ++k) {
     ivec2 neighbour = clamp(texel + offsets[k], ivec2(0), last);
-    float n = texelFetch(nearLayer, neighbour, 0).r, f = imageLoad(farRasterized, neighbour).r;
+    float n = texelFetch(nearLayer, neighbour, 0).r, f = texelFetch(farRasterized, neighbour, 0).r;
     if (isSheet(n, f) && f - farDepth <= cap) raised = max(raised, f);
   }
   farOut = raised;
