@@ -22,7 +22,9 @@ layout(location = 0) out float farOut;
 
 const float kSheet = 1e-6, kMaxSlope = 6.0;
 
-bool isSheet(float nearDepth, float farDepth) { return farDepth >= nearDepth && farDepth - nearDepth <= kSheet; }
+bool isSheet(float nearDepth, float farDepth) {
+  return farDepth >= nearDepth && farDepth - nearDepth <= kSheet;
+}
 
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy), last = textureSize(farRasterized, 0) - 1;
@@ -31,7 +33,8 @@ void main() {
   if (!uCloseRisers || !isSheet(nearDepth, farDepth)) discard;
   // One texel's width in world units at this depth, in lsDepth units.
   float z = lsDepthToZ(farDepth);
-  float texelWorld = 2.0 * z * max(light.lightDepthRange.z, light.lightDepthRange.w) / float(last.x + 1);
+  float tanHalfFov = max(light.lightDepthRange.z, light.lightDepthRange.w);
+  float texelWorld = 2.0 * z * tanHalfFov / float(last.x + 1);
   float cap = kMaxSlope * texelWorld / (light.lightDepthRange.y - light.lightDepthRange.x);
   // The deepest neighbour (left, below, above, right) that is a sheet texel no more than
   // `cap` deeper. A neighbour past the map's border is the texel itself, which never raises

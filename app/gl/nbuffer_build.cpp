@@ -55,7 +55,8 @@ void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer
     if (texels == NBufferTexels::All) {
       screen_.draw(levels, level);
     } else {
-      const TexelSpan x = nbufferDistinctTexels(level, width), y = nbufferDistinctTexels(level, height);
+      const TexelSpan x = nbufferDistinctTexels(level, width);
+      const TexelSpan y = nbufferDistinctTexels(level, height);
       screen_.drawRect(levels, level, {x.first, y.first}, {x.count, y.count});
     }
   }

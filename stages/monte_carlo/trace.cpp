@@ -162,9 +162,9 @@ public:
     const int w = frame.eyeWidth, h = frame.eyeHeight;
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
     // Demand (issue 14): the deferred pass writes the per-pixel cost only when someone shows
-    // or exports it (an RGBA32F store per traced pixel and a clear of the image: trace 0.92
-    // without the store); the totals below are counted either way. The forward pass writes
-    // it as a second colour output, nearly free.
+    // or exports it (an RGBA32F store per traced pixel and a clear of the image: trace 0.83
+    // without them); the totals below are counted either way. The forward pass writes it as
+    // a second colour output, nearly free.
     const bool deferred = param("deferred").asBool();
     const bool costWanted = !deferred || frame.wanted(name() + ".cost");
     if (!costWanted) frame.textures.erase(name() + ".cost");
@@ -223,7 +223,8 @@ public:
       runDeferred(frame, visibility, cost, deferred_[specialization(params, frame, false, cost)],
                   recording ? &deferred_[specialization(params, frame, true, cost)] : nullptr);
     } else {
-      runForward(frame, visibility, *cost, forward_[specialization(params, frame, recording, cost)]);
+      runForward(frame, visibility, *cost,
+                 forward_[specialization(params, frame, recording, cost)]);
     }
 
     // 5. Totals and the recorded steps.

@@ -40,7 +40,8 @@ public:
     // windows (nbuffer.glsl); the border bands that repeat them are written when someone
     // shows or exports the levels.
     const bool whole = frame.wanted(name() + ".levels");
-    builder_.build(nearLayer, farLayer, levels, whole ? NBufferTexels::All : NBufferTexels::Distinct);
+    builder_.build(nearLayer, farLayer, levels,
+                   whole ? NBufferTexels::All : NBufferTexels::Distinct);
     if (!whole) frame.partial.insert(name() + ".levels");
     frame.counters["nbuffer.levels"] = count;
   }

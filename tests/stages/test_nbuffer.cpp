@@ -82,7 +82,8 @@ void checkDistinctTexels(int width, int height) {
   for (int level = 0; level < count; ++level) {
     const std::vector<float> gpu = levels.readFloats(level);
     const std::vector<float> expected = bruteForceLevel(layers, level);
-    const TexelSpan xs = nbufferDistinctTexels(level, width), ys = nbufferDistinctTexels(level, height);
+    const TexelSpan xs = nbufferDistinctTexels(level, width);
+    const TexelSpan ys = nbufferDistinctTexels(level, height);
     size_t mismatches = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
@@ -160,9 +161,11 @@ TEST(NBuffer, DistinctTexelsAreTheTexelsSearchesRead) {
       const TexelSpan span = nbufferDistinctTexels(level, size);
       ASSERT_EQ(int(read.size()), span.count) << "size " << size << " level " << level;
       EXPECT_EQ(*read.begin(), span.first) << "size " << size << " level " << level;
-      EXPECT_EQ(*read.rbegin(), span.first + span.count - 1) << "size " << size << " level " << level;
+      EXPECT_EQ(*read.rbegin(), span.first + span.count - 1)
+          << "size " << size << " level " << level;
       std::set<std::pair<int, int>> spanWindows, allWindows;
-      for (int x = span.first; x < span.first + span.count; ++x) spanWindows.insert(window1D(level, x, size));
+      for (int x = span.first; x < span.first + span.count; ++x)
+        spanWindows.insert(window1D(level, x, size));
       for (int x = 0; x < size; ++x) allWindows.insert(window1D(level, x, size));
       EXPECT_EQ(int(spanWindows.size()), span.count) << "a window twice, size " << size;
       EXPECT_EQ(spanWindows, allWindows) << "a window missing, size " << size << " level " << level;
@@ -254,7 +257,8 @@ TEST(NBufferStage, LevelsNotAskedForArePartialAndChangeNoResult) {
     EXPECT_FALSE(run.frame->has("nbuffer.levels")) << scene << " " << sets[0];
     EXPECT_THROW(run.frame->texture("nbuffer.levels"), std::runtime_error);
     EXPECT_EQ(run.read("composite.color"), everything) << scene << " " << sets[0] << " " << sets[1];
-    EXPECT_EQ(run.read("trace.visibility"), visibility) << scene << " " << sets[0] << " " << sets[1];
+    EXPECT_EQ(run.read("trace.visibility"), visibility)
+        << scene << " " << sets[0] << " " << sets[1];
     run.pipeline->run(*run.frame, {"composite.color", "nbuffer.levels"});
     EXPECT_TRUE(run.frame->has("nbuffer.levels"));
   }
