@@ -21,6 +21,8 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
   for (int v = 0; v < state.views.shownViews(); ++v)
     if (state.views.panels[v].output == key) shownIn += std::string("[") + "ABCD"[v] + "]";
   std::string size = state.session.pipeline.lastTime(stage.name()).ran ? "not written" : "not run";
+  // Written only where the stages after it read, as nobody showed it (Frame::partial).
+  if (state.session.frame && state.session.frame->partial.count(key)) size = "partial (not shown)";
   if (state.session.frame && state.session.frame->has(key)) {
     const GlTexture& texture = state.session.frame->texture(key);
     char text[96];
