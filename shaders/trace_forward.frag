@@ -16,13 +16,10 @@ void main() {
   vec3 n = normalize(wsNormal);
   if (!gl_FrontFacing) n = -n;
   int topLevel = trace.record.w;
-  // Either hierarchy's whole map: the top level's one window (for the N-buffer at the texel
-  // holding it, nbuffer.glsl).
-  ivec2 size = ivec2(light.mapSize.xy);
+  // Either hierarchy's whole map: the top level's one window.
   ivec2 topTexel = traceHierarchy() == HIERARCHY_MINMAX
                        ? ivec2(0)
-                       : ivec2(nbufferTexelForWindow(topLevel, 0, size.x),
-                               nbufferTexelForWindow(topLevel, 0, size.y));
+                       : nbufferWholeMapTexel(topLevel, ivec2(light.mapSize.xy));
   vec4 whole = hierarchyTexel(topTexel, topLevel);
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
   float visibility = 1.0;

@@ -14,8 +14,8 @@ float adaptiveBias(float z, vec3 wsNormal, vec3 wsToLight, float minCosine) {
 // the box's own near/far interval and were blocked. The full offset is light.bias.w texel
 // widths at the point's depth.
 // `pointZ` below is the point's distance along the light axis, lightMapCoords(wsPosition).z:
-// the caller computes it once (a matrix product is dear on llvmpipe, and a product inside
-// classify's loop is not hoisted out of it by the compiler).
+// the caller computes it once (classification needed it up to five times, twice inside a
+// loop the compiler does not hoist it out of).
 float fullNormalOffset(float pointZ) {
   float tanHalfFov = max(light.lightDepthRange.z, light.lightDepthRange.w);
   return light.bias.w * 2.0 * pointZ * tanHalfFov / float(light.mapSize.x);

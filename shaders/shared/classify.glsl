@@ -48,12 +48,10 @@ vec3 nbufferBoundsOverRect(readonly image2DArray levels, ivec2 lo, ivec2 hi) {
               max(max(a.z, b.z), max(c.z, d.z)));
 }
 
-// The bounds over the whole map: the coarsest level's one window, at the texel holding it.
+// The bounds over the whole map: the coarsest level's one window.
 vec3 nbufferWholeMap(readonly image2DArray levels) {
   ivec3 size = imageSize(levels);
-  int top = size.z - 1;
-  ivec2 texel = ivec2(nbufferTexelForWindow(top, 0, size.x), nbufferTexelForWindow(top, 0, size.y));
-  return imageLoad(levels, ivec3(texel, top)).xyz;
+  return imageLoad(levels, ivec3(nbufferWholeMapTexel(size.z - 1, size.xy), size.z - 1)).xyz;
 }
 
 // The same bounds from the min-max mipmap (issue 14): conservative, not exact. At the finest

@@ -37,3 +37,8 @@ ivec2 nbufferWindow1D(int level, int x, int size) {
 int nbufferTexelForWindow(int level, int lo, int size) {
   return min(clamp(lo, 0, max(size - (1 << level), 0)) + nbufferHalf(level), size - 1);
 }
+
+// The texel holding the coarsest level's one window, the whole map (level `top`).
+ivec2 nbufferWholeMapTexel(int top, ivec2 size) {
+  return ivec2(nbufferTexelForWindow(top, 0, size.x), nbufferTexelForWindow(top, 0, size.y));
+}
