@@ -7,7 +7,7 @@
 #include "shared/nbuffer.glsl"
 #include "shared/nbuffer_layout.h"
 layout(binding = NBUFFER_FINER_IMAGE, rgba32f) uniform readonly image2D finer;  // level n-1
-layout(location = NBUFFER_LEVEL_LOCATION) uniform int uLevel;                   // n >= 1
+layout(location = NBUFFER_LEVEL_LOCATION) uniform int uLevel;                   // n >= 2
 layout(location = 0) out vec4 coarser;                                          // level n
 
 void main() {

@@ -38,16 +38,16 @@ void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer
     throw std::invalid_argument("buildNBuffer: levels must be an RGBA32F array of " +
                                 std::to_string(width) + "x" + std::to_string(height) + "x" +
                                 std::to_string(count) + " (nbufferLevelCount)");
-  // Level 0: (near, near, far, 0).
-  level0_.use();
+  // Levels 0, (near, near, far, 0), and 1 from the layers, into two layers of the array.
+  levels01_.use();
   glBindTextureUnit(NBUFFER_NEAR_UNIT, nearLayer.id());
   glBindTextureUnit(NBUFFER_FAR_UNIT, farLayer.id());
-  screen_.draw(levels, 0);
+  screen_.drawLayers(levels, count > 1 ? std::vector<int>{0, 1} : std::vector<int>{0});
 
   // Level n from level n-1, read as a single-layer image of the same texture. The texture
   // barrier makes the previous draw's writes visible to this one's reads.
   level_.use();
-  for (int level = 1; level < count; ++level) {
+  for (int level = 2; level < count; ++level) {
     glTextureBarrier();
     glBindImageTexture(NBUFFER_FINER_IMAGE, levels.id(), 0, GL_FALSE, level - 1, GL_READ_ONLY,
                        GL_RGBA32F);

@@ -1,6 +1,6 @@
 // Building the N-buffer (thesis §3.5; layout in shaders/shared/nbuffer.glsl) from the near
-// and far light layers: level 0 copies the layers, level n takes the min/max of 4 texels of
-// level n-1. Reusable outside the `nbuffer` stage (tests, other stages).
+// and far light layers: level 0 copies the layers and level 1 takes the min/max of their
+// 2x2 texels (one pass), level n >= 2 the min/max of 4 texels of level n-1. Reusable outside the `nbuffer` stage (tests, other stages).
 #pragma once
 #include "gl/gl_texture.h"
 #include "gl/screen_triangle.h"
@@ -17,12 +17,13 @@ struct TexelSpan {
 };
 TexelSpan nbufferDistinctTexels(int level, int size);
 
-// Which texels of levels >= 1 a build writes: all, or only those holding distinct windows
+// Which texels of levels >= 2 a build writes: all, or only those holding distinct windows
 // (every read of the hierarchy goes to those; the stage writes all only when the levels are
-// shown or exported: issue 14, 29 % fewer texels over levels 1-9 at 512^2).
+// shown or exported: issue 14, 29 % fewer texels over levels 1-9 at 512^2). Levels 0 and 1
+// come from one pass over every texel either way.
 enum class NBufferTexels { All, Distinct };
 
-// Owns the two programs (fragment-shader passes, one per level); a stage keeps one so its
+// Owns the two programs (fragment-shader passes: levels 0 and 1 together, then one per level); a stage keeps one so its
 // programs die with it (before the GL context does).
 class NBufferBuilder {
 public:
@@ -33,8 +34,8 @@ public:
              NBufferTexels texels = NBufferTexels::All);
 
 private:
-  ShaderProgram level0_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                         {GL_FRAGMENT_SHADER, "nbuffer_level0.frag"}}};
+  ShaderProgram levels01_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
+                           {GL_FRAGMENT_SHADER, "nbuffer_levels01.frag"}}};
   ShaderProgram level_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
                         {GL_FRAGMENT_SHADER, "nbuffer_level.frag"}}};
   ScreenTriangle screen_;

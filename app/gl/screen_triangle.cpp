@@ -7,15 +7,28 @@ ScreenTriangle::~ScreenTriangle() {
 }
 
 void ScreenTriangle::draw(const std::vector<const GlTexture*>& targets, int layer) {
-  drawRect(targets, {0, 0}, {targets.at(0)->width(), targets.at(0)->height()}, layer);
+  std::vector<Target> layered;
+  for (const GlTexture* texture : targets) layered.push_back({texture, layer});
+  drawRect(layered, {0, 0}, {targets.at(0)->width(), targets.at(0)->height()});
 }
 
-void ScreenTriangle::drawRect(const GlTexture& target, glm::ivec2 origin, glm::ivec2 size) {
-  drawRect({&target}, origin, size, -1);
+void ScreenTriangle::drawLayers(const GlTexture& array, const std::vector<int>& layers) {
+  std::vector<Target> layered;
+  for (int layer : layers) layered.push_back({&array, layer});
+  drawRect(layered, {0, 0}, {array.width(), array.height()});
 }
 
-void ScreenTriangle::drawRect(const std::vector<const GlTexture*>& targets, glm::ivec2 origin,
-                              glm::ivec2 size, int layer) {
+void ScreenTriangle::clearAndDraw(const std::vector<const GlTexture*>& targets,
+                                  const std::vector<glm::vec4>& clearTo) {
+  if (clearTo.size() != targets.size())
+    throw std::invalid_argument("ScreenTriangle: one clear value per target");
+  std::vector<Target> whole;
+  for (const GlTexture* texture : targets) whole.push_back({texture, -1});
+  drawRect(whole, {0, 0}, {targets.at(0)->width(), targets.at(0)->height()}, clearTo);
+}
+
+void ScreenTriangle::drawRect(const std::vector<Target>& targets, glm::ivec2 origin,
+                              glm::ivec2 size, const std::vector<glm::vec4>& clearTo) {
   constexpr int kMaxTargets = 8;  // GL 4.5 guarantees 8 draw buffers
   if (targets.empty() || targets.size() > kMaxTargets)
     throw std::invalid_argument("ScreenTriangle: 1 to 8 targets");
@@ -23,11 +36,12 @@ void ScreenTriangle::drawRect(const std::vector<const GlTexture*>& targets, glm:
   GLenum buffers[kMaxTargets];
   for (int i = 0; i < kMaxTargets; ++i) {
     const GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + i);
-    const GLuint texture = i < int(targets.size()) ? targets[size_t(i)]->id() : 0;
-    if (layer < 0 || texture == 0)
+    const Target target = i < int(targets.size()) ? targets[size_t(i)] : Target{nullptr, -1};
+    const GLuint texture = target.texture ? target.texture->id() : 0;
+    if (target.layer < 0 || texture == 0)
       glNamedFramebufferTexture(framebuffer_.id(), attachment, texture, 0);
     else
-      glNamedFramebufferTextureLayer(framebuffer_.id(), attachment, texture, 0, layer);
+      glNamedFramebufferTextureLayer(framebuffer_.id(), attachment, texture, 0, target.layer);
     buffers[i] = attachment;
   }
   glNamedFramebufferDrawBuffers(framebuffer_.id(), GLsizei(targets.size()), buffers);
@@ -38,6 +52,8 @@ void ScreenTriangle::drawRect(const std::vector<const GlTexture*>& targets, glm:
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
+  for (size_t i = 0; i < clearTo.size(); ++i)
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, GLint(i), &clearTo[i].x);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -10,7 +10,9 @@
 // lost, and every value is exact, not merely conservative). Per axis, with a_n = 2^n / 2
 // (a_0 = 0):  lo = clamp(x - a_n, 0, max(W - 2^n, 0)),  window = [lo, min(lo + 2^n, W) - 1].
 // Level n is built from level n-1 by 4 fetches per texel, at lo + a_{n-1} and
-// lo + 2^(n-1) + a_{n-1} per axis (clamped to the map), whose windows tile this one.
+// lo + 2^(n-1) + a_{n-1} per axis (clamped to the map), whose windows tile this one;
+// level 1 (and level 0) straight from the layers' 2x2 texels, in one pass
+// (nbuffer_levels01.frag).
 //
 // A search that wants the level-n window starting at texel `lo` (or ending at it) asks for
 // the texel lo + a_n: nbufferTexelForWindow below. Texels outside the map are empty: the
@@ -21,7 +23,8 @@
 // the map); the bands of a_n texels at the borders repeat the border windows. Every read of
 // the hierarchy (searches, classification, the next level's build) goes through
 // nbufferTexelForWindow, so where nobody shows or exports the levels the `nbuffer` stage
-// writes the distinct texels only (NBufferTexels::Distinct, app/gl/nbuffer_build.h).
+// writes the distinct texels only (NBufferTexels::Distinct, app/gl/nbuffer_build.h) from
+// level 2 on (levels 0 and 1 are one pass over every texel).
 
 int nbufferHalf(int level) { return level == 0 ? 0 : 1 << (level - 1); }
 

@@ -117,12 +117,9 @@ public:
     // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
     // (§3.4) they can, so it is off there.
     glUniform1i(CLASSIFY_UMBRA_TEST_LOCATION, param("umbra").asBool() && frame.light.layers < 3);
-    // Background pixels keep these values (classify.frag discards them).
+    // Background pixels keep the values cleared first (classify.frag discards them).
     static_assert(CLASS_BACKGROUND == 0);
-    const float background[4] = {0, 0, 0, 0};
-    glClearTexImage(mask.id(), 0, GL_RED, GL_FLOAT, background);
-    glClearTexImage(zRange.id(), 0, GL_RGBA, GL_FLOAT, background);
-    screen_.draw({&mask, &zRange});
+    screen_.clearAndDraw({&mask, &zRange}, {glm::vec4(0), glm::vec4(0)});
 
     // 2. The counts and the list of pixels that need rays (classify_list.comp).
     const gpu::ClassifyCounts zero{};

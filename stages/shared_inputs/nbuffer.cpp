@@ -15,9 +15,9 @@ public:
     };
     outputs_ = {{"levels",
                  "N-buffer: layer n holds min/max light depths over a 2^n x 2^n window "
-                 "around each texel (x: min near, y: max near, z: max far). The texels "
-                 "whose window repeats a border window (2^(n-1) wide bands) are written "
-                 "only when the levels are shown or exported: nothing reads them.",
+                 "around each texel (x: min near, y: max near, z: max far). From level 2 "
+                 "on, the texels whose window repeats a border window (2^(n-1) wide bands) "
+                 "are written only when the levels are shown or exported: nothing reads them.",
                  GL_RGBA32F,
                  {"zNearMin", "zNearMax", "zFarMax", "unused"},
                  {0, 0, 1, Colormap::Gray},

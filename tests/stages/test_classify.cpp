@@ -312,6 +312,22 @@ TEST(Classify, CountersAddUpAndMatchTheMaskAndTheBounds) {
   EXPECT_GT(histogram[kClassOutside], 0);  // the ground reaches past the light's frustum
 }
 
+// The class and bounds are cleared to background (all 0) by a clear of the framebuffer the
+// pass draws into (ScreenTriangle::clearAndDraw), and background fragments are discarded: a
+// second run into the same textures, filled with a sentinel first, gives the same images.
+TEST(Classify, BackgroundIsClearedInTexturesReused) {
+  PipelineRun run(makeBuiltinScene("spheres"), {"light.resolution=128"}, 120, 90);
+  const auto mask = run.read("classify.mask");
+  const auto zRange = run.read("classify.zRange");
+  ASSERT_GT(std::count(mask.begin(), mask.end(), float(kClassBackground)), 0);
+  const float sentinel[4] = {-7, -7, -7, -7};
+  glClearTexImage(run.frame->texture("classify.mask").id(), 0, GL_RED, GL_FLOAT, sentinel);
+  glClearTexImage(run.frame->texture("classify.zRange").id(), 0, GL_RGBA, GL_FLOAT, sentinel);
+  run.pipeline->run(*run.frame, {"classify.mask", "classify.zRange"});
+  EXPECT_EQ(run.read("classify.mask"), mask);
+  EXPECT_EQ(run.read("classify.zRange"), zRange);
+}
+
 namespace {
 
 // Each iteration (Eq 3.3) only tightens the bounds: pixels move out of penumbra, never in.
