@@ -16,19 +16,20 @@ layout(location = 1) out vec4 level1;
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   ivec2 size = textureSize(nearLayer, 0);
-  // 1. The level-1 window [lo, hi] per axis (lo == hi on an axis one texel wide).
-  ivec2 rangeX = nbufferWindow1D(1, texel.x, size.x), rangeY = nbufferWindow1D(1, texel.y, size.y);
-  ivec2 lo = ivec2(rangeX.x, rangeY.x), hi = ivec2(rangeX.y, rangeY.y);
-  // 2. Its four texels in both layers.
-  vec4 near = vec4(texelFetch(nearLayer, lo, 0).r, texelFetch(nearLayer, ivec2(hi.x, lo.y), 0).r,
-                   texelFetch(nearLayer, ivec2(lo.x, hi.y), 0).r, texelFetch(nearLayer, hi, 0).r);
-  vec4 far = vec4(texelFetch(farLayer, lo, 0).r, texelFetch(farLayer, ivec2(hi.x, lo.y), 0).r,
-                  texelFetch(farLayer, ivec2(lo.x, hi.y), 0).r, texelFetch(farLayer, hi, 0).r);
-  // 3. Level 0: this texel is lo or hi on each axis (selects, not a variable index: llvmpipe
-  //    would index lane by lane).
-  bvec2 atHi = equal(texel, hi);
-  vec2 nearFar = atHi.y ? (atHi.x ? vec2(near.w, far.w) : vec2(near.z, far.z))
-                        : (atHi.x ? vec2(near.y, far.y) : vec2(near.x, far.x));
+  // 1. The level-1 window's first texel per axis, lo; the window is lo and lo + 1 (one texel
+  //    on an axis one texel wide).
+  ivec2 lo = ivec2(nbufferWindow1D(1, texel.x, size.x).x, nbufferWindow1D(1, texel.y, size.y).x);
+  // 2. Its four texels in each layer, one gather around their common corner lo + 1 (gathers
+  //    cost about what one fetch does on llvmpipe; as in minmax_level.frag). Components:
+  //    x (lo.x, lo.y+1), y (lo.x+1, lo.y+1), z (lo.x+1, lo.y), w (lo.x, lo.y); on an axis
+  //    one texel wide the texel clamped to the edge (gl_texture.cpp) repeats the one there.
+  vec2 corner = vec2(lo + 1) / vec2(size);
+  vec4 near = textureGather(nearLayer, corner), far = textureGather(farLayer, corner);
+  // 3. Level 0: this texel is one of the four (selects, not a variable index: llvmpipe would
+  //    index lane by lane).
+  bvec2 second = greaterThan(texel, lo);
+  vec2 nearFar = second.y ? (second.x ? vec2(near.y, far.y) : vec2(near.x, far.x))
+                          : (second.x ? vec2(near.z, far.z) : vec2(near.w, far.w));
   level0 = vec4(nearFar.x, nearFar.x, nearFar.y, 0.0);
   // 4. Level 1.
   level1 = vec4(min(min(near.x, near.y), min(near.z, near.w)),
