@@ -4,7 +4,9 @@
 // visibility finds; and most of a shadowed scene is skipped.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@ constexpr int kTile = 8;
 // the CPU from the filter's input.
 struct TileCount {
   int tiles = 0, pixels = 0;
+  std::vector<std::uint32_t> listed;  // x | y << 16 in tile units, in scan order
 };
 TileCount expectedTiles(const std::vector<float>& visibility, int w, int h, int radius) {
   TileCount count;
@@ -39,6 +42,7 @@ TileCount expectedTiles(const std::vector<float>& visibility, int w, int h, int 
         }
       if (other || (zero && one)) {
         ++count.tiles;
+        count.listed.push_back(std::uint32_t(tx) | (std::uint32_t(ty) << 16));
         count.pixels += std::min(kTile, w - tx * kTile) * std::min(kTile, h - ty * kTile);
       }
     }
@@ -110,6 +114,35 @@ INSTANTIATE_TEST_SUITE_P(
                       FilterCase{"engine", {"trace.use_classification=false",
                                             "filter.normal_sensitive=true",
                                             "filter.depth_scale=500"}}));
+
+// The tile list on made-up visibilities: ones with a few scattered zeros and halves, so a
+// value just outside a tile's grown window (where the window is clipped at the image's edge
+// to an odd width, or ends inside the image) changes the answer. The filter stage runs
+// alone on the trace's output texture, overwritten; its list must be the CPU count's set.
+TEST(FilterTileList, EqualsTheCpuCountOnScatteredValues) {
+  const int w = 203, h = 150;  // neither a multiple of the tile
+  PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128"}, w, h);
+  std::mt19937 random(7);
+  for (int radius : {1, 2, 3, 5, 8, 13}) {
+    std::vector<float> visibility(size_t(w) * h, 1.0f);
+    for (int k = 0; k < 40; ++k)
+      visibility[random() % visibility.size()] = k % 2 ? 0.0f : 0.5f;
+    glTextureSubImage2D(run.frame->texture("trace.visibility").id(), 0, 0, 0, w, h, GL_RED,
+                        GL_FLOAT, visibility.data());
+    ASSERT_EQ(run.pipeline->set("filter.radius=" + std::to_string(radius)), "");
+    run.pipeline->stage("filter").run(*run.frame);
+    const TileCount expected = expectedTiles(visibility, w, h, radius);
+    EXPECT_EQ(run.frame->counters.at("filter.tiles"), expected.tiles) << "radius " << radius;
+    EXPECT_EQ(run.frame->counters.at("filter.pixels"), expected.pixels) << "radius " << radius;
+    std::vector<std::uint32_t> listed(size_t(expected.tiles));
+    glGetNamedBufferSubData(run.frame->buffers.at("filter.tiles")->id(), 16,
+                            GLsizeiptr(listed.size() * 4), listed.data());
+    std::sort(listed.begin(), listed.end(), [](std::uint32_t a, std::uint32_t b) {
+      return (a >> 16) != (b >> 16) ? (a >> 16) < (b >> 16) : (a & 0xFFFFu) < (b & 0xFFFFu);
+    });
+    EXPECT_EQ(listed, expected.listed) << "radius " << radius;
+  }
+}
 
 // Most of a shadowed scene is lit or umbra far from any penumbra: the count the speed-up
 // rests on (cube, 640 x 480, the window's defaults).
