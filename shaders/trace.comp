@@ -14,33 +14,44 @@ layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
   uint listPadding[3];
   uint tracedPixels[];
 };
+layout(std430, binding = TRACE_PARTIALS_BINDING) writeonly buffer TracePartials {
+  uvec4 partials[];  // one per pixel (trace_layout.h)
+};
 // TRACE_PIXELS_ALL: every pixel (rows from uRowOffset); _LISTED: the pixels classify listed
 // (penumbra, umbra; uRowOffset = the band's first group), everything else was cleared to
 // visibility 1 beforehand; _RECORDED: the recorded pixel alone, with its steps (the
 // variant compiled with TRACE_RECORDING 1; the others compile the records out).
 layout(location = TRACE_PIXELS_LOCATION) uniform int uPixels;
 
-ivec2 tracedPixel() {
-  if (uPixels == TRACE_PIXELS_ALL) return screenPixel();
+// The pixel, and the index of its record of counts (trace_layout.h).
+ivec2 tracedPixel(out uint record) {
+  record = 0u;
+  if (uPixels == TRACE_PIXELS_ALL) {
+    ivec2 pixel = screenPixel();
+    record = uint(pixel.y) * frame.sizes.x + uint(pixel.x);
+    return pixel;
+  }
   if (uPixels == TRACE_PIXELS_RECORDED) {  // nothing where the recorded pixel is off the image
     bool inImage = all(lessThan(uvec2(trace.record.xy), frame.sizes.xy));
     return gl_LocalInvocationIndex == 0u && inImage ? trace.record.xy : ivec2(-1);
   }
-  uint index = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
-  if (index >= listCount) return ivec2(-1);
-  uint xy = tracedPixels[index];
+  record = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
+  if (record >= listCount) return ivec2(-1);
+  uint xy = tracedPixels[record];
   return ivec2(int(xy & 0xFFFFu), int(xy >> 16));
 }
 
 void main() {
   loadFrameBlocks();
   loadTraceBlock();
-  ivec2 pixel = tracedPixel();
+  uint record;
+  ivec2 pixel = tracedPixel(record);
   if (pixel.x < 0) return;
   gRecording = uPixels == TRACE_PIXELS_RECORDED;
   vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
   float visibility = 1.0;
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
+  uint rays = 0u;
   int pixelClass = int(imageLoad(classMask, pixel).r);
   if (wsPosition.w == 0.0 || pixelClass == CLASS_OUTSIDE) {
     visibility = 1.0;  // background, or outside the light's frustum: nothing known blocks it
@@ -51,9 +62,15 @@ void main() {
     vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
     vec4 zRange = imageLoad(zRangeImage, pixel);  // zNearMin, zNearMax, zFarMax, lsDepth
     visibility = traceVisibility(wsPosition.xyz, wsNormal, pixel, zRange.xz, counts);
-    // The recorded pixel's second trace is not counted again (the pass over every pixel,
-    // or over the listed ones, counted it).
-    if (uPixels != TRACE_PIXELS_RECORDED) addTotals(counts, uint(trace.config.x * trace.config.x));
+    rays = uint(trace.config.x * trace.config.x);
+  }
+  // The pixel's counts (zero where it traced nothing), for trace_totals.comp. The recorded
+  // pixel's second trace is not counted again (the pass over every pixel, or over the
+  // listed ones, counted it).
+  if (uPixels != TRACE_PIXELS_RECORDED) {
+    partials[record] =
+        uvec4(rays | (counts.searched << TRACE_COUNT_BITS) | (counts.backface << (2 * TRACE_COUNT_BITS)),
+              counts.inside | (counts.region << TRACE_COUNT_BITS), gFetches, gIterations);
   }
   imageStore(visibilityImage, pixel, vec4(visibility));
 #if TRACE_COST  // 0 where nobody shows or exports the cost (stages/monte_carlo/trace.cpp)

@@ -26,7 +26,8 @@ static_assert(gpu::distinctBelow({TRACE_VISIBILITY_IMAGE, TRACE_COST_IMAGE, TRAC
                                   TRACE_ZRANGE_IMAGE}, gpu::kImageUnits));
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, TRACE_PARAMS_BINDING},
                                  gpu::kUniformBindings));
-static_assert(gpu::distinctBelow({TRACE_RECORDS_BINDING, TRACE_TOTALS_BINDING, 3 /* list */},
+static_assert(gpu::distinctBelow({TRACE_RECORDS_BINDING, TRACE_TOTALS_BINDING,
+                                  TRACE_PARTIALS_BINDING, 3 /* list */},
                                  gpu::kStorageBindings));
 static_assert(TRACE_PIXELS_LOCATION != 0 /* ROW_OFFSET_LOCATION */);
 

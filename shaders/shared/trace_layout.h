@@ -6,6 +6,17 @@
 #define TRACE_PARAMS_BINDING 1    // uniform: TraceParams
 #define TRACE_RECORDS_BINDING 0   // storage: uvec4 header (x = count), TraceStep[]
 #define TRACE_TOTALS_BINDING 1    // storage: uint[TOTAL_COUNT]
+// trace.comp writes each pixel's counts as one uvec4 record where an atomicAdd per total
+// and pixel cost 2.2 of the deferred trace's 11.9 ms on llvmpipe (issue 14; it runs atomics
+// lane by lane); trace_totals.comp adds the records up into the totals, a few records per
+// invocation. Record: x = rays | searched << 10 | early backface << 20, y = early inside |
+// early region << 10 (each at most the pixel's rays, TRACE_COUNT_BITS wide), z = fetches,
+// w = iterations. Record index: the pixel's place in classify's list, or y * width + x where
+// every pixel is traced. (trace_forward.frag keeps the atomics.)
+#define TRACE_PARTIALS_BINDING 2  // storage: uvec4 per pixel
+#define TRACE_COUNT_BITS 10       // > 2 log2(the most rays per side)
+#define TRACE_TOTALS_RECORDS_LOCATION 0      // trace_totals.comp: records to add up
+#define TRACE_TOTALS_RECORDS_PER_INVOCATION 64
 // (storage CLASSIFY_LIST_BINDING: the pixel list of classify_layout.h)
 // What the rays read is read through image units where it can: on llvmpipe an imageLoad
 // costs a third of a texelFetch (bench/llvmpipe-reads). The near layer is a depth texture,

@@ -22,6 +22,10 @@ namespace gpu {
 // light.layers' index + 1 the layer count: the option lists below are in this order.
 static_assert(SEARCH_LINEAR == 0 && SEARCH_LINEAR_BINARY == 1 && SEARCH_HIERARCHICAL == 2);
 static_assert(SAMPLING_JITTERED == 0 && SAMPLING_RANDOM == 1);
+// trace.rays' upper bound (auto's too: app/scene/auto_settings.cpp stops at 8): a pixel's
+// counts of rays, searched rays and early outs fit the record's fields (trace_layout.h).
+constexpr int kMaxRaysPerSide = 8;
+static_assert(kMaxRaysPerSide * kMaxRaysPerSide < (1 << TRACE_COUNT_BITS));
 
 namespace {
 
@@ -84,7 +88,7 @@ public:
         Param::integerOrAuto("rays", "Rays per pixel along each side of the light: n x n rays "
                                      "(§3.1). auto: more where the smallest penumbra in view is "
                                      "too narrow for the filter to average (auto.* counters).",
-                             2, 1, 8),
+                             2, 1, kMaxRaysPerSide),
         Param::choice("sampling", "jittered: one random sample in each cell of an n x n grid on "
                                   "the light; random: anywhere on the light (§3.1, Fig 3.3).",
                       {"jittered", "random"}, 0),
@@ -247,21 +251,35 @@ private:
 
   // With classification, only the pixels classify listed are dispatched (64 per group, in
   // bands for responsiveness); the rest is cleared to "lit" first. Without it, every pixel.
-  // Then the recorded pixel once more, alone, with its steps (any class).
+  // Each writes its counts as a record, which trace_totals.comp then adds up into the
+  // totals. Then the recorded pixel once more, alone, with its steps (any class).
   // cost: null where nobody asked for it (the pass is compiled without its store).
   void runDeferred(Frame& frame, GlTexture& visibility, GlTexture* cost, ShaderProgram& pass,
                    ShaderProgram* recordingPass) {
+    const size_t recordBytes = 4 * sizeof(std::uint32_t);  // a uvec4 per pixel
+    const size_t partialsBytes = size_t(frame.eyeWidth) * frame.eyeHeight * recordBytes;
+    if (partialsBytes != partialsBytes_) partialsBuffer_.upload(nullptr, partialsBytes);
+    partialsBytes_ = partialsBytes;
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, TRACE_PARTIALS_BINDING, partialsBuffer_.id());
     pass.use();
     glBindImageTexture(TRACE_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                        GL_R32F);
     if (cost)
       glBindImageTexture(TRACE_COST_IMAGE, cost->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    std::uint32_t records = 0;
     if (param("use_classification").asBool()) {
-      dispatchListed(frame, visibility, cost);
+      records = dispatchListed(frame, visibility, cost);
     } else {
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_ALL);
       dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      records = std::uint32_t(frame.eyeWidth) * std::uint32_t(frame.eyeHeight);
     }
+    totalsProgram_.use();
+    glUniform1ui(TRACE_TOTALS_RECORDS_LOCATION, records);
+    const std::uint32_t perGroup = 64 * TRACE_TOTALS_RECORDS_PER_INVOCATION;
+    if (records > 0) glDispatchCompute((records + perGroup - 1) / perGroup, 1, 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
     if (recordingPass) {
       recordingPass->use();
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
@@ -270,7 +288,8 @@ private:
     }
   }
 
-  void dispatchListed(Frame& frame, GlTexture& visibility, GlTexture* cost) {
+  // Returns the number of listed pixels.
+  std::uint32_t dispatchListed(Frame& frame, GlTexture& visibility, GlTexture* cost) {
     const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
     glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
     if (cost) glClearTexImage(cost->id(), 0, GL_RGBA, GL_FLOAT, zeros);
@@ -286,6 +305,7 @@ private:
       glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
     }
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    return listed;
   }
 
   // Every fragment traces its rays; with a recorded pixel, `pass` is the variant with step
@@ -339,9 +359,12 @@ private:
            hashSpecialization(frame.light.hashKind);
   }
   ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
+  ShaderProgram totalsProgram_{{{GL_COMPUTE_SHADER, "trace_totals.comp"}}};
   ShaderVariants forward_{
       {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
+  GlBuffer partialsBuffer_;  // the deferred pass's per-pixel counts (trace_layout.h)
+  size_t partialsBytes_ = 0;
   bool buffersAllocated_ = false;
   GlFramebuffer framebuffer_;
   GlTexture forwardDepth_;

@@ -219,3 +219,40 @@ TEST(TraceDemand, CostNotAskedForIsNotWrittenAndChangesNoResult) {
     EXPECT_TRUE(run.frame->has("trace.cost")) << record;
   }
 }
+
+// The totals (trace.rays, .raysSearched, .fetches, .iterations, the early outs) are added up
+// from per-pixel records by a pass of their own (trace_totals.comp); the cost image holds the
+// same counts per pixel, written by the trace pass from its own registers. Its sums must equal
+// the totals, with the listed pixels and with every pixel (an eye of 203 x 150 pixels: no
+// multiple of the reduction's 64 records per invocation or 64 invocations per group), and
+// the rays must be n^2 per pixel that traced: penumbra with classification, every receiver
+// in the light's frustum without.
+TEST(TraceTotals, EqualTheCostImageSummedAndTheRaysPerTracedPixel) {
+  for (const char* classification : {"true", "false"})
+    for (const char* scene : {"cube", "spheres"}) {
+      const std::string where = std::string(scene) + ", classification " + classification;
+      PipelineRun run(makeBuiltinScene(scene),
+                      {"trace.rays=3", "light.resolution=256", "trace.deferred=true",
+                       std::string("trace.use_classification=") + classification},
+                      203, 150);
+      const auto cost = run.read("trace.cost");
+      double fetches = 0, iterations = 0, searched = 0, earlyOuts = 0;
+      for (size_t i = 0; i < cost.size(); i += 4)
+        fetches += cost[i], iterations += cost[i + 1], searched += cost[i + 2],
+            earlyOuts += cost[i + 3];
+      const auto& c = run.frame->counters;
+      EXPECT_EQ(c.at("trace.fetches"), fetches) << where;
+      EXPECT_EQ(c.at("trace.iterations"), iterations) << where;
+      EXPECT_EQ(c.at("trace.raysSearched"), searched) << where;
+      EXPECT_EQ(c.at("trace.earlyOutBackface") + c.at("trace.earlyOutInside") +
+                    c.at("trace.earlyOutRegion"),
+                earlyOuts)
+          << where;
+      EXPECT_GT(searched, 0.0) << where;
+      const double traced = std::string(classification) == "true"
+                                ? c.at("classify.penumbra")
+                                : c.at("classify.lit") + c.at("classify.penumbra") +
+                                      c.at("classify.umbra");
+      EXPECT_EQ(c.at("trace.rays"), 9 * traced) << where;
+    }
+}
