@@ -32,7 +32,7 @@ public:
   // The same after clearing target i to clearTo[i] (one value per target), as a clear of
   // the framebuffer the triangle is drawn into: llvmpipe then clears each tile as it shades
   // it, where glClearTexImage is a separate pass over memory on the calling thread
-  // (classification's two targets: 1.3 ms more per 640x480 frame, bench/llvmpipe-clears).
+  // (classification's two targets: 0.9-1.1 ms more per 640x480 frame, bench/llvmpipe-fixed-costs).
   void clearAndDraw(const std::vector<const GlTexture*>& targets,
                     const std::vector<glm::vec4>& clearTo);
   // The same over the texels [origin, origin + size) of one target only (the viewport).
