@@ -68,9 +68,10 @@ void main() {
   // pixel's second trace is not counted again (the pass over every pixel, or over the
   // listed ones, counted it).
   if (uPixels != TRACE_PIXELS_RECORDED) {
-    partials[record] =
-        uvec4(rays | (counts.searched << TRACE_COUNT_BITS) | (counts.backface << (2 * TRACE_COUNT_BITS)),
-              counts.inside | (counts.region << TRACE_COUNT_BITS), gFetches, gIterations);
+    uint early = counts.backface << (2 * TRACE_COUNT_BITS);
+    partials[record] = uvec4(rays | (counts.searched << TRACE_COUNT_BITS) | early,
+                             counts.inside | (counts.region << TRACE_COUNT_BITS), gFetches,
+                             gIterations);
   }
   imageStore(visibilityImage, pixel, vec4(visibility));
 #if TRACE_COST  // 0 where nobody shows or exports the cost (stages/monte_carlo/trace.cpp)

@@ -1,6 +1,7 @@
 // Building the N-buffer (thesis §3.5; layout in shaders/shared/nbuffer.glsl) from the near
 // and far light layers: level 0 copies the layers and level 1 takes the min/max of their
-// 2x2 texels (one pass), level n >= 2 the min/max of 4 texels of level n-1. Reusable outside the `nbuffer` stage (tests, other stages).
+// 2x2 texels (one pass), level n >= 2 the min/max of 4 texels of level n-1. Reusable
+// outside the `nbuffer` stage (tests, other stages).
 #pragma once
 #include "gl/gl_texture.h"
 #include "gl/screen_triangle.h"
@@ -23,8 +24,8 @@ TexelSpan nbufferDistinctTexels(int level, int size);
 // come from one pass over every texel either way.
 enum class NBufferTexels { All, Distinct };
 
-// Owns the two programs (fragment-shader passes: levels 0 and 1 together, then one per level); a stage keeps one so its
-// programs die with it (before the GL context does).
+// Owns the two programs (fragment-shader passes: levels 0 and 1 together, then one per
+// level); a stage keeps one so its programs die with it (before the GL context does).
 class NBufferBuilder {
 public:
   // nearLayer, farLayer: GL_DEPTH_COMPONENT32F (or any single-channel float) textures of the
