@@ -57,17 +57,25 @@ vec3 boundsOverRect(ivec2 lo, ivec2 hi, ivec2 mapSize) {
 // depth) can cross: the union of the two squares. For the points between a and b the
 // squares' corners move monotonically, so the union holds them too (within the 0.01-texel
 // margin of reachableTexels).
+// The loop tests at its bottom (docs/issue14.md section 17): llvmpipe runs a loop's body
+// once more, masked, after the last lane has left by a test at the top.
 vec3 boundsForRays(vec3 a, vec3 b, vec3 bounds, ivec2 mapSize) {
   float deepestEnd = zToLsDepth(max(a.z, b.z));  // the deepest any ray can end
-  for (int i = 0; i < uIterations && deepestEnd > bounds.x; ++i) {
-    float occluderZ = lsDepthToZ(bounds.x);
-    ivec4 ra = reachableTexels(a.xy, a.z, occluderZ, mapSize);
-    ivec4 rb = reachableTexels(b.xy, b.z, occluderZ, mapSize);
-    vec3 refined = boundsOverRect(min(ra.xy, rb.xy), max(ra.zw, rb.zw), mapSize);
-    // Each region lies inside the previous one, so every bound found so far still holds:
-    // keep the tightest (zNearMin monotone up, the maxima monotone down).
-    bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
-  }
+  bool refine = uIterations > 0 && deepestEnd > bounds.x;
+  int i = 0;
+  do {
+    if (refine) {
+      float occluderZ = lsDepthToZ(bounds.x);
+      ivec4 ra = reachableTexels(a.xy, a.z, occluderZ, mapSize);
+      ivec4 rb = reachableTexels(b.xy, b.z, occluderZ, mapSize);
+      vec3 refined = boundsOverRect(min(ra.xy, rb.xy), max(ra.zw, rb.zw), mapSize);
+      // Each region lies inside the previous one, so every bound found so far still holds:
+      // keep the tightest (zNearMin monotone up, the maxima monotone down).
+      bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
+    }
+    ++i;
+    refine = refine && i < uIterations && deepestEnd > bounds.x;
+  } while (refine);
   return bounds;
 }
 
@@ -96,13 +104,15 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
     return CLASS_OUTSIDE;
   }
   // A loop, not an if: llvmpipe runs the body of an if that no lane of the 8 enters, but
-  // leaves a loop once no lane is left in it, so the second pass costs only where needed.
+  // leaves a loop once no lane is left in it, so the second pass costs only where needed;
+  // tested at the bottom, as boundsForRays's.
   vec3 bounds, secondEnd = map;
-  for (int pass = 0; pass < 2; ++pass) {
+  bool secondPass = false;
+  do {
     bounds = boundsForRays(map, secondEnd, whole, size);
-    if (normalOffsetDistance(pointMap.z, wsNormal, bounds.x) >= fullOffset) break;
+    secondPass = !secondPass && normalOffsetDistance(pointMap.z, wsNormal, bounds.x) < fullOffset;
     secondEnd = pointMap;
-  }
+  } while (secondPass);
   zRange.xyz = bounds;
   // The capped point (the trace starts its rays there too).
   wsPosition = normalOffsetPoint(wsPosition, pointMap.z, wsNormal, bounds.x);

@@ -23,16 +23,22 @@ void main() {
   ivec2 end = min(origin + CLASSIFY_LIST_TILE, ivec2(frame.sizes.xy));
   // 2. The pixels of each class (separate counters, not an array: llvmpipe would index a
   //    private array lane by lane).
+  //    The loops test at their bottom (a tile holds at least one pixel): llvmpipe runs a
+  //    loop's body once more, masked, after the last lane leaves by a test at the top
+  //    (docs/issue14.md section 17).
   uint background = 0u, lit = 0u, penumbra = 0u, umbra = 0u, outside = 0u;
-  for (int y = origin.y; y < end.y; ++y)
-    for (int x = origin.x; x < end.x; ++x) {
+  int y = origin.y;
+  do {
+    int x = origin.x;
+    do {
       int pixelClass = int(imageLoad(classMask, ivec2(x, y)).r);
       background += pixelClass == CLASS_BACKGROUND ? 1u : 0u;
       lit += pixelClass == CLASS_LIT ? 1u : 0u;
       penumbra += pixelClass == CLASS_PENUMBRA ? 1u : 0u;
       umbra += pixelClass == CLASS_UMBRA ? 1u : 0u;
       outside += pixelClass == CLASS_OUTSIDE ? 1u : 0u;
-    }
+    } while (++x < end.x);
+  } while (++y < end.y);
   if (background != 0u) atomicAdd(counts.pixels[CLASS_BACKGROUND], background);
   if (lit != 0u) atomicAdd(counts.pixels[CLASS_LIT], lit);
   if (penumbra != 0u) atomicAdd(counts.pixels[CLASS_PENUMBRA], penumbra);
@@ -40,17 +46,20 @@ void main() {
   if (outside != 0u) atomicAdd(counts.pixels[CLASS_OUTSIDE], outside);
   // 3. The tile's slots in the list (penumbra first, then umbra; the order of the tiles is
   //    not deterministic, the trace's result does not depend on it), and its pixels there.
-  //    Tiles without such pixels leave at once (a loop, not an if: llvmpipe leaves a loop
-  //    once no lane is in it, but runs an if's body for all 8 lanes).
+  //    Tiles without such pixels leave after one pass of the loops' bodies, which lists
+  //    nothing there (a loop, not an if: llvmpipe leaves a loop once no lane is in it, but
+  //    runs an if's body for all 8 lanes).
   uint traced = penumbra + umbra;
   uint nextPenumbra = traced != 0u ? atomicAdd(listCount, traced) : 0u;
   uint nextUmbra = nextPenumbra + penumbra;
-  int rows = traced != 0u ? end.y - origin.y : 0;
-  for (int y = origin.y; y < origin.y + rows; ++y)
-    for (int x = origin.x; x < end.x; ++x) {
+  y = origin.y;
+  do {
+    int x = origin.x;
+    do {
       int pixelClass = int(imageLoad(classMask, ivec2(x, y)).r);
       uint xy = uint(x) | (uint(y) << 16);
       if (pixelClass == CLASS_PENUMBRA) tracedPixels[nextPenumbra++] = xy;
       if (pixelClass == CLASS_UMBRA) tracedPixels[nextUmbra++] = xy;
-    }
+    } while (++x < end.x && traced != 0u);
+  } while (++y < end.y && traced != 0u);
 }

@@ -116,7 +116,8 @@ void main() {
   // 3. The taps j = -r .. r + 3, each read once; pixel p takes tap j as its k = j - p where
   //    |k| <= r, so each pixel adds its taps in the order k = -r .. r.
   vec4 sum = vec4(0.0), weightSum = vec4(0.0);
-  for (int j = -uRadius; j <= uRadius + 3; ++j) {
+  int j = -uRadius;
+  do {  // tested at the bottom, as the loops of classify.frag (2r + 4 >= 4 taps)
     ivec2 at = first + j * uDirection;
     if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) continue;
     vec4 position = imageLoad(wsPositionImage, at);
@@ -128,7 +129,7 @@ void main() {
     addTap(1, tap, c, sigma, sum, weightSum);
     addTap(2, tap, c, sigma, sum, weightSum);
     addTap(3, tap, c, sigma, sum, weightSum);
-  }
+  } while (++j <= uRadius + 3);
 
   // 4. The results: a background pixel, or any pixel with radius 0, keeps its value; the
   //    centre always contributes weight 1 otherwise, so weightSum > 0.

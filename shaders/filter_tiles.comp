@@ -27,12 +27,17 @@ void main() {
   //    bit 1 a 1, bit 2 any other.
   ivec2 low = max(tileOrigin - uRadius, ivec2(0));
   ivec2 high = min(tileOrigin + FILTER_TILE_SIZE + uRadius, size);
+  //    The loops test at their bottom (the grown tile holds at least one pixel), as
+  //    classify_list.comp's.
   uint seen = 0u;
-  for (int y = low.y; y < high.y; ++y)
-    for (int x = low.x; x < high.x; ++x) {
+  int y = low.y;
+  do {
+    int x = low.x;
+    do {
       uint value = floatBitsToUint(imageLoad(sourceImage, ivec2(x, y)).r);
       seen |= value == 0u ? 1u : value == floatBitsToUint(1.0) ? 2u : 4u;  // -0.0 is "other"
-    }
+    } while (++x < high.x);
+  } while (++y < high.y);
   // 3. Listed when more than one value, or a value other than 0 and 1, was seen.
   if (seen < 3u) return;
   uint slot = atomicAdd(header.groups[0], 1u);

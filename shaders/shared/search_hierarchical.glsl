@@ -33,15 +33,14 @@ ivec4 forwardWindow(ivec2 cell, int level, vec2 direction, out ivec2 texel) {
   return window;
 }
 
-// The s where the ray leaves `window` forwards, and which axes it leaves through.
+// The s where the ray leaves `window` forwards, and which axes it leaves through. Per axis
+// the edge it moves towards, chosen before the one division: llvmpipe runs both sides of a
+// branch for all 8 lanes, so an if/else per direction cost four divisions (section 17 of
+// docs/issue14.md). An axis the ray does not move along is never left (1e30).
 float windowExit(Ray ray, ivec4 window, out bvec2 exitAxes) {
-  float sExit = 1e30;
-  vec2 tAxis = vec2(1e30);
-  for (int axis = 0; axis < 2; ++axis) {
-    if (ray.d[axis] > 0.0) tAxis[axis] = (float(window[axis + 2] + 1) - ray.a[axis]) / ray.d[axis];
-    else if (ray.d[axis] < 0.0) tAxis[axis] = (float(window[axis]) - ray.a[axis]) / ray.d[axis];
-  }
-  sExit = min(tAxis.x, tAxis.y);
+  vec2 edge = mix(vec2(window.xy), vec2(window.zw + 1), greaterThan(ray.d, vec2(0.0)));
+  vec2 tAxis = mix(vec2(1e30), (edge - ray.a) / ray.d, notEqual(ray.d, vec2(0.0)));
+  float sExit = min(tAxis.x, tAxis.y);
   exitAxes = equal(tAxis, vec2(sExit));
   return sExit;
 }

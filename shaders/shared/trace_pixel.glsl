@@ -30,7 +30,7 @@ bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   vec2 p0 = rayPoint(ray, sStart), p1 = rayPoint(ray, sEnd);
   ivec2 lo = texelAt(min(p0, p1)), hi = texelAt(max(p0, p1));
   int span = max(hi.x - lo.x, hi.y - lo.y) + 1;
-  int level = min(int(ceil(log2(float(span)))), trace.record.w);
+  int level = min(span <= 1 ? 0 : findMSB(span - 1) + 1, trace.record.w);  // ceil(log2(span))
   ivec2 size = ivec2(light.mapSize.xy);
   vec4 bounds;
   if (traceHierarchy() == HIERARCHY_MINMAX) {
@@ -79,7 +79,8 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
   // Capped by zNearMin.
   wsPosition = normalOffsetPoint(wsPosition, lightMapCoords(wsPosition).z, wsNormal, zBounds.x);
   float receiverZ = lightMapCoords(wsPosition).z;
-  for (int i = 0; i < rayCount; ++i) {
+  int i = 0;
+  do {  // tested at the bottom, as the loops of classify.frag (rayCount >= 1)
     gRayIndex = i;
     // 1. The ray: light sample -> receiver, shortened at the receiver by the bias (Eq 3.2).
     vec3 wsLightSample = lightSampleWorld(lightSampleUnit(pixel, i, raysPerSide));
@@ -114,8 +115,8 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
     }
     // 4. Early outs (§3.7): the end point inside a solid (blocked; one level-0 fetch) and
     //    nothing in the ray's region can block it (lit; one hierarchy fetch, min-max up to
-    //    4). The region test goes first where that cannot change a decision, since it ends
-    //    far more rays (cube 640x480: 59,630 against none):
+    //    4). The region test decides first where that cannot change a decision, since it
+    //    ends far more rays (cube 640x480: 59,630 against none):
     //    - shortening kept the end point: the region test's rectangle covers the end texel,
     //      and inside means near <= its depth <= far there, so the ray's last depth is not
     //      above zNearMin nor its first below zFarMax: the region test cannot pass it;
@@ -125,27 +126,31 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
     //      depth, which is at most zNearMin), whose far layer is at most zFarMax: it cannot
     //      be inside, and the inside test is not needed at all.
     //    Elsewhere (the end cut above zNearMin: a receiver within the bias of an occluder,
-    //    whose end texel may lie outside the region) the inside test goes first, as before.
+    //    whose end texel may lie outside the region) the inside test decides first.
+    //    Each test has one call site: llvmpipe runs the body of an `if` for all 8 lanes
+    //    whether any lane enters it or not (docs/issue14.md section 12), and a second call
+    //    of the inside test cost its fetches again for every ray. So the region test runs
+    //    first for every ray (counted as a fetch also for a ray then found inside, which the
+    //    inside test decides).
     bool endKept = sStart <= sEndPoint && sEndPoint <= sEnd;
-    bool endBeyondFar = sEnd < sEndPoint && zBounds.y >= zBounds.x;
-    if (trace.switches.y != 0 && !endKept && !endBeyondFar &&
+    bool insideDecidesFirst = !endKept && !(sEnd < sEndPoint && zBounds.y >= zBounds.x);
+    bool regionEmpty = sStart > sEnd || (trace.switches.z != 0 && regionIsEmpty(ray, sStart, sEnd, layers));
+    if (trace.switches.y != 0 && (insideDecidesFirst || (endKept && !regionEmpty)) &&
         endPointInside(ray, sEndPoint, wsEnd, layers, counts))
       continue;
-    if (sStart > sEnd || (trace.switches.z != 0 && regionIsEmpty(ray, sStart, sEnd, layers))) {
+    if (regionEmpty) {
       counts.region += 1u;
       ++unblocked;
       recordStep(-1, STEP_EARLY_REGION, 0, ivec4(-1), vec4(0.0), vec4(sStart, sEnd, rayPoint(ray, sEnd)));
       continue;
     }
-    if (trace.switches.y != 0 && endKept && endPointInside(ray, sEndPoint, wsEnd, layers, counts))
-      continue;
     // 5. The search.
     counts.searched += 1u;
     bool blocked = search == SEARCH_HIERARCHICAL
                        ? searchHierarchical(ray, sStart, sEnd, layers)
                        : searchLinear(ray, sStart, sEnd, layers, search == SEARCH_LINEAR_BINARY);
     if (!blocked) ++unblocked;
-  }
+  } while (++i < rayCount);
   return float(unblocked) / float(rayCount);
 }
 
