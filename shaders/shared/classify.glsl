@@ -73,20 +73,30 @@ vec3 minmaxBoundsOverRect(readonly image2D atlas, sampler2D nearLayer, readonly 
   vec3 bounds = vec3(1.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
   // Two loops, not one with the level test inside: llvmpipe runs both sides of a branch in
   // every iteration (8 lanes in lockstep), so the test inside cost each cell three fetches.
-  // A loop none of whose lanes enters runs one masked pass.
-  int levelZeroRows = level == 0 ? last.y - first.y + 1 : 0;
-  for (int y = first.y; y < first.y + levelZeroRows; ++y)
-    for (int x = first.x; x <= last.x; ++x) {
-      float nearDepth = texelFetch(nearLayer, ivec2(x, y), 0).r;
-      bounds = vec3(min(bounds.x, nearDepth), max(bounds.y, nearDepth),
-                    max(bounds.z, imageLoad(farLayer, ivec2(x, y)).r));
-    }
+  // A loop none of whose lanes enters runs one masked pass. Both loops test at the bottom
+  // (classify.frag's boundsForRays says why), the one of no rows guarded.
+  bool levelZero = level == 0;
+  int y = first.y;
+  do {
+    int x = first.x;
+    do {
+      if (levelZero) {
+        float nearDepth = texelFetch(nearLayer, ivec2(x, y), 0).r;
+        bounds = vec3(min(bounds.x, nearDepth), max(bounds.y, nearDepth),
+                      max(bounds.z, imageLoad(farLayer, ivec2(x, y)).r));
+      }
+    } while (levelZero && ++x <= last.x);
+  } while (levelZero && ++y <= last.y);
   ivec2 origin = minmaxLevelOrigin(max(level, 1), mapSize);
-  int atlasRows = level == 0 ? 0 : last.y - first.y + 1;
-  for (int y = first.y; y < first.y + atlasRows; ++y)
-    for (int x = first.x; x <= last.x; ++x) {
-      vec3 cell = imageLoad(atlas, origin + ivec2(x, y)).xyz;
-      bounds = vec3(min(bounds.x, cell.x), max(bounds.yz, cell.yz));
-    }
+  y = first.y;
+  do {
+    int x = first.x;
+    do {
+      if (!levelZero) {
+        vec3 cell = imageLoad(atlas, origin + ivec2(x, y)).xyz;
+        bounds = vec3(min(bounds.x, cell.x), max(bounds.yz, cell.yz));
+      }
+    } while (!levelZero && ++x <= last.x);
+  } while (!levelZero && ++y <= last.y);
   return bounds;
 }

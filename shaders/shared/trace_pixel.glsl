@@ -36,11 +36,14 @@ bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   if (traceHierarchy() == HIERARCHY_MINMAX) {
     ivec2 first = lo >> level, last = hi >> level;
     bounds = vec4(1.0, 0.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
-    for (int y = first.y; y <= last.y; ++y)
-      for (int x = first.x; x <= last.x; ++x) {
+    int y = first.y;
+    do {  // tested at the bottom, as the loops of classify.frag (at least one cell)
+      int x = first.x;
+      do {
         vec4 b = fetchHierarchy(ivec2(x, y), level);
         bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
-      }
+      } while (++x <= last.x);
+    } while (++y <= last.y);
   } else {
     bounds = fetchHierarchy(ivec2(nbufferTexelForWindow(level, lo.x, size.x),
                                   nbufferTexelForWindow(level, lo.y, size.y)), level);
