@@ -89,6 +89,20 @@ void addTap(int p, Tap tap, Centers c, float sigma, inout vec4 sum, inout vec4 w
   weightSum[p] += weight;
 }
 
+// Tap j (offset from pixel 0 along the direction); false off the image or on the background
+// (never blurred into a shadow).
+bool readTap(ivec2 first, int j, ivec2 size, vec3 eye, out Tap tap) {
+  ivec2 at = first + j * uDirection;
+  tap = Tap(j, vec3(0.0), 0.0, 0.0, 0.0, vec3(0.0));
+  if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) return false;
+  vec4 position = imageLoad(wsPositionImage, at);
+  if (position.w == 0.0) return false;
+  tap = Tap(j, position.xyz, distance(position.xyz, eye),
+            uPenumbraScale <= 0.0 ? 1e30 : penumbraPixels(at, position.xyz),
+            imageLoad(sourceImage, at).r, imageLoad(wsNormalImage, at).xyz);
+  return true;
+}
+
 void main() {
   loadFrameBlocks();
   // 1. This invocation's pixels: 4 consecutive ones along the direction, in the tile its
@@ -114,22 +128,43 @@ void main() {
   }
 
   // 3. The taps j = -r .. r + 3, each read once; pixel p takes tap j as its k = j - p where
-  //    |k| <= r, so each pixel adds its taps in the order k = -r .. r.
+  //    |k| <= r, so each pixel adds its taps in the order k = -r .. r. Tap j reaches pixels
+  //    max(0, j - r) .. min(3, j + r): the first three taps and the last three reach fewer
+  //    than four, and are added to those alone, outside the loop (llvmpipe runs a call that
+  //    returns at once for all lanes as one that does not): 8r + 4 pixel-taps, not 8r + 16.
+  //    Where r < 2 the loop has no tap (guarded); at r = 0 two of the first three taps are
+  //    also among the last three (guarded there).
   vec4 sum = vec4(0.0), weightSum = vec4(0.0);
-  int j = -uRadius;
-  do {  // tested at the bottom, as the loops of classify.frag (2r + 4 >= 4 taps)
-    ivec2 at = first + j * uDirection;
-    if (any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, size))) continue;
-    vec4 position = imageLoad(wsPositionImage, at);
-    if (position.w == 0.0) continue;  // never blur the background into a shadow
-    Tap tap = Tap(j, position.xyz, distance(position.xyz, eye),
-                  uPenumbraScale <= 0.0 ? 1e30 : penumbraPixels(at, position.xyz),
-                  imageLoad(sourceImage, at).r, imageLoad(wsNormalImage, at).xyz);
+  Tap tap;
+  if (readTap(first, -uRadius, size, eye, tap)) addTap(0, tap, c, sigma, sum, weightSum);
+  if (readTap(first, 1 - uRadius, size, eye, tap)) {
+    addTap(0, tap, c, sigma, sum, weightSum);
+    addTap(1, tap, c, sigma, sum, weightSum);
+  }
+  if (readTap(first, 2 - uRadius, size, eye, tap)) {
     addTap(0, tap, c, sigma, sum, weightSum);
     addTap(1, tap, c, sigma, sum, weightSum);
     addTap(2, tap, c, sigma, sum, weightSum);
+  }
+  int j = 3 - uRadius;
+  do {  // tested at the bottom, as the loops of classify.frag
+    if (j <= uRadius && readTap(first, j, size, eye, tap)) {
+      addTap(0, tap, c, sigma, sum, weightSum);
+      addTap(1, tap, c, sigma, sum, weightSum);
+      addTap(2, tap, c, sigma, sum, weightSum);
+      addTap(3, tap, c, sigma, sum, weightSum);
+    }
+  } while (++j <= uRadius);
+  if (uRadius >= 1 && readTap(first, uRadius + 1, size, eye, tap)) {
+    addTap(1, tap, c, sigma, sum, weightSum);
+    addTap(2, tap, c, sigma, sum, weightSum);
     addTap(3, tap, c, sigma, sum, weightSum);
-  } while (++j <= uRadius + 3);
+  }
+  if (uRadius >= 1 && readTap(first, uRadius + 2, size, eye, tap)) {
+    addTap(2, tap, c, sigma, sum, weightSum);
+    addTap(3, tap, c, sigma, sum, weightSum);
+  }
+  if (readTap(first, uRadius + 3, size, eye, tap)) addTap(3, tap, c, sigma, sum, weightSum);
 
   // 4. The results: a background pixel, or any pixel with radius 0, keeps its value; the
   //    centre always contributes weight 1 otherwise, so weightSum > 0.
