@@ -63,7 +63,7 @@ vec3 nbufferWholeMap(readonly image2DArray levels) {
 // layers (near, near, far), not stored in the atlas (minmax.glsl).
 vec3 minmaxBoundsOverRect(readonly image2D atlas, sampler2D nearLayer, readonly image2D farLayer, ivec2 lo,
                           ivec2 hi, ivec2 mapSize, int cells) {
-  int top = max(mapSize.x, mapSize.y) <= 1 ? 0 : findMSB(max(mapSize.x, mapSize.y) - 1) + 1;
+  int top = levelSpanning(max(mapSize.x, mapSize.y));
   // (hi >> L) - (lo >> L) >= (hi - lo) >> L, so no level below the smallest with
   // ((hi - lo) >> L) <= cells - 1 can do; from there at most one more step is needed.
   int spread = max(hi.x - lo.x, hi.y - lo.y);

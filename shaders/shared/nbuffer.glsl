@@ -28,6 +28,10 @@
 
 int nbufferHalf(int level) { return level == 0 ? 0 : 1 << (level - 1); }
 
+// The smallest level n with 2^n >= texels, ceil(log2(texels)) in integers (0 for one
+// texel): a level-n window of the N-buffer, or cell of the min-max mipmap, spans 2^n texels.
+int levelSpanning(int texels) { return texels <= 1 ? 0 : findMSB(texels - 1) + 1; }
+
 // Per axis: the window [lo, hi] (inclusive) of level `level` texel `x` on a map of `size`.
 ivec2 nbufferWindow1D(int level, int x, int size) {
   int span = 1 << level;

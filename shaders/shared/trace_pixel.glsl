@@ -30,7 +30,7 @@ bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   vec2 p0 = rayPoint(ray, sStart), p1 = rayPoint(ray, sEnd);
   ivec2 lo = texelAt(min(p0, p1)), hi = texelAt(max(p0, p1));
   int span = max(hi.x - lo.x, hi.y - lo.y) + 1;
-  int level = min(span <= 1 ? 0 : findMSB(span - 1) + 1, trace.record.w);  // ceil(log2(span))
+  int level = min(levelSpanning(span), trace.record.w);
   ivec2 size = ivec2(light.mapSize.xy);
   vec4 bounds;
   if (traceHierarchy() == HIERARCHY_MINMAX) {
