@@ -124,6 +124,35 @@ void sameLineIfFits(float width) {
   if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
 }
 
+void textPieces(const std::vector<std::string>& pieces) {
+  const float avail = ImGui::GetContentRegionAvail().x, gap = ImGui::CalcTextSize("  ").x;
+  float used = 0;
+  for (const std::string& piece : pieces) {
+    const float width = ImGui::CalcTextSize(piece.c_str()).x;
+    const size_t space = piece.find(' ');
+    if (width > avail && space != std::string::npos) {  // alone too wide: its words on lines of their own
+      if (used > 0) ImGui::NewLine();
+      textPieces({piece.substr(0, space)});
+      textPieces({piece.substr(space + 1)});
+      used = 0;
+      continue;
+    }
+    if (used > 0 && used + gap + width <= avail) {
+      ImGui::SameLine(0, gap);
+      used += gap + width;
+    } else {
+      used = width;
+    }
+    ImGui::TextUnformatted(piece.c_str());
+  }
+}
+
+void hintText(const std::string& text) {
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled("%s", text.c_str());
+  ImGui::PopTextWrapPos();
+}
+
 std::string timingText(const StageTime& time) {
   if (!time.ran) return "not run: no output the window shows depends on it";
   char text[160];

@@ -5,6 +5,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "core/param.h"
 #include "core/pipeline.h"
@@ -32,6 +33,12 @@ void sameLineIfButtonsFit(std::initializer_list<const char*> labels);
 //     output stays whole, so hard_shadow and pcss visibilities stay apart), else the end
 //     cut ("hard_shadow.vi..."). Show the full name in the combo's tooltip.
 std::string comboPreview(const std::string& name, float comboWidth);
+// 4f. Text in pieces that are never split (a channel's name and value, a counter and its
+//     number): on one line, two spaces apart, while they fit; a new line before a piece
+//     that does not (ImGui's own wrapping breaks after any '.', inside a number).
+void textPieces(const std::vector<std::string>& pieces);
+// 4g. Greyed text wrapped at the panel's edge (hints, "not run yet").
+void hintText(const std::string& text);
 // 5. A stage's timing for a tooltip: last run, median and how many runs it covers, or why
 //    it did not run.
 std::string timingText(const StageTime& time);

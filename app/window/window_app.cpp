@@ -42,16 +42,32 @@ constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
     ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-// 1. Fixed layout: panels scale with the window, within limits.
+// 1. Fixed layout: panels scale with the window, within limits, and the views keep at
+//    least half the window's width (kMinViewsShare). When the two side panels, each at least
+//    220 px x the UI scale, would leave the views less, they collapse into one column on the
+//    left whose tabs hold the pipeline, the inspector and the chart. A playing lesson's panel
+//    sits below the views (its height taken from theirs), never over them.
+constexpr float kMinViewsShare = 0.5f;
+
 struct Layout {
-  float width, height, left, right, status;
+  float width, height, left, right, status, lesson;
+  bool stacked;  // one side column (left) with every side tab; right == 0
   float centerWidth() const { return width - left - right; }
   float panelHeight() const { return height - status; }
+  float viewsHeight() const { return panelHeight() - lesson; }
 };
 
-Layout layoutFor(float width, float height, float uiScale) {
-  return {width, height, std::clamp(width * 0.27f, 220.0f * uiScale, 360.0f * uiScale),
-          std::clamp(width * 0.23f, 220.0f * uiScale, 330.0f * uiScale), ImGui::GetFrameHeight() + 6};
+Layout layoutFor(float width, float height, float uiScale, float lessonHeight) {
+  Layout layout{width, height, std::clamp(width * 0.27f, 220.0f * uiScale, 360.0f * uiScale),
+                std::clamp(width * 0.23f, 220.0f * uiScale, 330.0f * uiScale), ImGui::GetFrameHeight() + 6,
+                0, false};
+  // One pixel of slack: at the panels' own shares (0.27 + 0.23) the views get exactly half.
+  if (layout.centerWidth() < kMinViewsShare * width - 1) {
+    layout.stacked = true;
+    layout.right = 0;
+  }
+  layout.lesson = std::min(lessonHeight, 0.35f * layout.panelHeight());
+  return layout;
 }
 
 void saveScreenshot(GLFWwindow* window, const std::string& path) {
@@ -158,23 +174,40 @@ void drawStatusLine(const UiState& state, const Layout& layout) {
   ImGui::End();
 }
 
-// 3b. The right panel: the inspector, or the speed-vs-error chart, as tabs. A script's
-//     request (state.showSpeedError) selects a tab; a click on a tab sets the request.
+// 3b. The side tabs: the inspector and the speed-vs-error chart in the right panel, or, in a
+//     window too narrow for two side panels (Layout::stacked), the pipeline too, all in
+//     one column on the left. A script's request (state.showSpeedError) selects the chart; a
+//     click on a tab sets the request.
 void drawSidePanel(UiState& state, const Layout& layout) {
-  ImGui::SetNextWindowPos({layout.width - layout.right, 0});
-  ImGui::SetNextWindowSize({layout.right, layout.panelHeight()});
+  enum Tab { kPipeline, kInspector, kChart };
+  if (layout.stacked) ImGui::SetNextWindowPos({0, 0});
+  else ImGui::SetNextWindowPos({layout.width - layout.right, 0});
+  ImGui::SetNextWindowSize({layout.stacked ? layout.left : layout.right, layout.panelHeight()});
   ImGui::Begin("##side", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar);
-  static int shownTab = 0;
-  const int wanted = state.showSpeedError ? 1 : 0;
+  static int shownTab = -1;  // none yet
+  int wanted = shownTab;
+  if (state.showSpeedError) wanted = kChart;
+  else if (wanted == kChart) wanted = kInspector;  // the chart's request withdrawn: the inspector again
+  else if (wanted < 0) wanted = layout.stacked ? kPipeline : kInspector;
+  if (!layout.stacked && wanted == kPipeline) wanted = kInspector;  // the pipeline has its own panel
+  static bool wasStacked = false;  // collapsing (a larger UI scale): the pipeline stays in sight
+  if (layout.stacked && !wasStacked && wanted == kInspector) wanted = kPipeline;
+  wasStacked = layout.stacked;
   const bool pending = wanted != shownTab;
   if (ImGui::BeginTabBar("##side_tabs")) {
-    const char* names[2] = {"Inspector", "Speed vs error"};
-    for (int tab = 0; tab < 2; ++tab) {
+    // One column holds three tabs: the chart's goes by a shorter name (its tooltip has the long one).
+    const char* names[3] = {"Pipeline", "Inspector", layout.stacked ? "Chart###chart" : "Speed vs error###chart"};
+    for (int tab = layout.stacked ? kPipeline : kInspector; tab <= kChart; ++tab) {
       const ImGuiTabItemFlags flags = pending && wanted == tab ? ImGuiTabItemFlags_SetSelected : 0;
-      if (!ImGui::BeginTabItem(names[tab], nullptr, flags)) continue;
+      const bool open = ImGui::BeginTabItem(names[tab], nullptr, flags);
+      if (tab == kChart && layout.stacked && ImGui::IsItemHovered()) ImGui::SetTooltip("Speed vs error");
+      if (!open) continue;
       shownTab = tab;
       ImGui::BeginChild("##side_tab");  // scrolls under the tab bar, which stays in place
-      if (tab == 0) {
+      if (tab == kPipeline) {
+        drawScenePanel(state);
+        drawPipelinePanel(state);
+      } else if (tab == kInspector) {
         drawInspector(state);
       } else {
         state.views.overlays.clear();  // the ray's shapes are the inspector's
@@ -185,21 +218,23 @@ void drawSidePanel(UiState& state, const Layout& layout) {
     }
     ImGui::EndTabBar();
   }
-  if (!pending) state.showSpeedError = shownTab == 1;
+  if (!pending) state.showSpeedError = shownTab == kChart;
   ImGui::End();
 }
 
-// 4. One UI frame: left, centre, right, status line, floating windows.
+// 4. One UI frame: left, centre, right, status line, lesson, floating windows.
 bool drawUi(UiState& state, const Layout& layout) {
-  ImGui::SetNextWindowPos({0, 0});
-  ImGui::SetNextWindowSize({layout.left, layout.panelHeight()});
-  ImGui::Begin("Pipeline (thesis Algorithm 1)", nullptr, kPanelFlags);
-  drawScenePanel(state);
-  drawPipelinePanel(state);
-  ImGui::End();
+  if (!layout.stacked) {
+    ImGui::SetNextWindowPos({0, 0});
+    ImGui::SetNextWindowSize({layout.left, layout.panelHeight()});
+    ImGui::Begin("Pipeline (thesis Algorithm 1)", nullptr, kPanelFlags);
+    drawScenePanel(state);
+    drawPipelinePanel(state);
+    ImGui::End();
+  }
 
   ImGui::SetNextWindowPos({layout.left, 0});
-  ImGui::SetNextWindowSize({layout.centerWidth(), layout.panelHeight()});
+  ImGui::SetNextWindowSize({layout.centerWidth(), layout.viewsHeight()});
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {4, 4});
   ImGui::Begin("##views", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
                                        ImGuiWindowFlags_NoScrollbar);
@@ -220,8 +255,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   drawSidePanel(state, layout);
 
   drawStatusLine(state, layout);
-  drawLessonWindow(state, layout.left + 0.5f * layout.centerWidth(), layout.centerWidth() - 24,
-                   layout.panelHeight());
+  if (layout.lesson > 0) drawLessonWindow(state, layout.left, layout.viewsHeight(), layout.centerWidth(), layout.lesson);
   stepSpeedErrorPanel();
   drawHelpWindow(state);
   drawShaderLogWindow(state);
@@ -381,7 +415,8 @@ int runWindow(const WindowOptions& options) {
       ImGui::NewFrame();
       handleShortcuts(*state, window, screenshotCount);
       const RunKey before = state->currentKey();
-      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y, state->uiScale));
+      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y,
+                                                   state->uiScale, lessonPanelHeight(*state)));
       // A slider dragged since its press counts as moving too: preview until released.
       if (!ImGui::IsAnyItemActive()) draggingSlider = false;
       else if (state->currentKey() != before) draggingSlider = true;

@@ -47,7 +47,7 @@ const std::vector<PickRow>& pickRows(const UiState& state) {
 
 void drawPick(const UiState& state) {
   if (!state.views.pick || !state.session.frame) {
-    ImGui::TextDisabled("Click a view to pick a texel;\narrow keys move the pick.");
+    hintText("Click a view to pick a texel; arrow keys move the pick.");
     return;
   }
   ImGui::Text("(%d, %d) in %dx%d", state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y,
@@ -71,15 +71,15 @@ void drawPick(const UiState& state) {
     } else {
       ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "%s", row.label.c_str());
     }
-    std::string text;
+    std::vector<std::string> pieces;  // "name value", never split
     char value[64];
     for (int c = 0; c < row.channelCount; ++c) {
       const std::string name = size_t(c) < row.channelNames.size() ? row.channelNames[size_t(c)]
                                                                    : std::string(1, "RGBA"[c]);
-      std::snprintf(value, sizeof value, "%s%s %.5g", c ? "  " : "", name.c_str(), row.values[size_t(c)]);
-      text += value;
+      std::snprintf(value, sizeof value, "%s %.5g", name.c_str(), row.values[size_t(c)]);
+      pieces.push_back(value);
     }
-    ImGui::TextWrapped("%s", text.c_str());
+    textPieces(pieces);
   }
   ImGui::EndTable();
 }
@@ -118,10 +118,14 @@ void drawTimings(const UiState& state) {
 // 3. Counters the stages reported this frame.
 void drawCounters(const UiState& state) {
   if (!state.session.frame || state.session.frame->counters.empty()) {
-    ImGui::TextDisabled("No counters this frame.");
+    hintText("No counters this frame.");
     return;
   }
-  for (const auto& [name, value] : state.session.frame->counters) ImGui::TextWrapped("%s  %.6g", name.c_str(), value);
+  char number[32];
+  for (const auto& [name, value] : state.session.frame->counters) {
+    std::snprintf(number, sizeof number, "%.6g", value);
+    textPieces({name, number});
+  }
 }
 
 // What the parameters set to `auto` chose for this scene and view, and why
@@ -148,12 +152,12 @@ void drawAutoReasons(const UiState& state) {
 void drawRayTrace(UiState& state) {
   state.views.overlays.clear();
   if (!rayTraceSource()) {
-    ImGui::TextDisabled("No trace source installed (ui_trace_panel.h).");
+    hintText("No trace source installed (ui_trace_panel.h).");
     return;
   }
   if (!state.views.pick || !state.session.frame ||
       state.views.pickSpace != glm::ivec2(state.session.frame->eyeWidth, state.session.frame->eyeHeight)) {
-    ImGui::TextDisabled("Pick a pixel in an eye-sized view.");
+    hintText("Pick a pixel in an eye-sized view.");
     return;
   }
   // The source may replay a whole ray on the CPU: once per run, pick and ray.

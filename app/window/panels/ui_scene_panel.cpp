@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <initializer_list>
+#include <string>
 
 #include "scene/scene_builtin.h"
 #include "window/ui_camera.h"
@@ -55,6 +57,18 @@ void drawEyeSize(UiState& state) {
              "screen pixel of view A.");
 }
 
+// 3a. Three numbers (a point): each field must hold "-00.00"; where the shared control
+//     width is too narrow for three (a large UI scale), the name goes above and the fields
+//     take the whole line.
+bool dragTriplet(const char* label, float* values) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float needed = 3 * (ImGui::CalcTextSize("-00.00").x + 2 * style.FramePadding.x) + 2 * style.ItemInnerSpacing.x;
+  if (ImGui::CalcItemWidth() >= needed) return ImGui::DragFloat3(label, values, 0.02f, 0, 0, "%.2f");
+  ImGui::TextUnformatted(label);
+  ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - buttonsWidth({"(?)"}), needed));
+  return ImGui::DragFloat3((std::string("##") + label).c_str(), values, 0.02f, 0, 0, "%.2f");
+}
+
 // 3. Camera and light: numbers and sliders (the mouse in a view orbits the camera too).
 void drawCameraAndLight(UiState& state) {
   Camera& camera = state.session.scene.camera;
@@ -62,10 +76,10 @@ void drawCameraAndLight(UiState& state) {
   const Camera cameraBefore = camera;
   const AreaLight lightBefore = light;
   bool changed = false;
-  changed |= ImGui::DragFloat3("eye", &camera.position.x, 0.02f, 0, 0, "%.2f");
-  changed |= ImGui::DragFloat3("target", &camera.target.x, 0.02f, 0, 0, "%.2f");
+  changed |= dragTriplet("eye", &camera.position.x);
+  changed |= dragTriplet("target", &camera.target.x);
   changed |= ImGui::SliderFloat("fov y", &camera.fovYDegrees, 10, 120, "%.0f deg");
-  changed |= ImGui::DragFloat3("light", &light.center.x, 0.02f, 0, 0, "%.2f");
+  changed |= dragTriplet("light", &light.center.x);
   helpMarker("Centre of the rectangular area light (world units). In a scene view (any "
              "eye-sized output): Alt+drag moves the light over the ground, Alt+Shift+drag "
              "raises / lowers it, Alt+right drag turns it, Alt+wheel scales it (Shift: width, "
@@ -96,12 +110,22 @@ void drawCameraAndLight(UiState& state) {
              "over the scene views; hold Alt over a view to drag it.");
 }
 
+// 4a. A path field with buttons after it: on the buttons' line when its text (or hint) fits
+//     there, else on a line of its own above them.
+void pathField(const char* id, std::string& path, const char* hint, std::initializer_list<const char*> buttons) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float text = ImGui::CalcTextSize((path.empty() ? hint : path.c_str())).x + 2 * style.FramePadding.x + 1;
+  const float beside = ImGui::GetContentRegionAvail().x - buttonsWidth(buttons);
+  const bool ownLine = text > beside;
+  ImGui::SetNextItemWidth(ownLine ? ImGui::GetContentRegionAvail().x : beside);
+  ImGui::InputTextWithHint(id, hint, &path);
+  if (!ownLine) ImGui::SameLine();
+}
+
 // 4. Files and tools: settings, shaders, export all, how the pipeline re-runs.
 void drawTools(UiState& state) {
   static std::string settingsPath = "penumbra_settings.json", exportDirectory;
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Save", "Load", "(?)"}));
-  ImGui::InputText("##settings", &settingsPath);
-  ImGui::SameLine();
+  pathField("##settings", settingsPath, "", {"Save", "Load", "(?)"});
   if (ImGui::Button("Save")) state.status = saveSettingsFile(state, settingsPath);
   ImGui::SameLine();
   if (ImGui::Button("Load##settings")) {
@@ -110,9 +134,7 @@ void drawTools(UiState& state) {
   }
   helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
              "Open one at start with `penumbra --config FILE`.");
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Export all", "(?)"}));
-  ImGui::InputTextWithHint("##exportdir", kDefaultExportDirectory, &exportDirectory);
-  ImGui::SameLine();
+  pathField("##exportdir", exportDirectory, kDefaultExportDirectory, {"Export all", "(?)"});
   if (ImGui::Button("Export all")) state.status = exportAllStages(state, exportDirectory);
   helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
              "`penumbra export` with these settings.");

@@ -6,30 +6,54 @@
 
 #include "window/ui_state.h"
 
-void drawLessonWindow(UiState& state, float centreX, float width, float bottom) {
+namespace {
+bool lessonShown(const LessonState& lesson) { return !lesson.text.empty() || !lesson.title.empty(); }
+}  // namespace
+
+float lessonPanelHeight(const UiState& state) {
+  if (!lessonShown(state.lesson)) return 0;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::GetFrameHeight() + 2 * style.WindowPadding.y + ImGui::GetFrameHeightWithSpacing() +
+         float(kLessonTextLines) * ImGui::GetTextLineHeightWithSpacing();
+}
+
+void drawLessonWindow(UiState& state, float x, float y, float width, float height) {
   LessonState& lesson = state.lesson;
-  if (lesson.text.empty() && lesson.title.empty()) return;
-  ImGui::SetNextWindowPos({centreX, bottom - 8}, ImGuiCond_Always, {0.5f, 1.0f});
-  ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowBgAlpha(0.88f);
+  if (!lessonShown(lesson)) return;
+  ImGui::SetNextWindowPos({x, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({width, height}, ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBringToFrontOnFocus;
   const std::string title = "Lesson: " + (lesson.title.empty() ? std::string("(untitled)") : lesson.title) +
                             "###lesson";
   if (ImGui::Begin(title.c_str(), nullptr, flags)) {
-    if (lesson.steps > 0) ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "Step %d of %d", lesson.step, lesson.steps);
-    ImGui::PushTextWrapPos(0);
-    ImGui::TextUnformatted(lesson.text.c_str());
-    ImGui::PopTextWrapPos();
+    // 1. The step and the button first, so a long text that scrolls never hides them.
+    if (lesson.steps > 0) {
+      ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "Step %d of %d", lesson.step, lesson.steps);
+      ImGui::SameLine();
+    }
     if (lesson.waiting) {
       const bool key = !ImGui::GetIO().WantTextInput &&
                        (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false) || ImGui::IsKeyPressed(GLFW_KEY_N, false));
       if (ImGui::Button("Next (Space)") || key) lesson.next = true;
       ImGui::SameLine();
+      ImGui::PushTextWrapPos(0);
       ImGui::TextDisabled("Look around first: every view and parameter still works.");
+      ImGui::PopTextWrapPos();
     } else if (lesson.finished) {
+      ImGui::PushTextWrapPos(0);
       ImGui::TextDisabled("End of the lesson. The window stays open; Esc quits.");
+      ImGui::PopTextWrapPos();
+    } else {
+      ImGui::NewLine();
     }
+    // 2. The text, wrapped to the strip; it scrolls when longer than the strip.
+    ImGui::BeginChild("##lesson_text");
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(lesson.text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndChild();
   }
   ImGui::End();
 }

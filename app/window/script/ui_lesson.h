@@ -1,10 +1,17 @@
 // The lesson panel (DESIGN.md §1 `penumbra lesson FILE`): a lesson is a script (app/window/script/ui_script.h)
 // whose "say" actions explain each step; this panel shows the lesson's title, the step number
-// and the text over the bottom of the views. Played interactively, it has the "Next" button
-// (also Space or N) that lets the script go on to its next "say".
+// and the text in a strip below the views (the window's layout takes its height from theirs,
+// so it never covers a view). Played interactively, it has the "Next" button (also Space or
+// N) that lets the script go on to its next "say".
 #pragma once
 
 class UiState;
 
-// Draws nothing until a script says something. `centreX`, `width`, `bottom`: the views' area.
-void drawLessonWindow(UiState& state, float centreX, float width, float bottom);
+// The strip's height at the current UI scale: 0 until a script says something, then the
+// title bar, the step line with the button and kLessonTextLines lines of text (a longer text
+// scrolls inside the strip). The same for every step, so the views keep their size.
+inline constexpr int kLessonTextLines = 6;
+float lessonPanelHeight(const UiState& state);
+
+// Draws nothing until a script says something; else the strip at (x, y), width x height.
+void drawLessonWindow(UiState& state, float x, float y, float width, float height);
