@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
+
+#include "core/auto_params.h"
 
 // 1. The (?) marker.
 void helpMarker(const std::string& text) {
@@ -20,7 +23,21 @@ void helpMarker(const std::string& text) {
 
 // 2. One widget per parameter type; Ctrl+click on a slider types a value. A name too long
 //    for the line (narrow panel, large UI scale) goes on its own line above the widget.
-bool drawParam(Param& param) {
+std::optional<double> autoChosenValue(const std::string& stage, const Param& param, const Frame* frame) {
+  if (!param.allowsAuto || !param.automatic || !frame) return {};
+  const AutoSettings& chosen = frame->autoSettings;
+  if (stage == "light" && param.key == "resolution") return effectiveResolution(param, chosen);
+  if (stage == "light" && param.key == "layers") return double(chosen.layers - 1);  // options: one, two, three
+  if (stage == "trace" && param.key == "rays") return effectiveRays(param, chosen);
+  if (param.type == Param::Type::Enum) return param.value;  // decided by the pipeline, in place
+  return {};
+}
+
+double shownParamValue(const Param& param, std::optional<double> autoValue) {
+  return param.automatic && autoValue ? *autoValue : param.value;
+}
+
+bool drawParam(Param& param, std::optional<double> autoValue) {
   bool changed = false;
   // `auto` (app/scene/auto_settings.h): a checkbox before the widget, which is then greyed.
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -33,9 +50,14 @@ bool drawParam(Param& param) {
                              ImGui::GetContentRegionAvail().x;
   const std::string hidden = "##" + param.key;
   if (nameAbove) ImGui::TextUnformatted(param.key.c_str());
+  // A choice the pipeline decides writes it into the value: the hand value is kept here
+  // while auto is on, so that unticking gives it back.
+  static std::map<const Param*, double> handValues;
   if (param.allowsAuto) {
     bool automatic = param.automatic;
     if (ImGui::Checkbox(("auto##" + param.key).c_str(), &automatic)) {
+      if (automatic) handValues[&param] = param.value;
+      else if (const auto hand = handValues.find(&param); hand != handValues.end()) param.value = hand->second;
       param.automatic = automatic;
       changed = true;
     }
@@ -43,30 +65,39 @@ bool drawParam(Param& param) {
   }
   if (nameAbove) ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"(?)"}));
   const char* label = nameAbove ? hidden.c_str() : param.key.c_str();
+  const bool showsChoice = param.automatic && autoValue.has_value();
+  const double shown = shownParamValue(param, autoValue);
   ImGui::BeginDisabled(param.automatic);
   switch (param.type) {
     case Param::Type::Bool: {
-      bool value = param.asBool();
-      if ((changed = ImGui::Checkbox(label, &value))) param.value = value;
+      bool value = shown != 0;
+      if (ImGui::Checkbox(label, &value)) param.value = value, changed = true;
       break;
     }
     case Param::Type::Int: {
-      int value = param.asInt();
-      if ((changed = ImGui::SliderInt(label, &value, int(param.min), int(param.max))))
+      int value = int(shown);
+      if (ImGui::SliderInt(label, &value, int(param.min), int(param.max), showsChoice ? "%d (auto)" : "%d")) {
         param.value = std::clamp(value, int(param.min), int(param.max));
+        changed = true;
+      }
       break;
     }
     case Param::Type::Float: {
-      float value = param.asFloat();
+      float value = float(shown);
       const bool wide = param.min > 0 && param.max / param.min >= 100;
-      if ((changed = ImGui::SliderFloat(label, &value, float(param.min), float(param.max), "%.4g",
-                                        wide ? ImGuiSliderFlags_Logarithmic : 0)))
+      if (ImGui::SliderFloat(label, &value, float(param.min), float(param.max), showsChoice ? "%.4g (auto)" : "%.4g",
+                             wide ? ImGuiSliderFlags_Logarithmic : 0)) {
         param.value = std::clamp(double(value), param.min, param.max);
+        changed = true;
+      }
       break;
     }
     case Param::Type::Enum: {
-      const int value = param.asInt();
-      if (ImGui::BeginCombo(label, param.asEnum().c_str())) {
+      const int value = int(shown);
+      const std::string preview = size_t(value) < param.options.size()
+                                      ? param.options[size_t(value)] + (showsChoice ? " (auto)" : "")
+                                      : std::string("?");
+      if (ImGui::BeginCombo(label, preview.c_str())) {
         for (size_t i = 0; i < param.options.size(); ++i)
           if (ImGui::Selectable(param.options[i].c_str(), value == int(i))) {
             param.value = double(i);
@@ -78,7 +109,8 @@ bool drawParam(Param& param) {
     }
   }
   ImGui::EndDisabled();
-  helpMarker(param.doc + "\nRange: " + param.rangeText() + "\nCtrl+click a slider to type.");
+  helpMarker(param.doc + "\nRange: " + param.rangeText() + "\nCtrl+click a slider to type." +
+             (param.allowsAuto ? "\nUnder auto the control shows what auto chose, greyed; unticked, the value set by hand." : ""));
   return changed;
 }
 

@@ -4,17 +4,29 @@
 #include <epoxy/gl.h>
 
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/frame.h"
 #include "core/param.h"
 #include "core/pipeline.h"
 
 // 1. "(?)" after the last item; hovering shows `text`.
 void helpMarker(const std::string& text);
 // 2. Draws `param` from its declaration (checkbox, slider, combo) with a (?) marker giving
-//    its doc and range; returns true when the user changed it.
-bool drawParam(Param& param);
+//    its doc and range; returns true when the user changed it. Under `auto` the control
+//    shows `autoValue` (what auto chose this frame, autoChosenValue()), greyed and marked
+//    "(auto)"; the parameter's own value, set by hand, is kept and returns when auto is
+//    unticked.
+bool drawParam(Param& param, std::optional<double> autoValue = {});
+// 2b. What `auto` chose for parameter `stage`.`param` in `frame` (app/core/auto_params.h):
+//     the map size, the layers (as the option index) and the rays per side from the frame's
+//     AutoSettings; a choice the pipeline decides (Pipeline::decideAutoChoices) holds its
+//     choice in its value. Empty when the parameter is not under auto or nothing ran yet.
+std::optional<double> autoChosenValue(const std::string& stage, const Param& param, const Frame* frame);
+// 2c. The value the control shows: the choice under auto when there is one, else its own.
+double shownParamValue(const Param& param, std::optional<double> autoValue);
 // 3. "RGBA32F", "R32UI", "DEPTH32F", ...
 const char* formatName(GLenum format);
 // 4. Continues the current line if an item `width` wide (pixels at UI scale 1) still fits,
