@@ -4,7 +4,8 @@
 // text, and the views never smaller than the stated minimum, kMinViewsShare of the width
 // (app/window/window_app.cpp; the side panels collapse into one column first). Before, at
 // 1.5 the eye/target/light fields lost their last digits and the settings path was cut, at
-// 2 the fields' digits were cut in half, the inspector split numbers after their '.', and
+// 2 the fields' digits were cut in half, the inspector split numbers after their '.' (at
+// scale 1 and 1.5 too, where a value did not fit the column), and
 // in a 1280 x 800 window view A's image shrank to 360 x 314.
 //
 // Also: a parameter under `auto` shows what auto chose ("256 (auto)"), not its hand value;
@@ -102,6 +103,15 @@ std::vector<std::string> textProblems(const Drawn& drawn) {
     if (!t.scrollsX && t.frame.width() > 0 && (t.extent.x1 > t.frame.x1 + 0.5f || t.extent.x0 < t.frame.x0 - 0.5f))
       problems.push_back(describe(t) + ": runs past its frame (" + std::to_string(t.extent.x1) + " > " +
                          std::to_string(t.frame.x1) + "): glyphs lost");
+  }
+  // A number wrapped after its point ("B 0." / "25098": ImGui's wrapping may break after
+  // any '.') reads as two numbers.
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  for (size_t i = 0; i + 1 < drawn.texts.size(); ++i) {
+    const std::string &a = drawn.texts[i].text, &b = drawn.texts[i + 1].text;
+    if (a.size() >= 2 && a.back() == '.' && digit(a[a.size() - 2]) && !b.empty() && digit(b[0]) &&
+        drawn.texts[i].window == drawn.texts[i + 1].window && drawn.texts[i + 1].extent.y0 > drawn.texts[i].extent.y0)
+      problems.push_back(describe(drawn.texts[i]) + ": a number split over two lines ('" + b + "')");
   }
   for (size_t i = 0; i < drawn.texts.size(); ++i)
     for (size_t j = i + 1; j < drawn.texts.size(); ++j) {
