@@ -216,7 +216,7 @@ TEST(LayoutLesson, TheLessonStripDoesNotCoverTheViews) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("layout_lesson");
   const fs::path lesson = dir / "lesson.json";
-  std::ofstream(lesson) << R"([{"lesson": "A test lesson"}, {"eye_size": [160, 120]}, {"two_views": true},
+  std::ofstream(lesson) << R"([{"lesson": "A test lesson whose title is long enough to be cut by a title bar in a 1280 x 800 window"}, {"eye_size": [160, 120]}, {"two_views": true},
     {"say": "First step: a text long enough to wrap over several lines of the strip, so that the strip's height counts. The dragon's neck, in the thesis' Fig 3.5, lies at the bottom of the view."},
     {"wait": 2}, {"print_layout": "lesson"},
     {"say": "Second step: waits for the student."}])";

@@ -13,7 +13,7 @@ bool lessonShown(const LessonState& lesson) { return !lesson.text.empty() || !le
 float lessonPanelHeight(const UiState& state) {
   if (!lessonShown(state.lesson)) return 0;
   const ImGuiStyle& style = ImGui::GetStyle();
-  return ImGui::GetFrameHeight() + 2 * style.WindowPadding.y + ImGui::GetFrameHeightWithSpacing() +
+  return 2 * style.WindowPadding.y + ImGui::GetFrameHeightWithSpacing() +
          float(kLessonTextLines) * ImGui::GetTextLineHeightWithSpacing();
 }
 
@@ -24,10 +24,10 @@ void drawLessonWindow(UiState& state, float x, float y, float width, float heigh
   ImGui::SetNextWindowSize({width, height}, ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBringToFrontOnFocus;
-  const std::string title = "Lesson: " + (lesson.title.empty() ? std::string("(untitled)") : lesson.title) +
-                            "###lesson";
-  if (ImGui::Begin(title.c_str(), nullptr, flags)) {
+                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                                 ImGuiWindowFlags_NoTitleBar;
+  // No title bar: a title bar cuts a long title; the title is the text's first lines.
+  if (ImGui::Begin("###lesson", nullptr, flags)) {
     // 1. The step and the button first, so a long text that scrolls never hides them.
     if (lesson.steps > 0) {
       ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "Step %d of %d", lesson.step, lesson.steps);
@@ -48,9 +48,10 @@ void drawLessonWindow(UiState& state, float x, float y, float width, float heigh
     } else {
       ImGui::NewLine();
     }
-    // 2. The text, wrapped to the strip; it scrolls when longer than the strip.
+    // 2. The title and the text, wrapped to the strip; they scroll when longer than the strip.
     ImGui::BeginChild("##lesson_text");
     ImGui::PushTextWrapPos(0);
+    ImGui::TextColored({0.95f, 0.8f, 0.4f, 1}, "Lesson: %s", lesson.title.empty() ? "(untitled)" : lesson.title.c_str());
     ImGui::TextUnformatted(lesson.text.c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndChild();

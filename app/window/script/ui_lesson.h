@@ -8,9 +8,9 @@
 class UiState;
 
 // The strip's height at the current UI scale: 0 until a script says something, then the
-// title bar, the step line with the button and kLessonTextLines lines of text (a longer text
-// scrolls inside the strip). The same for every step, so the views keep their size.
-inline constexpr int kLessonTextLines = 6;
+// step line with the button and kLessonTextLines lines for the title and the text (a longer
+// text scrolls inside the strip). The same for every step, so the views keep their size.
+inline constexpr int kLessonTextLines = 7;
 float lessonPanelHeight(const UiState& state);
 
 // Draws nothing until a script says something; else the strip at (x, y), width x height.
