@@ -132,7 +132,7 @@ class LayoutFit : public ::testing::TestWithParam<Fit> {};
 }  // namespace
 
 // The pipeline panel at its top (scene, camera, light) and at the light stage (its `auto`
-// controls), the chart tab and the inspector with a picked texel and its ray.
+// controls), the chart tab, the inspector with a picked texel and its ray, and the 2 x 2 grid.
 TEST_P(LayoutFit, NoTextCutOrOverlappingAndTheViewsKeepTheirMinimum) {
   REQUIRE_DISPLAY();
   const Fit fit = GetParam();
@@ -142,7 +142,8 @@ TEST_P(LayoutFit, NoTextCutOrOverlappingAndTheViewsKeepTheirMinimum) {
     {"pick": [100, 40]}, {"wait": 3}, {"print_layout": "top"},
     {"select_stage": "light"}, {"wait": 2}, {"print_layout": "light"},
     {"speed_error": true}, {"wait": 2}, {"print_layout": "chart"},
-    {"select_output": "composite.color"}, {"speed_error": false}, {"wait": 2}, {"print_layout": "inspector"}])");
+    {"select_output": "composite.color"}, {"speed_error": false}, {"wait": 2}, {"print_layout": "inspector"},
+    {"layout": "grid"}, {"wait": 2}, {"print_layout": "grid"}])");
   const auto result = runPenumbra("--width " + std::to_string(fit.width) + " --height " + std::to_string(fit.height) +
                                   " --script " + script.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
@@ -164,6 +165,12 @@ TEST_P(LayoutFit, NoTextCutOrOverlappingAndTheViewsKeepTheirMinimum) {
     EXPECT_GE(image->width(), 0.5f * float(fit.width) - 48) << where << ", " << label;
     EXPECT_GE(image->height(), 0.5f * float(fit.height)) << where << ", " << label;
   }
+  // The 2 x 2 grid: four images, every toolbar's text whole.
+  const Drawn grid = layoutOf(result.output, "grid");
+  for (const std::string& problem : textProblems(grid)) ADD_FAILURE() << where << ", grid: " << problem;
+  int cells = 0;
+  for (const auto& [window, rect] : grid.images) cells += window.rfind("##views/view_", 0) == 0;
+  EXPECT_EQ(cells, 4) << where;
   // The inspector is shown (in one column with the pipeline where the window is narrow).
   bool picked = false;
   for (const Text& t : layoutOf(result.output, "inspector").texts) picked |= t.text.find(") in 160x120") != std::string::npos;
