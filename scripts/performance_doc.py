@@ -55,7 +55,21 @@ def number(text, digits):
         return text
 
 
-def section(bench, name):
+def link(path, out):
+    return os.path.relpath(path, os.path.dirname(os.path.abspath(out)))
+
+
+def loaded(facts):
+    """Whether the run's 1-minute load average before it exceeded the threads it names."""
+    m = re.search(r"(\d+) threads", facts.get("machine", ""))
+    load = facts.get("load", "").split()
+    try:
+        return m is not None and len(load) > 1 and float(load[1]) > int(m.group(1))
+    except ValueError:
+        return False
+
+
+def section(bench, name, out):
     directory = os.path.join(bench, name)
     facts = header_facts(os.path.join(directory, "results.md"))
     with open(os.path.join(directory, "results.csv"), encoding="utf-8", newline="") as f:
@@ -64,11 +78,14 @@ def section(bench, name):
     lines.append("- Command: `%s`" % facts.get("command", "(not recorded)"))
     lines.append("- Run: %s, %s s" % (facts.get("date", "(not recorded)"), facts.get("seconds", "?")))
     lines.append("- Machine: %s" % facts.get("machine", "(not recorded)"))
-    lines.append("- Load average (1, 5, 15 min): %s" % facts.get("load", "(not recorded)"))
-    lines.append("- Every configuration: [results.md](../%s/results.md)" % directory)
+    load = facts.get("load", "(not recorded)")
+    if loaded(facts):
+        load += " (more than the machine's threads: its milliseconds are unreliable; rerun on a quiet machine)"
+    lines.append("- Load average (1, 5, 15 min): %s" % load)
+    lines.append("- Every configuration: [results.md](%s)" % link(os.path.join(directory, "results.md"), out))
     chart = os.path.join(directory, "speed_vs_error.png")
     if os.path.exists(chart):
-        lines.append("- Chart: [speed_vs_error.png](../%s)" % chart)
+        lines.append("- Chart: [speed_vs_error.png](%s)" % link(chart, out))
     lines.append("")
     lines.append("| setup | configuration | method | ms/frame | mean abs e in shadow | RMSE |")
     lines.append("|---|---|---|---|---|---|")
@@ -105,10 +122,10 @@ def main():
         print("performance_doc: no result set (results.csv + results.md) under %s" % args.bench,
               file=sys.stderr)
         return 2
-    text = HEADER.format(bench=args.bench) + "\n" + "\n".join(section(args.bench, n) for n in names)
+    text = HEADER.format(bench=args.bench) + "\n" + "\n".join(section(args.bench, n, args.out) for n in names)
     stages = os.path.join(args.bench, "stages.md")
     if os.path.exists(stages):
-        text += "\n## Per stage\n\n`penumbra bench-stages`: [%s](../%s).\n" % (stages, stages)
+        text += "\n## Per stage\n\n`penumbra bench-stages`: [stages.md](%s).\n" % link(stages, args.out)
     temporary = args.out + ".tmp"
     with open(temporary, "w", encoding="utf-8") as f:
         f.write(text)
