@@ -1,7 +1,7 @@
 // penumbra: a step-by-step visualizer of Monte Carlo soft shadows (Curtis & Olano 2009).
-// Subcommands (DESIGN.md §1). One handler for every command: bad input (InputError: flags,
-// scenes, parameter values, output paths) prints what is wrong and exits with status 2;
-// any other exception is an internal failure, printed, exit status 1. Nothing escapes.
+// Subcommands (docs/design.md#program). One handler for every command: bad input (InputError:
+// flags, scenes, parameter values, output paths) prints what is wrong and exits with status 2; any
+// other exception is an internal failure, printed, exit status 1. Nothing escapes.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
