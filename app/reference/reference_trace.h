@@ -14,7 +14,7 @@
 //   the Embree scene: a receiver-only ground of any size does not count). The methods need
 //   the large bias of Eq 3.2 to survive depth-map resolution; the reference only needs to
 //   leave the surface's own triangle, so the offset stays tiny near the occluders and does
-//   not detach contact shadows (issue 12: with 1e-5 x the whole scene's diagonal, a plate
+//   not detach contact shadows (docs/accuracy.md: with 1e-5 x the whole scene's diagonal, a plate
 //   0.06 above a 1000-unit ground was 0.066 too bright in shadow).
 // - A light sample behind the receiver's tangent plane (n . (s - p) <= 0) is blocked: an
 //   opaque surface cannot see through itself. This is what the methods' backface early
