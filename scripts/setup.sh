@@ -10,6 +10,7 @@ packages=(
   libembree-dev
   libcairo2-dev  # the bench report's charts as PNG, SVG and PDF (app/bench/plot.cpp)
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
+  libgsl-dev  # chi-square and normal distributions of the hash statistics (app/stats/hash_stats.cpp)
   dieharder  # the real DIEHARD battery: penumbra hash-stats --dieharder (docs/hash_stats.md)
 )
 if [ "${1:-}" = fuzz ]; then packages+=(clang libfuzzer-14-dev llvm-14); fi

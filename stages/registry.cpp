@@ -37,10 +37,10 @@ std::vector<StageEntry> makeRegistry() {
   add(makeLightStage());                             // §3, Eq 3.1-3.2
   add(makeGBufferStage());                           // Alg. 1, step 1
   add(makeHashStage());                              // §3.1, App. A
-  add(makeHashStatsStage());                         // §3.1, §4.3, App. A (issue 11)
+  add(makeHashStatsStage());                         // §3.1, §4.3, App. A (docs/hash_stats.md)
   add(makeLightLayersStage());                       // §3.3
   add(makeNBufferStage());                           // §3.5
-  add(makeMinMaxStage());                            // §5.1 (issue 14)
+  add(makeMinMaxStage());                            // §5.1, decisions/024
   add(makeClassifyStage());                          // §3.6, Eq 3.3
   add(makeTraceStage());                             // §3.1-3.7, Alg. 2
   add(makeFilterStage(), {{"visibility", "trace.visibility"}});  // §3, Fig 3.2

@@ -1,8 +1,7 @@
-// `penumbra bench-compare` (issue 14): configurations of one scene timed back to back in
-// one run, frames alternating between them, so ratios hold on a loaded machine: per stage
-// the median milliseconds, the whole run's, chosen counters per frame, and (optionally) the
-// error against the Embree reference. A benchmark program: it writes numbers, asserts
-// nothing.
+// `penumbra bench-compare` (docs/design.md#bench): configurations of one scene timed back to back
+// in one run, frames alternating between them, so ratios hold on a loaded machine: per stage the
+// median milliseconds, the whole run's, chosen counters per frame, and (optionally) the error
+// against the Embree reference. A benchmark program: it writes numbers, asserts nothing.
 #pragma once
 #include <string>
 #include <vector>

@@ -101,9 +101,10 @@ int runBenchHierarchy(const BenchHierarchyOptions& options) {
     std::printf("map %d done\n", map);
     std::fflush(stdout);
   }
-  table << "\nRatios: min-max / N-buffer (targets of issue 14 at 2048^2: build <= 1/8, memory "
-           "<= 1/8, fetches within 1.5x). frame ms: the stages trace.visibility needs (classify "
-           "reads the side's hierarchy, Eq 3.3; the min-max side builds no N-buffer).\n";
+  table << "\nRatios: min-max / N-buffer (targets at 2048^2: build <= 1/8, memory <= 1/8, "
+           "fetches within 1.5x; docs/decisions/024-minmax-mipmap-atlas.md). frame ms: the "
+           "stages trace.visibility needs (classify reads the side's hierarchy, Eq 3.3; the "
+           "min-max side builds no N-buffer).\n";
   const std::filesystem::path out(options.out);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   writeTextFile(out, table.str());

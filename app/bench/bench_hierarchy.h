@@ -1,7 +1,7 @@
-// `penumbra bench-hierarchy` (issue 14): the N-buffer against the min-max mipmap, back to
-// back in one run (frames alternate between the two), per map size: hierarchy build time,
-// memory, fetches per searched ray, trace time, and whether the visibilities agree.
-// A benchmark program: it writes numbers, asserts nothing.
+// `penumbra bench-hierarchy` (docs/design.md#bench): the N-buffer against the min-max mipmap, back
+// to back in one run (frames alternate between the two), per map size: hierarchy build time,
+// memory, fetches per searched ray, trace time, and whether the visibilities agree. A benchmark
+// program: it writes numbers, asserts nothing.
 #pragma once
 #include <string>
 #include <vector>

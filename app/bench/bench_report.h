@@ -1,4 +1,4 @@
-// `penumbra bench`: speed against error (DESIGN.md §7). For each setup of the plan
+// `penumbra bench`: speed against error (docs/design.md#bench). For each setup of the plan
 // (app/bench/bench_configs.h) the exact reference is computed once (stage `reference`, cached on
 // disk); every configuration is timed (median of N frames after warm-up, glFinish + steady
 // clock per stage, summed over the stages the method's visibility depends on in the graph)

@@ -90,8 +90,8 @@ int runBenchStages(const BenchStagesOptions& options) {
   };
   std::vector<Row> rows;
   std::vector<std::string> columns;
-  // Memory per stage output (issue 14): every output any row of the first scene wrote,
-  // MiB from its format and size, in execution order.
+  // Memory per stage output (docs/decisions/021-stage-timings.md): every output any row of the
+  // first scene wrote, MiB from its format and size, in execution order.
   std::map<std::string, std::pair<std::string, double>> memory;  // output -> (shape, MiB)
   for (size_t sceneIndex = 0; sceneIndex < scenes.size(); ++sceneIndex) {
     const std::string& sceneName = sceneNames[sceneIndex];

@@ -106,7 +106,7 @@ int runExport(const ExportOptions& options) {
   std::printf("wrote %zu files into %s\n", written.size(),
               std::filesystem::absolute(options.outDirectory).c_str());
   // An empty frame (no receiver pixel) is the scene's or the camera's fault: the files are
-  // written (to look at), and the exit status is 2 as for any bad input (issue 12).
+  // written (to look at), and the exit status is 2 as for any bad input (docs/accuracy.md).
   const std::vector<float> positions = frame.texture("gbuffer.wsPosition").readFloats();
   size_t covered = 0;
   for (size_t i = 3; i < positions.size(); i += 4) covered += positions[i] != 0;

@@ -1,4 +1,4 @@
-// `penumbra hash-stats`: the DIEHARD-like statistics of the `hash_stats` stage (issue 11;
+// `penumbra hash-stats`: the DIEHARD-like statistics of the `hash_stats` stage (docs/hash_stats.md;
 // thesis §3.1, §4.3, Appendix A) from the command line, and the real battery:
 //   penumbra hash-stats [--hash H|all] [--pattern P|all] [--count N] [--keys K] [--key K0]
 //                       [--out DIR] [--dieharder]

@@ -1,7 +1,7 @@
 // penumbra: a step-by-step visualizer of Monte Carlo soft shadows (Curtis & Olano 2009).
-// Subcommands (DESIGN.md §1). One handler for every command: bad input (InputError: flags,
-// scenes, parameter values, output paths) prints what is wrong and exits with status 2;
-// any other exception is an internal failure, printed, exit status 1. Nothing escapes.
+// Subcommands (docs/design.md#program). One handler for every command: bad input (InputError:
+// flags, scenes, parameter values, output paths) prints what is wrong and exits with status 2; any
+// other exception is an internal failure, printed, exit status 1. Nothing escapes.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
   BenchHierarchyOptions hierarchyBench;
   CLI::App* benchHierarchyCommand = app.add_subcommand(
       "bench-hierarchy", "N-buffer against min-max mipmap, back to back per map size: build "
-                         "time, memory, fetches per searched ray, trace time (issue 14)");
+                         "time, memory, fetches per searched ray, trace time");
   benchHierarchyCommand->add_option("--out", hierarchyBench.out, "Markdown file")->capture_default_str();
   benchHierarchyCommand->add_option("--frames", hierarchyBench.frames, "timed frames per hierarchy")
       ->check(CLI::Range(1, 1000))->capture_default_str();
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
   BenchCompareOptions compareBench;
   CLI::App* benchCompareCommand = app.add_subcommand(
       "bench-compare", "configurations timed back to back, frames alternating: per-stage "
-                       "medians, counters, error against the reference, ratios (issue 14)");
+                       "medians, counters, error against the reference, ratios");
   benchCompareCommand->add_option("--out", compareBench.out, "Markdown file")->capture_default_str();
   benchCompareCommand->add_option("--title", compareBench.title, "the table's heading");
   benchCompareCommand->add_option("--scene", compareBench.scene)->capture_default_str();

@@ -32,13 +32,13 @@ struct Frame {
 
   std::map<std::string, GlTexture> textures;  // "stage.output"
   std::map<std::string, double> counters;     // statistics for people: "trace.rays", ...
-  AutoSettings autoSettings;  // what `auto` parameters chose (stage `light`; issue 12)
+  AutoSettings autoSettings;  // what `auto` parameters chose (stage `light`)
   std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
   std::map<std::string, std::unique_ptr<GlBuffer>> buffers;  // buffer outputs, "stage.output"
-  // Demand (issue 14): the outputs this run was asked for (Pipeline::run; empty: all), and
-  // those a stage wrote only where the stages after it read them because nobody asked for
-  // them (the N-buffer's texels that repeat a border window): inputs to the stages after,
-  // not outputs to show or export: has() and texture() treat them as not written.
+  // Demand (docs/decisions/014-outputs-nobody-asked-for.md): the outputs this run was asked for
+  // (Pipeline::run; empty: all), and those a stage wrote only where the stages after it read them
+  // because nobody asked for them (the N-buffer's texels that repeat a border window): inputs to
+  // the stages after, not outputs to show or export: has() and texture() treat them as not written.
   std::set<std::string> requested;
   std::set<std::string> partial;
 

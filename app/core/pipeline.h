@@ -1,6 +1,6 @@
-// The stage graph (DESIGN.md §2, changed: NOTES.md "stage graph"): the registry's stages,
-// their slots wired to producers, checked and ordered when built; parameters addressed as
-// "stage.key"; demand-driven runs; per-stage timing.
+// The stage graph (docs/design.md#stage-graph): the registry's stages, their slots wired to
+// producers, checked and ordered when built; parameters addressed as "stage.key";
+// demand-driven runs; per-stage timing.
 #pragma once
 #include <cstdint>
 #include <map>

@@ -1,5 +1,5 @@
-// A stage of the pipeline (DESIGN.md §3; Falcor's render passes are the model): it declares
-// its inputs, outputs and parameters once, and writes its outputs into the Frame. The
+// A stage of the pipeline (docs/design.md#stage-contract; after Falcor's render passes): it
+// declares its inputs, outputs and parameters once, and writes its outputs into the Frame. The
 // registry (stages/registry.cpp) wires input slots to other stages' outputs; the pipeline
 // checks the graph, orders it and runs only what the requested outputs depend on. The UI,
 // `--set`, export, bench, lessons and tests all read these declarations; no stage has UI or

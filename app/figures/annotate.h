@@ -1,4 +1,4 @@
-// Report-ready view PNGs (issue 15, "Figures for a report"): below the image as displayed,
+// Report-ready view PNGs (docs/lessons.md): below the image as displayed,
 // a band with a colour bar (range and the channel it shows, i.e. its units), or for
 // categorical masks a legend (swatch, name, share of pixels), and a caption line (scene,
 // output, key parameters). Only PNGs are annotated: the EXR stays raw.

@@ -1,4 +1,4 @@
-// A lesson's figure sheet (issue 15): its exported panels side by side, like the papers'
+// A lesson's figure sheet (docs/lessons.md): its exported panels side by side, like the papers'
 // figures, each under a label "(a)", "(b)", ... and its caption, with the lesson's title on
 // top; written as PNG and PDF (cairo). The layout depends only on the panel count, so a
 // sheet's size says how many panels it holds (figureSheetSize).

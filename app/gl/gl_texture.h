@@ -50,7 +50,8 @@ private:
 
 // Binds level 0 of `texture` (all its layers) to image unit `unit` for imageLoad, in its own
 // format. Hot passes read through images where they can: on llvmpipe an imageLoad costs a
-// third of a texelFetch (bench/llvmpipe-reads). Depth textures have no image format.
+// third of a texelFetch (docs/decisions/039-llvmpipe-lane-tuning-rejected.md). Depth
+// textures have no image format.
 void bindImageForReading(GLuint unit, const GlTexture& texture);
 
 // Framebuffers and buffers are created on first use, so stages can be declared (for --set,

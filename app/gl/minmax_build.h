@@ -1,6 +1,7 @@
-// Building the min-max mipmap (issue 14; layout in shaders/shared/minmax.glsl) from the
-// near and far light layers: level 0 is the layers themselves (not stored), level n >= 1
-// takes the min/max of the (up to) 2 x 2 children in level n-1, levels >= 1 in one atlas.
+// Building the min-max mipmap (layout in shaders/shared/minmax.glsl;
+// docs/decisions/024-minmax-mipmap-atlas.md) from the near and far light layers: level 0 is the
+// layers themselves (not stored), level n >= 1 takes the min/max of the (up to) 2 x 2 children in
+// level n-1, levels >= 1 in one atlas.
 #pragma once
 #include <glm/glm.hpp>
 

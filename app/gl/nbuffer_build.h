@@ -20,8 +20,8 @@ TexelSpan nbufferDistinctTexels(int level, int size);
 
 // Which texels of levels >= 2 a build writes: all, or only those holding distinct windows
 // (every read of the hierarchy goes to those; the stage writes all only when the levels are
-// shown or exported: issue 14, 29 % fewer texels over levels 1-9 at 512^2). Levels 0 and 1
-// come from one pass over every texel either way.
+// shown or exported: docs/decisions/014-outputs-nobody-asked-for.md, 29 % fewer texels over levels
+// 1-9 at 512^2). Levels 0 and 1 come from one pass over every texel either way.
 enum class NBufferTexels { All, Distinct };
 
 // Owns the two programs (fragment-shader passes: levels 0 and 1 together, then one per

@@ -3,10 +3,10 @@
 //
 // Why not a compute pass: llvmpipe writes fragment outputs a tile at a time, while a compute
 // shader's imageStore goes lane by lane and, for RGBA32F, channel by channel: measured on
-// the project's machine (issue 14, bench/llvmpipe-writes/unit-costs.md), one RGBA32F
-// imageStore per pixel of 640x480 takes 5.1 ms, an R32F one 0.9. Passes that write whole
-// images (the N-buffer's and min-max mipmap's levels, classification, the composite) are
-// fragment-shader passes.
+// the project's machine (docs/decisions/013-whole-image-passes-as-fragment-passes.md), one RGBA32F
+// imageStore per pixel of 640x480 takes 5.1 ms, an R32F one 0.9. Passes that write whole images
+// (the N-buffer's and min-max mipmap's levels, classification, the composite) are fragment-shader
+// passes.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -32,7 +32,7 @@ public:
   // The same after clearing target i to clearTo[i] (one value per target), as a clear of
   // the framebuffer the triangle is drawn into: llvmpipe then clears each tile as it shades
   // it, where glClearTexImage is a separate pass over memory on the calling thread
-  // (classification's two targets: 0.9-1.1 ms more per 640x480 frame, bench/llvmpipe-fixed-costs).
+  // (classification's two targets: 0.9-1.1 ms more per 640x480 frame, measured on llvmpipe).
   void clearAndDraw(const std::vector<const GlTexture*>& targets,
                     const std::vector<glm::vec4>& clearTo);
   // The same over the texels [origin, origin + size) of one target only (the viewport).

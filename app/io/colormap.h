@@ -1,4 +1,4 @@
-// Display mappings shared by the PNG export and the window's views (DESIGN.md §6).
+// Display mappings shared by the PNG export and the window's views (docs/design.md#exports).
 #pragma once
 #include <array>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Writing stage outputs (DESIGN.md §6): EXR with raw float values and named channels, PNG
+// Writing stage outputs (docs/design.md#exports): EXR with raw float values and named channels, PNG
 // as a view displays them. Every file is written under a temporary name and renamed.
 #pragma once
 #include <filesystem>

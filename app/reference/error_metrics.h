@@ -1,5 +1,6 @@
-// Error of a method's visibility against the reference (DESIGN.md §7), over the pixels that
-// count: receivers inside the light's map (classify.mask neither background nor outside).
+// Error of a method's visibility against the reference (docs/design.md#ground-truth), over the
+// pixels that count: receivers inside the light's map (classify.mask neither background nor
+// outside).
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
-// Exact reference visibility (DESIGN.md §7): at each receiver point, the fraction of an
-// m x m grid of light samples that the REAL triangles of the scene do not hide, ray traced
-// on the CPU with Embree 3. The stage `reference` (stages/ground_truth/reference.cpp) and `penumbra
+// Exact reference visibility (docs/design.md#ground-truth): at each receiver point, the fraction of
+// an m x m grid of light samples that the REAL triangles of the scene do not hide, ray traced on
+// the CPU with Embree 3. The stage `reference` (stages/ground_truth/reference.cpp) and `penumbra
 // bench` use it; it knows nothing about GL.
 //
 // Choices, and why (they make it the truth the methods are measured against):
@@ -14,7 +14,7 @@
 //   the Embree scene: a receiver-only ground of any size does not count). The methods need
 //   the large bias of Eq 3.2 to survive depth-map resolution; the reference only needs to
 //   leave the surface's own triangle, so the offset stays tiny near the occluders and does
-//   not detach contact shadows (issue 12: with 1e-5 x the whole scene's diagonal, a plate
+//   not detach contact shadows (docs/accuracy.md: with 1e-5 x the whole scene's diagonal, a plate
 //   0.06 above a 1000-unit ground was 0.066 too bright in shadow).
 // - A light sample behind the receiver's tangent plane (n . (s - p) <= 0) is blocked: an
 //   opaque surface cannot see through itself. This is what the methods' backface early

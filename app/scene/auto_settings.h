@@ -1,4 +1,4 @@
-// `auto`: model only what the scene needs (issue 12). From the scene and the current view,
+// `auto`: model only what the scene needs (docs/accuracy.md). From the scene and the current view,
 // on the CPU, before any GL work: the shadow-map resolution, the number of depth layers and
 // the rays per pixel, each with the measurement that chose it.
 //
@@ -14,7 +14,8 @@
 //    samples = n^2 x the filter's pixel count pi sigma^2, sigma = min(2, 0.5 x width in
 //    pixels), width the 2nd percentile of the probes; n is the smallest n >= 2 with at least
 //    kEffectiveSamples (24), at most 8.
-// 4. Resolution, weighing what the penumbrae need against what the map costs (session 4):
+// 4. Resolution, weighing what the penumbrae need against what the map costs
+//    (docs/decisions/043-auto-map-resolution.md):
 //    each probe stands for a strip of penumbra (its width times its quarter edge's shadow,
 //    in eye pixels). needed: the map on which 98% of that area spans kPenumbraTexels (6)
 //    texels at its receiver's depth (resolution = 6 x 2 z tan(fov/2) / w). affordable: the
@@ -60,7 +61,7 @@ inline constexpr double kPenumbraTexels = 6.0;
 inline constexpr double kEffectiveSamples = 24.0;
 inline constexpr int kMaxProbes = 20000;
 // One ray for one eye pixel costs about this many texel-levels of map build. On llvmpipe,
-// bench/auto-pareto/spheres (128x96, the 01:04 UTC run of session 3): light layers +
+// `penumbra bench --scene spheres --width 128 --height 96` (quiet machine): light layers +
 // N-buffer 6.5e-6 ms per texel-level at map 512 (20.5 ms) and 2048 (383 ms); the trace
 // 5.5e-5 ms per eye pixel and ray at 2x2, 4.0e-5 at 4x4, 6.3e-5 at 5x5 (ratios 6-10).
 inline constexpr double kTexelLevelsPerPixelRay = 8.0;

@@ -1,4 +1,4 @@
-// The eye's near and far planes from what the camera sees (issue 12): the range of view
+// The eye's near and far planes from what the camera sees (docs/accuracy.md): the range of view
 // depths of the scene's triangles clipped to the camera's view pyramid. A fixed fraction of
 // the scene's size (as before) put the near plane 7 units out when a 5000-unit ground
 // entered the scene, and a close camera then drew nothing.

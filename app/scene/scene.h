@@ -1,4 +1,4 @@
-// Only what shadows need (DESIGN.md §5): triangle meshes with a base colour and a
+// Only what shadows need (docs/design.md#scenes): triangle meshes with a base colour and a
 // "receiver only" flag, one rectangular area light, one camera.
 #pragma once
 #include <glm/glm.hpp>

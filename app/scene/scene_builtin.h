@@ -1,4 +1,4 @@
-// Built-in scenes are code (DESIGN.md §5). `cube` is the default.
+// Built-in scenes are code (docs/design.md#scenes). `cube` is the default.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
-// The real battery (issue 11; thesis §3.1): `penumbra hash --hash H | dieharder -g 200 -d N`
-// for each DIEHARD test N, in a background thread, one child process group per test (so
-// cancel ends exactly those processes), with the output parsed line by line. Used by
-// `penumbra hash-stats --dieharder` and the window's hash_stats panel.
+// The real battery (thesis §3.1; docs/hash_stats.md): `penumbra hash --hash H | dieharder -g 200 -d
+// N` for each DIEHARD test N, in a background thread, one child process group per test (so cancel
+// ends exactly those processes), with the output parsed line by line. Used by `penumbra hash-stats
+// --dieharder` and the window's hash_stats panel.
 #pragma once
 #include <atomic>
 #include <cstdint>

@@ -5,6 +5,10 @@
 #include <cstdio>
 #include <limits>
 
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_gamma.h>
+
 namespace hashstats {
 
 namespace {
@@ -15,36 +19,6 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
   char text[160];
   std::snprintf(text, sizeof text, pattern, a, b, c);
   return text;
-}
-
-// Regularized lower incomplete gamma P(a, x) by its series (x < a + 1) and the upper
-// Q(a, x) by Lentz's continued fraction (otherwise), as in Numerical Recipes §6.2.
-double gammaSeriesP(double a, double x) {
-  double term = 1.0 / a, sum = term;
-  for (int n = 1; n < 100000; ++n) {
-    term *= x / (a + n);
-    sum += term;
-    if (std::abs(term) < std::abs(sum) * 1e-16) break;
-  }
-  return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
-}
-
-double gammaFractionQ(double a, double x) {
-  const double tiny = 1e-300;
-  double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-  for (int i = 1; i < 100000; ++i) {
-    const double an = -i * (i - a);
-    b += 2;
-    d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
-    d = 1 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1) < 1e-16) break;
-  }
-  return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
 }
 
 TestResult correlationTest(const char* name, const Comoments& moments) {
@@ -103,13 +77,25 @@ const char* verdictName(Verdict verdict) {
 
 bool thesisPass(double p) { return p >= 0.01 && p <= 0.99; }
 
+// GSL's regularized upper incomplete gamma Q(dof/2, chi2/2), the chi-square upper tail
+// (gsl_cdf_chisq_Q is the same function, but reports an underflow through GSL's error
+// handler, which aborts by default: a failing hash gives chi-squares far in the tail, whose
+// p-value is 0, not an error).
 double chiSquareUpperP(double chiSquare, double dof) {
+  if (!(dof > 0) || std::isnan(chiSquare)) return kNaN;
   if (chiSquare <= 0) return 1.0;
-  const double a = dof / 2, x = chiSquare / 2;
-  return x < a + 1 ? 1.0 - gammaSeriesP(a, x) : gammaFractionQ(a, x);
+  gsl_sf_result q;
+  gsl_error_handler_t* previous = gsl_set_error_handler_off();
+  const int status = gsl_sf_gamma_inc_Q_e(dof / 2, chiSquare / 2, &q);
+  gsl_set_error_handler(previous);
+  if (status == GSL_EUNDRFLW) return 0.0;
+  return status == GSL_SUCCESS ? std::clamp(q.val, 0.0, 1.0) : kNaN;
 }
 
-double normalTwoSidedP(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
+double normalTwoSidedP(double z) {
+  if (std::isnan(z)) return kNaN;
+  return std::min(1.0, 2 * gsl_cdf_ugaussian_Q(std::abs(z)));
+}
 
 double ksUniformP(std::vector<double> values, double* statistic) {
   std::sort(values.begin(), values.end());
@@ -118,7 +104,12 @@ double ksUniformP(std::vector<double> values, double* statistic) {
   for (size_t i = 0; i < values.size(); ++i)
     d = std::max({d, (i + 1) / n - values[i], values[i] - i / n});
   if (statistic) *statistic = d;
-  // Kolmogorov's limit with Stephens's small-sample correction (NR §14.3).
+  // Kolmogorov's limiting distribution Q(lambda) = 2 sum_j (-1)^(j-1) exp(-2 j^2 lambda^2),
+  // with Stephens's small-sample correction of lambda (Stephens 1970; Numerical Recipes
+  // §14.3). Written here because neither Debian 12 library has it: GSL has no KS
+  // distribution, and Boost.Math's kolmogorov_smirnov.hpp arrived in Boost 1.75 (Debian 12
+  // ships 1.74). The series converges fast for lambda >= 0.2; below, Q is 1 to double
+  // precision (docs/decisions/042-distributions-from-gsl.md).
   const double lambda = (std::sqrt(n) + 0.12 + 0.11 / std::sqrt(n)) * d;
   if (lambda < 0.2) return 1.0;
   double sum = 0, sign = 1;

@@ -1,4 +1,4 @@
-// DIEHARD-like statistics of a hash (issue 11; thesis §3.1, §4.3, Appendix A; dieharder's
+// DIEHARD-like statistics of a hash (thesis §3.1, §4.3, Appendix A; docs/hash_stats.md; dieharder's
 // verdicts; FIPS 140-2 §4.9.1): from the counts and sums the GPU passes leave
 // (app/stats/hash_stats_gpu.h), every statistic and p-value in double on the CPU.
 #pragma once

@@ -1,4 +1,4 @@
-// The pictures of the hash statistics (issue 11), as float images in GL order (bottom row
+// The pictures of the hash statistics (docs/hash_stats.md), as float images in GL order (bottom row
 // first) with the display hint a view or the PNG export applies: the `hash_stats` stage
 // uploads them as its outputs, `penumbra hash-stats` writes them as PNG and EXR.
 #pragma once

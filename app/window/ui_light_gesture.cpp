@@ -128,10 +128,10 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
   return dragging;
 }
 
-// 3. The picked pixel's occlusion mask (raster4d, issue 10) on the light itself: cell (i, j)
-//    of the m x m grid, row i along the light's up, column j along its right from the corner
-//    -right -up (the samples' own layout), red where a triangle hides the sample, grey where
-//    it lies behind the receiver's tangent plane. Read back once per pipeline run.
+// 3. The picked pixel's occlusion mask (raster4d, docs/raster4d.md) on the light itself:
+//    cell (i, j) of the m x m grid, row i along the light's up, column j along its right from
+//    the corner -right -up (the samples' own layout), red where a triangle hides the sample,
+//    grey where it lies behind the receiver's tangent plane. Read back once per pipeline run.
 template <class Screen>
 void drawLightMask(const UiState& state, const std::array<glm::vec3, 4>& corners, const Screen& screen) {
   static std::vector<float> mask;

@@ -1,4 +1,4 @@
-// The area light in the scene views (issue 4, "light: ... by dragging in the scene view"):
+// The area light in the scene views (docs/design.md#window):
 // its rectangle drawn over every eye-sized view, and mouse gestures with Alt held:
 //   Alt + left drag          moves the light horizontally, by the motion of the ground point
 //                            under the cursor (so the light follows the cursor over the ground)

@@ -1,4 +1,4 @@
-// Which ground truth the window's live error is measured against (issue 10 item 6).
+// Which ground truth the window's live error is measured against (docs/raster4d.md).
 // Two ground truths exist: Embree on the CPU (`reference`: any scene, traced in the background
 // and cached on disk) and 4D rasterization on the GPU (`raster4d`: exact for its m x m grid of
 // light samples, computed inside the frame, so the error follows every change at once while
@@ -15,10 +15,10 @@ class UiState;
 constexpr double kInteractiveTruthMs = 250;
 
 // raster4d's milliseconds per run estimated before it has run on the scene: a power law fitted
-// to bench/raster4d.md's 32x32 rows on llvmpipe (128x128 eye: cube 12 occluder triangles 93 ms,
-// spheres 3072 -> 2082 ms, engine 121,496 -> 14,426 ms): linear in eye pixels and in the rows
-// m (paper Table 4), and occluderTriangles^0.55 (bigger scenes have smaller triangles, so the
-// pairs grow slower than the count).
+// to docs/raster4d_speed.md's 32x32 rows on llvmpipe (128x128 eye: cube 12 occluder triangles 93
+// ms, spheres 3072 -> 2082 ms, engine 121,496 -> 14,426 ms): linear in eye pixels and in the rows m
+// (paper Table 4), and occluderTriangles^0.55 (bigger scenes have smaller triangles, so the pairs
+// grow slower than the count).
 double estimateRaster4dMs(long long eyePixels, int samplesPerSide, long long occluderTriangles);
 
 struct LiveTruth {

@@ -169,7 +169,8 @@ void Session::setCameraMoving(bool moving) {
   previewing = moving;
 }
 
-// 4. Timings of the last run (DESIGN.md §7: medians over runs with identical settings).
+// 4. Timings of the last run (medians over runs with identical settings:
+// docs/decisions/021-stage-timings.md).
 double Session::lastPipelineMs() const {
   double total = 0;
   for (const StageTime& time : pipeline.lastTimes()) total += time.ran ? time.milliseconds : 0;

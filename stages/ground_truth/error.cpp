@@ -1,11 +1,11 @@
-// Stage `error` (DESIGN.md §7): a method's visibility minus the exact reference, as images
-// (signed, with a diverging colormap; absolute) and as numbers in frame.counters (RMSE, max,
-// mean |error| in shadow after Atty et al. 2006 §4.2.1, 99th percentile). Only receivers
-// inside the light's map count: the background has no shadow and, outside the map, no
-// method knows anything (classify marks both). `pixels = receivers` narrows that to the
-// receiver-only objects (stage `receivers`): soft shadow maps compute no self-shadowing
-// (Atty et al. 2006 §3), and §4.2.1 measures on the receiver, so an occluder's own surface
-// would count an error the paper never measures. Runs only while both inputs are written.
+// Stage `error` (docs/design.md#ground-truth): a method's visibility minus the exact reference, as
+// images (signed, with a diverging colormap; absolute) and as numbers in frame.counters (RMSE, max,
+// mean |error| in shadow after Atty et al. 2006 §4.2.1, 99th percentile). Only receivers inside the
+// light's map count: the background has no shadow and, outside the map, no method knows anything
+// (classify marks both). `pixels = receivers` narrows that to the receiver-only objects (stage
+// `receivers`): soft shadow maps compute no self-shadowing (Atty et al. 2006 §3), and §4.2.1
+// measures on the receiver, so an occluder's own surface would count an error the paper never
+// measures. Runs only while both inputs are written.
 //
 // On the CPU: the reference is a CPU image anyway, and the percentile and OIIO's compare
 // need the values there; at 512x512 the read-back costs a few milliseconds.

@@ -1,9 +1,9 @@
-// Stage `reference` (DESIGN.md §7): the exact visibility every method is measured against,
-// ray traced through the scene's real triangles on the CPU (app/reference/reference_trace.h explains
-// the occluder set, the origin offset and the sampling), cached in memory and on disk
-// (app/reference/reference_cache.h). Off by default: at 512x512 with 16x16 samples it costs seconds
-// per new view on two cores (bench/results.md has the measurement); export, bench and the
-// tests turn it on.
+// Stage `reference` (docs/design.md#ground-truth): the exact visibility every method is measured
+// against, ray traced through the scene's real triangles on the CPU
+// (app/reference/reference_trace.h explains the occluder set, the origin offset and the sampling),
+// cached in memory and on disk (app/reference/reference_cache.h). Off by default: at 512x512 with
+// 16x16 samples it costs seconds per new view on two cores (`penumbra export --set
+// reference.enabled=true` prints the time); export, bench and the tests turn it on.
 #include <chrono>
 #include <cstdio>
 #include <mutex>

@@ -3,7 +3,7 @@
 // can cross, refined iteratively over the hierarchy the trace reads (after Guennebaud et al.
 // 2006): the N-buffer (exact bounds over the region) or the min-max mipmap (at most
 // classify.minmax_cells aligned cells per axis covering it, 4 by default: conservative,
-// issue 14), so a frame builds only one. The
+// docs/decisions/026-classify-follows-trace-hierarchy.md), so a frame builds only one. The
 // bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
 #include <cstddef>
 
@@ -86,7 +86,7 @@ public:
                                        "is larger than the region (conservative: some lit or "
                                        "umbra pixels become penumbra); more cells cover it "
                                        "closer, for up to cells^2 fetches (cube 640x480, "
-                                       "bench/runs_s4.md: 4 beat 2, 6 and 8 end to end).",
+                                       "measured end to end: 4 beat 2, 6 and 8).",
                        4, 2, 8),
     };
   }

@@ -1,7 +1,8 @@
 // Stage `filter` (thesis §3, Fig 3.2): a separable depth-sensitive Gaussian over the
 // trace's unfiltered visibility, horizontal then vertical; by default only over the tiles
-// where it can change a value (issue 14; shaders/filter_tiles.comp says why that is exact,
-// whatever the weights: a window of equal values averages to that value).
+// where it can change a value (docs/decisions/025-filter-only-non-uniform-tiles.md;
+// shaders/filter_tiles.comp says why that is exact, whatever the weights: a window of equal values
+// averages to that value).
 #include <cmath>
 #include <cstddef>
 
@@ -60,8 +61,8 @@ public:
                     "Geometry: a sample's weight falls as exp(-d^2 / 2 (plane_sigma x pixel)^2), "
                     "d its distance from the centre pixel's tangent plane, pixel the world size "
                     "of one pixel there; 0: off. Keeps the lit top of an occluder from bleeding "
-                    "into a contact shadow beside it (issue 12: a plate 0.06 above the ground, "
-                    "mean |error| in shadow 0.35 without it).",
+                    "into a contact shadow beside it (a plate 0.06 above the ground: mean "
+                    "|error| in shadow 0.35 without it, docs/accuracy.md).",
                     1.0, 0, 100),
         Param::real("penumbra_scale",
                     "Penumbra width: a pair of pixels is blurred with sigma at most penumbra_scale "

@@ -45,18 +45,10 @@ Input hierarchyInput() {
 // call more pixels penumbra, and rays are shortened less: classify 1.4-2.1x, the trace
 // 1.0-1.7x in the runs below). The N-buffer's build is R^2 x (its level count,
 // ceil(log2 R) + 1) texel-levels; the extra cost of the looser bounds grows with the eye's
-// pixels. Measured on llvmpipe, three runs, frames alternating (bench/hierarchy-auto/
-// README.md), min-max frame time over the N-buffer's, by N-buffer texel-levels per eye
-// pixel: 7.7-10.7 (cube 320x240 map 256, cube 640x480 map 512, spheres 128x96 map 128,
-// dragon 640x480 map 512): 0.84-1.10, mostly about 1; 14.7 (map 640 at 640x480): cube
-// 0.89-0.94, dragon 0.95-1.08; 19 and up: 0.47-0.87 but for one dragon run at 1.03. The
-// crossover lies between 10.7 and 14.7. Session 7 (bench/hierarchy-auto/README.md section
-// 4), after the shaders were rewritten for llvmpipe's lockstep lanes: the crossover fell
-// (cube 320x240: at or below 4.3; cube 640x480 and dragon 640x480: 4.8-8.5), but the
-// window's default view of spheres (map 640 at 616x665, 11.0) takes 1.36x the N-buffer's
-// time with the min-max mipmap (the trace 2x: 12.6 against 7.5 fetches per searched ray),
-// so the constant stays. Session 10 (section 7): 7.7-8.5 on cube and dragon, the spheres'
-// default view still 1.56x: it stays.
+// pixels. The constant sits between the measured crossovers (even at 10.7 texel-levels per
+// eye pixel and below, min-max faster from 19 up) and keeps the window's default view of
+// spheres (11.0) on the N-buffer, where the min-max mipmap measured 1.36-1.56x slower:
+// docs/decisions/027-auto-hierarchy-rule.md has the runs and the command.
 constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
 
 class TraceStage final : public Stage {
@@ -102,8 +94,8 @@ public:
             "nbuffer (windows of 2^n around every texel, §3.5: exact bounds over any "
             "rectangle, log2 R + 1 full-size levels to build) or minmax (a min-max mipmap, "
             "quadtree-aligned cells, a third of one level's memory, about 1/19 of the "
-            "N-buffer's build at 2048^2; conservative bounds, so more pixels are traced; "
-            "issue 14). auto (the default): minmax once the N-buffer's texel-levels "
+            "N-buffer's build at 2048^2; conservative bounds, so more pixels are traced). "
+            "auto (the default): minmax once the N-buffer's texel-levels "
             "(R^2 x levels) exceed 12 per eye pixel: of auto's map sizes, from 640 at "
             "640x480, from 768 at the window's 616x665 (measured crossovers between 10.7 "
             "and 14.7).",
@@ -166,10 +158,10 @@ public:
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;
     GlTexture& visibility = frame.output(*this, "visibility", w, h);
-    // Demand (issue 14): the deferred pass writes the per-pixel cost only when someone shows
-    // or exports it (an RGBA32F store per traced pixel and a clear of the image: trace 0.83
-    // without them); the totals below are counted either way. The forward pass writes it as
-    // a second colour output, nearly free.
+    // Demand (docs/decisions/014-outputs-nobody-asked-for.md): the deferred pass writes the
+    // per-pixel cost only when someone shows or exports it (an RGBA32F store per traced pixel and a
+    // clear of the image: trace 0.83 without them); the totals below are counted either way. The
+    // forward pass writes it as a second colour output, nearly free.
     const bool deferred = param("deferred").asBool();
     const bool costWanted = !deferred || frame.wanted(name() + ".cost");
     if (!costWanted) frame.textures.erase(name() + ".cost");

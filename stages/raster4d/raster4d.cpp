@@ -30,9 +30,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// llvmpipe (gallivm) ends every loop of an invocation once the loops of its SIMD batch have
-// run 65535 iterations in all, silently (NOTES.md "raster4d"): every pass keeps its loop
-// iterations per invocation under this budget by splitting its work over dispatches.
+// llvmpipe (gallivm) ends every loop of an invocation once the loops of its SIMD batch have run
+// 65535 iterations in all, silently (docs/decisions/033-llvmpipe-loop-limit.md): every pass keeps
+// its loop iterations per invocation under this budget by splitting its work over dispatches.
 constexpr int kLoopBudget = 20000;
 
 // GL_TIME_ELAPSED is wrong on llvmpipe: glFinish + steady clock.

@@ -6,7 +6,8 @@
 // farthest a back face), and it keeps open meshes and zero-thickness sheets (glTF files,
 // the `plate` scene) as occluders with near == far instead of losing them from the far layer.
 // The far pass writes the far layer as a colour target beside its depth buffer (the same
-// values; issue 14: the risers pass then changes only sheet texels).
+// values; the risers pass then changes only sheet texels:
+// docs/decisions/015-far-layer-as-colour.md).
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/gpu_layout.h"
@@ -34,8 +35,8 @@ public:
         Param::boolean("close_risers",
                        "A zero-thickness sheet's far layer reaches down to its neighbours' "
                        "depths, so rays cannot slip between the steps a tilted sheet makes in "
-                       "the map (issue 12: off, a sheet tilted 35 degrees lets 1-4% of the rays "
-                       "through its umbra).",
+                       "the map (off, a sheet tilted 35 degrees lets 1-4% of the rays through "
+                       "its umbra: docs/accuracy.md).",
                        true),
     };
   }

@@ -1,9 +1,9 @@
-// Stage `minmax` (issue 14): the min-max mipmap over the light layers, the conventional
-// image pyramid of thesis §5.1's future work ("maximum mipmaps", Tevs et al. 2008). Each
-// texel holds (zNearMin, zNearMax, zFarMax) over a quadtree-aligned cell, from its 2 x 2
-// children: 1/3 of one level's memory (level 0 is the layers) where the N-buffer (§3.5)
-// keeps log2(W) + 1 levels.
-// Layout: shaders/shared/minmax.glsl. The trace searches it when trace.hierarchy = minmax.
+// Stage `minmax` (docs/decisions/024-minmax-mipmap-atlas.md): the min-max mipmap over the light
+// layers, the conventional image pyramid of thesis §5.1's future work ("maximum mipmaps", Tevs et
+// al. 2008). Each texel holds (zNearMin, zNearMax, zFarMax) over a quadtree-aligned cell, from its
+// 2 x 2 children: 1/3 of one level's memory (level 0 is the layers) where the N-buffer (§3.5) keeps
+// log2(W) + 1 levels. Layout: shaders/shared/minmax.glsl. The trace searches it when
+// trace.hierarchy = minmax.
 #include "core/frame.h"
 #include "gl/minmax_build.h"
 

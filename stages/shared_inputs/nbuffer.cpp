@@ -36,9 +36,9 @@ public:
     const int count = nbufferLevelCount(nearLayer.width(), nearLayer.height());
     GlTexture& levels =
         frame.output(*this, "levels", nearLayer.width(), nearLayer.height(), count);
-    // Demand-driven (issue 14): the stages after read only the texels holding distinct
-    // windows (nbuffer.glsl); the border bands that repeat them are written when someone
-    // shows or exports the levels.
+    // Demand-driven (docs/decisions/014-outputs-nobody-asked-for.md): the stages after read only
+    // the texels holding distinct windows (nbuffer.glsl); the border bands that repeat them are
+    // written when someone shows or exports the levels.
     const bool whole = frame.wanted(name() + ".levels");
     builder_.build(nearLayer, farLayer, levels,
                    whole ? NBufferTexels::All : NBufferTexels::Distinct);

@@ -1,4 +1,4 @@
-// The five defects of issue 12, each measured against the analytic oracle
+// The five defects of docs/accuracy.md, each measured against the analytic oracle
 // (tests/support/analytic_visibility.h) on a scene of the accuracy suite. Each test failed
 // before its fix; the numbers before/after are in docs/accuracy.md.
 #include <gtest/gtest.h>
@@ -187,7 +187,7 @@ TEST(AccuracyDefects, ThreeLayersDoNotLeakAtSilhouettes) {
   EXPECT_LE(stacked.meanInUmbra, 0.005);
 }
 
-// 5b. Nor under an outline seen at a grazing angle (session 4): at 128x96 the plate's top
+// 5b. Nor under an outline seen at a grazing angle: at 128x96 the plate's top
 //     changes its distance from the eye by more than trace.eye_tolerance across one pixel, so
 //     a ray crossing the plate near its front edge was "in front of" the pixel centre's
 //     sample, with no neighbour showing the plate nearer the eye, and leaked; the eye-layer

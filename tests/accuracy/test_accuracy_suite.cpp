@@ -1,5 +1,5 @@
-// The accuracy suite (issue 12): every scene of tests/support/analytic_scenes.h rendered with
-// the default parameters at 256x192 and compared with the exact analytic visibility.
+// The accuracy suite (docs/accuracy.md): every scene of tests/support/analytic_scenes.h rendered
+// with the default parameters at 256x192 and compared with the exact analytic visibility.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -53,9 +53,9 @@ TEST(AccuracySuite, DefaultsHoldOnEveryCase) {
       EXPECT_EQ(e.outOfRange, 0u) << name << " " << output;
       EXPECT_GT(e.pixelsInShadow, 100u) << name << ": the camera should see the shadow";
       if (output == std::string("filter.visibility")) {
-        // Issue 12's target, met on every case since the filter's Gaussian is cut at the
-        // penumbra's width (contact plates: 0.034 before) and light.normal_offset keeps the
-        // box's side faces from shadowing themselves (box: 0.042 before).
+        // The suite's target (docs/accuracy.md), met on every case since the filter's Gaussian is
+        // cut at the penumbra's width (contact plates: 0.034 before) and light.normal_offset keeps
+        // the box's side faces from shadowing themselves (box: 0.042 before).
         EXPECT_LE(e.meanAbsInShadow, 0.03) << name;
       }
       if (output == std::string("reference.visibility")) {

@@ -1,5 +1,5 @@
-// `penumbra bench-compare` (issue 14): a tiny run writes one row per side with the stages,
-// counters, fetches per searched ray and error columns; bad input exits 2 naming it.
+// `penumbra bench-compare` (docs/design.md#bench): a tiny run writes one row per side with the
+// stages, counters, fetches per searched ray and error columns; bad input exits 2 naming it.
 #include <gtest/gtest.h>
 
 #include <cstdlib>

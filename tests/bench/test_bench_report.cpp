@@ -183,7 +183,7 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   // Every method reads the light stage, so each is swept over both resolutions.
   EXPECT_EQ(swept[0].configs.size(), 2u * (1u + others));
   EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}, graph), std::invalid_argument);
-  // The default preset measures `auto` (issue 12) beside the fixed configurations; its
+  // The default preset measures `auto` (docs/accuracy.md) beside the fixed configurations; its
   // assignments apply and leave map, layers and rays automatic.
   const auto defaults = makeBenchPlan(plate, {"default", {}, 0, 0}, graph);
   const auto automatic = std::find_if(defaults[0].configs.begin(), defaults[0].configs.end(),

@@ -81,7 +81,8 @@ TEST(Cli, BadFlagsAndScenesExit2) {
   EXPECT_FALSE(fs::exists(never));
 }
 
-// A camera that sees nothing: the files are written, a loud message, exit status 2 (issue 12).
+// A camera that sees nothing: the files are written, a loud message, exit status 2
+// (docs/accuracy.md).
 TEST(Cli, ExportOfAnEmptyFrameExits2) {
   const TempDirectory scratch("penumbra_cli_empty_frame");  // unique: parallel runs never share it
   const fs::path& directory = scratch.path();

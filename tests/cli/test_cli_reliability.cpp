@@ -1,6 +1,6 @@
-// Issue 13 on the command line: no abort, no partial export, no silent wrong answer.
-// Output paths are checked before rendering (exit 2); an export directory is replaced as a
-// whole or not at all, also when the export is killed; extreme scenes are refused or warned
+// Reliability on the command line (docs/reliability.md): no abort, no partial export, no silent
+// wrong answer. Output paths are checked before rendering (exit 2); an export directory is replaced
+// as a whole or not at all, also when the export is killed; extreme scenes are refused or warned
 // about; messages stay short and say why.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// `penumbra hash-stats` (issue 11): the table, JSON and images it promises, bad flags exit 2
-// naming the valid values, and the dieharder runner: parsing, a real run, cancel.
+// `penumbra hash-stats` (docs/hash_stats.md): the table, JSON and images it promises, bad flags
+// exit 2 naming the valid values, and the dieharder runner: parsing, a real run, cancel.
 #include <gtest/gtest.h>
 
 #include <chrono>

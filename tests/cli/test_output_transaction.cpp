@@ -1,5 +1,5 @@
-// Issue 13: the directory transaction itself (app/io/output_path.h): the target holds the
-// old contents or the new, never both; nothing temporary is left after a failure.
+// The directory transaction itself (docs/reliability.md; app/io/output_path.h): the target holds
+// the old contents or the new, never both; nothing temporary is left after a failure.
 #include <gtest/gtest.h>
 
 #include <fstream>

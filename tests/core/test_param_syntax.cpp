@@ -1,4 +1,4 @@
-// Issue 13: numeric parameter values are plain decimals; strtod alone also took hex
+// Numeric parameter values are plain decimals (docs/reliability.md); strtod alone also took hex
 // ("trace.rays=0x4"), "inf", and leading spaces.
 #include <gtest/gtest.h>
 

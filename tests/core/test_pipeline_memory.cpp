@@ -1,5 +1,5 @@
-// Where time and memory go (issue 14, item 4): MiB per stage output from the declared
-// formats and sizes, and the two ways of timing stages (glFinish on llvmpipe,
+// Where time and memory go (docs/decisions/021-stage-timings.md): MiB per stage output from the
+// declared formats and sizes, and the two ways of timing stages (glFinish on llvmpipe,
 // GL_TIME_ELAPSED on a GPU; the query path is forced here to exercise it).
 #include <gtest/gtest.h>
 

@@ -240,8 +240,8 @@ TEST(StageGraph, OnlyWhatTheRequestedOutputsNeedRuns) {
   const auto closure = run.pipeline->dependencies({"filter.visibility"});
   EXPECT_EQ(std::set<std::string>(closure.begin(), closure.end()), ran());
 
-  // Issue 14: over the min-max mipmap, classification follows the trace's choice, so the
-  // N-buffer is not built at all.
+  // Over the min-max mipmap classification follows the trace's choice, so the N-buffer is not
+  // built at all (docs/decisions/026-classify-follows-trace-hierarchy.md).
   ASSERT_EQ(run.pipeline->set("trace.hierarchy=minmax"), "");
   run.pipeline->run(*run.frame, {"filter.visibility"});
   EXPECT_EQ(ran(), (std::set<std::string>{"light", "gbuffer", "light_layers", "minmax",
@@ -254,8 +254,9 @@ TEST(StageGraph, OnlyWhatTheRequestedOutputsNeedRuns) {
   EXPECT_EQ(run.pipeline->lastTime("trace").ran, false);
 }
 
-// `auto` hierarchy (issue 14): decided after the light stage from the map size and the eye's
-// pixels, and what runs follows the decision; the parameter stays auto and shows the choice.
+// `auto` hierarchy (docs/decisions/027-auto-hierarchy-rule.md): decided after the light stage from
+// the map size and the eye's pixels, and what runs follows the decision; the parameter stays auto
+// and shows the choice.
 TEST(StageGraph, TheAutoHierarchyIsDecidedFromTheMapAndTheEye) {
   auto ran = [](const Pipeline& pipeline) {
     std::set<std::string> names;

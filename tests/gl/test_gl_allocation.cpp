@@ -1,5 +1,5 @@
-// Issue 13: every GL allocation is checked. A texture or buffer the driver cannot allocate
-// (GL_OUT_OF_MEMORY, or a size past its limits) throws a message naming it and its size,
+// Every GL allocation is checked (docs/reliability.md). A texture or buffer the driver cannot
+// allocate (GL_OUT_OF_MEMORY, or a size past its limits) throws a message naming it and its size,
 // and a pipeline run that needs one fails instead of rendering into nothing.
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// Issue 13: scene input at and past the limits every back end can represent. Extreme
-// coordinates, node bombs and a scene over its budget are refused with the bound in the
-// message; failed loads keep their warnings; hostile keys stay short and printable; the
-// light's configurations the depth maps cannot show are warned about.
+// Scene input (docs/reliability.md) at and past the limits every back end can represent. Extreme
+// coordinates, node bombs and a scene over its budget are refused with the bound in the message;
+// failed loads keep their warnings; hostile keys stay short and printable; the light's
+// configurations the depth maps cannot show are warned about.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -561,11 +561,11 @@ void checkMinMaxClassification(const std::string& name, int mapSize, int cells) 
 
 }  // namespace
 
-// Issue 14: classification over the min-max mipmap (2 x 2 aligned cells covering Eq 3.3's
-// square) is conservative against brute-force min/max over the exact square: no pixel the
-// exact bounds call penumbra becomes lit or umbra; some lit or umbra pixels become penumbra
-// (counted), fewer with more cells per axis (classify.minmax_cells). A non-power-of-two map
-// exercises odd level sizes.
+// Classification over the min-max mipmap (docs/decisions/026-classify-follows-trace-hierarchy.md)
+// (2 x 2 aligned cells covering Eq 3.3's square) is conservative against brute-force min/max over
+// the exact square: no pixel the exact bounds call penumbra becomes lit or umbra; some lit or umbra
+// pixels become penumbra (counted), fewer with more cells per axis (classify.minmax_cells). A
+// non-power-of-two map exercises odd level sizes.
 TEST(Classify, MinMaxBoundsAreConservativeAgainstTheExactRegion) {
   for (int cells : {2, 4}) {
     checkMinMaxClassification("cube", 256, cells);

@@ -1,7 +1,7 @@
-// Stage `filter` blurs only the tiles where its window holds more than one value (issue 14,
-// item 2): bit for bit the output of the blur over every pixel, both passes, on several
-// scenes and parameters; the tiles it lists are the ones a CPU count over the trace's
-// visibility finds; and most of a shadowed scene is skipped.
+// Stage `filter` blurs only the tiles where its window holds more than one value
+// (docs/decisions/025-filter-only-non-uniform-tiles.md): bit for bit the output of the blur over
+// every pixel, both passes, on several scenes and parameters; the tiles it lists are the ones a CPU
+// count over the trace's visibility finds; and most of a shadowed scene is skipped.
 #include <gtest/gtest.h>
 
 #include <algorithm>

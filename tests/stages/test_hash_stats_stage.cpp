@@ -1,4 +1,4 @@
-// Stage `hash_stats` (issue 11): its pictures are the statistics of the chosen hash and
+// Stage `hash_stats` (docs/hash_stats.md): its pictures are the statistics of the chosen hash and
 // pattern (checked against the independent CPU oracle on the same numbers), a bad hash turns
 // the verdicts red, and the work is redone only when a parameter changes.
 #include <gtest/gtest.h>

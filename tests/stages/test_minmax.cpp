@@ -1,8 +1,9 @@
-// Oracle for the min-max mipmap (issue 14; layout in shaders/shared/minmax.glsl): every
-// texel of every level equals the brute-force min/max over its aligned cell of level-0
-// texels, computed on the CPU from the cell definition alone (never from the 2 x 2
-// recurrence the shader uses), and the atlas places the levels >= 1 where the layout says
-// (level 0 is the layers, not stored; the trace oracle tests read it through the search).
+// Oracle for the min-max mipmap (layout in shaders/shared/minmax.glsl;
+// docs/decisions/024-minmax-mipmap-atlas.md): every texel of every level equals the brute-force
+// min/max over its aligned cell of level-0 texels, computed on the CPU from the cell definition
+// alone (never from the 2 x 2 recurrence the shader uses), and the atlas places the levels >= 1
+// where the layout says (level 0 is the layers, not stored; the trace oracle tests read it through
+// the search).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // Stage `raster4d` (Wang et al. 2020) against an independent oracle, Embree: the reference
 // with `uniform` sampling traces exactly raster4d's light samples (cell centres), so every
-// (pixel, light sample) bit must agree but for ties at edges (issue 10: >= 99.99%). The
+// (pixel, light sample) bit must agree but for ties at edges (docs/raster4d.md: >= 99.99%). The
 // paper's optimizations are toggles that must not change a single bit.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The hash statistics (issue 11): the distributions against published quantiles, every GPU
-// statistic against the independent CPU computation of tests/support/hash_stats_oracle on
-// the same numbers, and known answers (constant, counter, identity, std::mt19937).
+// The hash statistics (docs/hash_stats.md): the distributions against published quantiles, every
+// GPU statistic against the independent CPU computation of tests/support/hash_stats_oracle on the
+// same numbers, and known answers (constant, counter, identity, std::mt19937).
 #include <gtest/gtest.h>
 
 #include <cmath>

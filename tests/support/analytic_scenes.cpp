@@ -52,7 +52,7 @@ Scene makeAnalyticScene(const std::string& name) {
   } else if (name == "tiny_light") {
     scene.objects.push_back(plateAt("plate", 1, at({0, 1, 0})));
     scene.light.width = scene.light.height = 0.05f;
-  } else if (name == "huge_ground") {  // issue 12 defects 1 and 2: a 1000-unit ground
+  } else if (name == "huge_ground") {  // docs/accuracy.md defects 1 and 2: a 1000-unit ground
     scene.objects[0] = groundOf(1000);
     scene.objects.push_back(plateAt("plate", 1, at({0, 0.06f, 0})));
   } else {

@@ -1,4 +1,4 @@
-// The accuracy suite of issue 12: small scenes of plates and boxes whose visibility the
+// The accuracy suite (docs/accuracy.md): small scenes of plates and boxes whose visibility the
 // analytic oracle (analytic_visibility.h) computes exactly, and the comparison of a pipeline
 // output with it. Every scene: a receiver-only ground, convex occluders, one area light,
 // a camera that sees the shadow.

@@ -1,5 +1,5 @@
 // Exact visibility of a rectangular area light from a point through convex planar polygons
-// (issue 12), independent of the renderer: no depth map, no sampling, no GL, no Embree.
+// (docs/accuracy.md), independent of the renderer: no depth map, no sampling, no GL, no Embree.
 //
 // THE GEOMETRY
 // - The light is the rectangle c + a r + b u, |a| <= halfWidth, |b| <= halfHeight (r, u

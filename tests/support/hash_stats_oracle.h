@@ -1,5 +1,5 @@
-// Independent CPU computation of the hash statistics (issue 11), for the tests: the pattern
-// inputs, the samples through the C++ hash twins, and every count, sum and block statistic
+// Independent CPU computation of the hash statistics (docs/hash_stats.md), for the tests: the
+// pattern inputs, the samples through the C++ hash twins, and every count, sum and block statistic
 // computed directly in double from the numbers, without the GPU's layout or passes.
 #pragma once
 #include <array>

@@ -1,7 +1,6 @@
-// Exact visibility of a rectangular light through rectangles parallel to it (DESIGN.md §8
-// "analytic visibility for parallel rectangles"), in world space and double precision,
-// written without the shaders' light-space conventions: the oracle of the soft-shadow-map
-// tests (tests/stages/test_ssm*.cpp).
+// Exact visibility of a rectangular light through rectangles parallel to it
+// (docs/design.md#tests), in world space and double precision, written without the shaders'
+// light-space conventions: the oracle of the soft-shadow-map tests (tests/stages/test_ssm*.cpp).
 //
 // Seen from a receiver point R, a rectangle parallel to the light projects (back-projects)
 // onto the light plane as a rectangle with the same axes; the hidden fraction of the light

@@ -1,4 +1,4 @@
-// Issue 15, "Figures for a report": every lesson in lessons/ parses and is a lesson (a title,
+// Figures for a report (docs/lessons.md): every lesson in lessons/ parses and is a lesson (a title,
 // texts, at least one panel); the figure sheet's size follows from its panel count alone;
 // an annotated PNG carries the view's colour bar (checked against the colormap itself), a
 // categorical legend, and `penumbra export --annotate` annotates PNGs while the EXRs stay raw.

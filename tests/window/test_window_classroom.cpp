@@ -1,8 +1,8 @@
-// The window in a classroom (issue 15): the speed-vs-error chart is a tab of the right panel,
-// so no window floats over the views; no panel's contents run past its right edge at UI
-// scale 1 and 1.5 (default window size); linked views follow the active one's zoom and pan;
-// a second view of what the frame already holds runs nothing, and the pick stays on the same
-// place of a resized eye; the settings file keeps the view state and the UI scale.
+// The window in a classroom (docs/classroom.md): the speed-vs-error chart is a tab of the right
+// panel, so no window floats over the views; no panel's contents run past its right edge at UI
+// scale 1 and 1.5 (default window size); linked views follow the active one's zoom and pan; a
+// second view of what the frame already holds runs nothing, and the pick stays on the same place of
+// a resized eye; the settings file keeps the view state and the UI scale.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -74,7 +74,7 @@ std::vector<int> pickOf(const std::string& output, const std::string& label) {
 
 }  // namespace
 
-// Before issue 15 the collapsed "Speed vs error" window lay over the middle of the views.
+// A collapsed "Speed vs error" window must not lie over the middle of the views.
 TEST(WindowClassroom, NoWindowFloatsOverTheViews) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("classroom_overlap");
@@ -104,8 +104,8 @@ TEST(WindowClassroom, NoWindowFloatsOverTheViews) {
   EXPECT_EQ(gridViews, 4) << result.output;
 }
 
-// Panels have no horizontal scrollbar: contents past the right edge are clipped text. (Before
-// issue 15 at scale 1: the inspector 80 px, the pipeline panel 26 px, the help window 168 px.)
+// Panels have no horizontal scrollbar: contents past the right edge are clipped text (once
+// measured at scale 1: the inspector 80 px, the pipeline panel 26 px, the help window 168 px).
 TEST(WindowClassroom, NoPanelContentsRunPastTheRightEdgeAtScale1And15) {
   REQUIRE_DISPLAY();
   const fs::path dir = scratchDirectory("classroom_scale");

@@ -1,7 +1,7 @@
-// The window runs only what it shows (issue 8): with gbuffer.albedo in the view only the
-// G-buffer runs and the timings say "not run" for the rest; the composite runs its whole
-// dependency closure; toggling a parameter starts a new timing series, so the new cost shows
-// after one run. Also the run key: nothing re-runs while nothing changes.
+// The window runs only what it shows (docs/design.md#stage-graph): with gbuffer.albedo in the view
+// only the G-buffer runs and the timings say "not run" for the rest; the composite runs its whole
+// dependency closure; toggling a parameter starts a new timing series, so the new cost shows after
+// one run. Also the run key: nothing re-runs while nothing changes.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -55,7 +55,8 @@ TEST(WindowDemand, OnlyTheShownOutputsRunAndANewParameterStartsANewSeries) {
        {"gbuffer", "light", "light_layers", "classify", "trace", "filter", "composite"})
     EXPECT_NE(stageLine(composite, stage).find(" ms (last "), std::string::npos) << stage << "\n"
                                                                                  << composite;
-  // One hierarchy, the one trace.hierarchy=auto chose (issue 14), not both.
+  // One hierarchy, the one trace.hierarchy=auto chose (docs/decisions/027-auto-hierarchy-rule.md),
+  // not both.
   const bool nbuffer = stageLine(composite, "nbuffer").find(" ms (last ") != std::string::npos;
   const bool minmax = stageLine(composite, "minmax").find(" ms (last ") != std::string::npos;
   EXPECT_NE(nbuffer, minmax) << composite;

@@ -65,7 +65,8 @@ TEST(WindowLesson, Fig32LessonExportsFiguresWhoseNoiseFallsWithRaysAndFilter) {
   EXPECT_GT(one, 1.3 * four) << one << " " << four;
   EXPECT_GT(four, 1.3 * sixteen) << four << " " << sixteen;
   EXPECT_GT(sixteen, 1.3 * filtered) << sixteen << " " << filtered;
-  // Issue 15: the lesson's figure sheet (its five panels, 3 + 2) as PNG and PDF, and its text.
+  // The lesson's figure sheet (docs/lessons.md) (its five panels, 3 + 2) as PNG and PDF, and its
+  // text.
   OIIO::ImageBuf sheet((dir / "figure_sheet.png").string());
   ASSERT_TRUE(sheet.read()) << sheet.geterror();
   const SheetSize expected = figureSheetSize(5);

@@ -1,4 +1,4 @@
-// The live error's ground truth (issue 10 item 6, app/window/ui_live_truth.h): the window
+// The live error's ground truth (app/window/ui_live_truth.h; docs/raster4d.md): the window
 // compares against raster4d when its predicted time per run is interactive (estimated before
 // it ran, then from its measured time scaled to the eye size), against Embree otherwise or
 // when raster4d is itself the method measured; a choice the user made is never overridden.

@@ -1,8 +1,8 @@
-// Issue 10's "Done means" in the window, driven by --script under Xvfb: a student selects
-// raster4d, picks a penumbra pixel and sees its 32 x 32 mask on the light (occluded cells
-// counted against the pixel's visibility); switches the early rejection off and the pairs
-// tested grow (the time too, but it is not asserted: the machine is shared); the error view
-// against Embree at the same samples is black (at most one tie bit per pixel).
+// What a user does (docs/raster4d.md) in the window, driven by --script under Xvfb: a student
+// selects raster4d, picks a penumbra pixel and sees its 32 x 32 mask on the light (occluded cells
+// counted against the pixel's visibility); switches the early rejection off and the pairs tested
+// grow (the time too, but it is not asserted: the machine is shared); the error view against Embree
+// at the same samples is black (at most one tie bit per pixel).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,7 +2,8 @@
 // (window/ui_graph.h rayOverlayTarget): over the N-buffer's levels, one map-sized layer each;
 // over the near layer when the trace searched the min-max mipmap, whose atlas of smaller
 // levels the windows (in level-0 texels) do not fit. trace.hierarchy=auto chooses the min-max
-// mipmap on large maps (issue 14), so this is the default on the window's engine and dragon.
+// mipmap on large maps (docs/decisions/024-minmax-mipmap-atlas.md), so this is the default on the
+// window's engine and dragon.
 #include <gtest/gtest.h>
 
 #include "scene/scene_builtin.h"

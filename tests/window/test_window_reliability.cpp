@@ -1,6 +1,6 @@
-// Issue 13 in the window: after a failed pipeline run the frame holds new, blank and stale
-// outputs side by side, so every export is refused, saying why, until a run succeeds; the
-// status line's light warnings follow the light.
+// Reliability in the window (docs/reliability.md): after a failed pipeline run the frame holds new,
+// blank and stale outputs side by side, so every export is refused, saying why, until a run
+// succeeds; the status line's light warnings follow the light.
 #include <gtest/gtest.h>
 
 #include <filesystem>

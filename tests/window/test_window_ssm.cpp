@@ -1,7 +1,7 @@
-// Issue 9's "Done means" for soft shadow maps, driven through the window by --script under
-// Xvfb: a student selects ssm, watches the soft shadow map fill up (ssm.fill), picks a
-// penumbra pixel and sees its back-projected micro-patches on the light (ssm.pickedLight),
-// switches one pass -> two passes and R32F -> R16F and sees the error view change.
+// What a user does (docs/ssm_pcss.md) for soft shadow maps, driven through the window by --script
+// under Xvfb: a student selects ssm, watches the soft shadow map fill up (ssm.fill), picks a
+// penumbra pixel and sees its back-projected micro-patches on the light (ssm.pickedLight), switches
+// one pass -> two passes and R32F -> R16F and sees the error view change.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -96,7 +96,7 @@ TEST(WindowUnits, SettingsRoundTripEveryParameterCameraLightAndEye) {
     Param& param = original.session.pipeline.param(key);
     param.value = param.type == Param::Type::Float ? param.min + (param.max - param.min) / 3.0
                                                    : param.max;  // exactly representable
-    param.automatic = false;  // `auto` (issue 12) is saved as "auto", not as the value
+    param.automatic = false;  // `auto` (docs/accuracy.md) is saved as "auto", not as the value
   }
   const json saved = settingsJson(original);
   UiState loaded;
@@ -342,7 +342,7 @@ TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
             std::string::npos);
 }
 
-// Issue 15: a lesson's figures never land in the working directory itself: without --export
+// A lesson's figures (docs/lessons.md) never land in the working directory itself: without --export
 // and export_dir they go under the output folder in a folder named after the lesson's file.
 TEST(WindowUnits, ALessonWithoutExportDirExportsUnderTheOutputFolderByItsName) {
   const std::string lesson = R"([{"lesson": "t"}, {"screenshot": "a.png"}])";

@@ -1,4 +1,4 @@
-// Exports from the window (DESIGN.md §6): a view "as displayed" (PNG, the view's current
+// Exports from the window (docs/design.md#exports): a view "as displayed" (PNG, the view's current
 // channels, range, colormap and overlay) or raw (EXR), and "export all stages", which writes
 // exactly what `penumbra export` writes for the same settings (app/cli/export_command.h).
 // File names say the scene, the output, the eye size and the stage's non-default parameters.

@@ -129,7 +129,8 @@ void drawCounters(const UiState& state) {
 }
 
 // What the parameters set to `auto` chose for this scene and view, and why
-// (app/scene/auto_settings.h; issue 12). Whether there are reasons to show.
+// (app/scene/auto_settings.h; docs/decisions/043-auto-map-resolution.md). Whether there are reasons
+// to show.
 bool hasAutoReasons(const UiState& state) {
   return state.session.frame && !state.session.frame->autoSettings.reasons.empty();
 }

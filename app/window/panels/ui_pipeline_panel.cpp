@@ -80,7 +80,8 @@ void drawInput(UiState& state, const Stage& stage, const Input& input) {
                       texture ? "click: show the producer's output" : "a storage buffer (not viewable)");
 }
 
-// 1c. Stage-specific view (issue 4): the light layers' difference, far - near, where covered.
+// 1c. Stage-specific view (docs/design.md#window): the light layers' difference, far - near, where
+// covered.
 void drawThicknessLine(UiState& state) {
   const LayerOutputs layers = layerOutputs(state.session.pipeline);
   bool shown = false;
@@ -146,7 +147,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
   ImGui::PopItemWidth();
   const std::string comparison = comparisonOutput(state.session.pipeline);
   if (comparison.rfind(stage.name() + ".", 0) == 0) drawReferenceProgress(state);  // issues 5, 10
-  if (stage.name() == "hash_stats") drawHashStatsPanel(state);  // issue 11
+  if (stage.name() == "hash_stats") drawHashStatsPanel(state);  // docs/hash_stats.md
   ImGui::PopID();
   ImGui::Spacing();
 }

@@ -1,4 +1,4 @@
-// The "speed vs error" panel (issue 5, made live in issue 8): time against mean |error| in
+// The "speed vs error" panel (docs/design.md#bench): time against mean |error| in
 // shadow on log axes with the Pareto frontier (app/bench/pareto.h), for
 //  - a live run (app/bench/live_bench.h): the current scene's methods and configurations
 //    measured in the background, one step per window frame, with progress and cancel; the

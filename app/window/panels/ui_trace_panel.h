@@ -1,4 +1,4 @@
-// HOOK: the per-ray march trace panel (issue 4, "Stage-specific views").
+// HOOK: the per-ray march trace panel (docs/design.md#window).
 //
 // The trace stage records every step of one pixel's rays; this panel draws those steps
 // without knowing the search: a table, a plot of ray depth against step with each visited

@@ -1,8 +1,8 @@
-// The lesson panel (DESIGN.md §1 `penumbra lesson FILE`): a lesson is a script (app/window/script/ui_script.h)
-// whose "say" actions explain each step; this panel shows the lesson's title, the step number
-// and the text in a strip below the views (the window's layout takes its height from theirs,
-// so it never covers a view). Played interactively, it has the "Next" button (also Space or
-// N) that lets the script go on to its next "say".
+// The lesson panel (`penumbra lesson FILE`, docs/design.md#program): a lesson is a script
+// (app/window/script/ui_script.h) whose "say" actions explain each step; this panel shows the
+// lesson's title, the step number and the text in a strip below the views (the window's layout
+// takes its height from theirs, so it never covers a view). Played interactively, it has the
+// "Next" button (also Space or N) that lets the script go on to its next "say".
 #pragma once
 
 class UiState;

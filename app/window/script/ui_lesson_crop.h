@@ -1,4 +1,4 @@
-// A lesson's crop (issue 15, thesis Fig 3.5): {"crop": [x, y, w, h]} in image coordinates
+// A lesson's crop (thesis Fig 3.5; docs/lessons.md): {"crop": [x, y, w, h]} in image coordinates
 // (row 0 at the top) makes the following export_view panels hold only that rectangle, and
 // {crop.rmse}, {crop.meanSigned}, ... in a text the error stage's numbers over the pixels
 // that count inside it; {"crop": "none"} goes back to the whole image. A local effect (one

@@ -1,4 +1,4 @@
-// A lesson's figures (issue 15, "Figures for a report"): where they go, the numbers its
+// A lesson's figures (docs/lessons.md): where they go, the numbers its
 // texts quote from the run, each exported panel with its caption, and at the end the figure
 // sheet (app/figures/figure_sheet.h) and lesson.md (the title, every "say" as played, the
 // panels and their captions).

@@ -33,7 +33,8 @@
 //   {"thickness": true} (light_layers.far - near, negative -> 0), {"clip_negative": true},
 //   {"show_light": false} (the light outline over scene views)
 //   {"show_ray": true} (nbuffer.levels in the active view, zoomed onto the picked ray's shapes)
-// Lessons (DESIGN.md §1 `penumbra lesson`): a lesson is a script with texts for the student:
+// Lessons (`penumbra lesson`, docs/design.md#program): a lesson is a script with texts for
+// the student:
 //   {"lesson": "title"}  {"say": "text shown in the lesson panel and printed to stdout"}
 //   {"export_dir": "name"} (relative export_view / export_all / screenshot paths go into
 //                          that folder under the output folder; `--export DIR` overrides it;

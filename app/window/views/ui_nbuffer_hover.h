@@ -1,4 +1,4 @@
-// N-buffer views (issue 4, "Stage-specific views"): the level-0 window that the hovered texel
+// N-buffer views (docs/design.md#window): the level-0 window that the hovered texel
 // of level n summarises, drawn as a rectangle. The N-buffer is the output wired to the
 // trace's "levels" slot (window/ui_graph.h recordingInput), one array layer per level. The
 // window rule is the layout spec of shaders/shared/nbuffer.glsl (nbufferWindow1D), restated

@@ -1,5 +1,5 @@
-// A view of the difference of two stage outputs, A - B (issue 4: "Light layers: near, far,
-// and their difference (thickness)"; "a second view ... for comparisons"). Generic: any two
+// A view of the difference of two stage outputs, A - B (docs/design.md#window): the light layers'
+// thickness (far - near), or any comparison of two outputs. Generic: any two
 // outputs of the same size, e.g.
 //   light_layers.far - light_layers.near   occluder thickness where both layers are covered
 //                                          (uncovered texels give 0 - 1 < 0: "negative -> 0")
