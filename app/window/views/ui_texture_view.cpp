@@ -217,6 +217,15 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
   ImGui::TextUnformatted(fitting({what + (" " + where) + ": " + text, where + " " + text, text}).c_str());
 }
 
+// 4b. Why a view has nothing to show: its output has not been run yet (it runs next
+//     frame), the last run failed, or the last run did not write it.
+std::string notShownReason(const UiState& state, const ViewPanel& view) {
+  if (!state.session.runError.empty())
+    return "'" + view.output + "' was not written: the last run failed (the log says why)";
+  if (state.needsRun()) return "'" + view.output + "': not run yet";
+  return "'" + view.output + "' was not written by the last run";
+}
+
 }  // namespace
 
 // 5. Child window: toolbar, image region, readout.
@@ -250,7 +259,13 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   std::string problem;
   const GlTexture* texture = shownTexture(state, view, &problem);
   if (texture) syncSettings(state, view, *texture);
+  const std::string shownOutput = view.output, shownMinus = view.minus;
   drawViewToolbar(state, view, texture, compact);
+  if (view.output != shownOutput || view.minus != shownMinus) {  // picked in the toolbar just now
+    problem.clear();
+    texture = shownTexture(state, view, &problem);  // usually none: the next frame runs it
+    if (texture) syncSettings(state, view, *texture);
+  }
   const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const glm::vec2 regionSize{std::max(avail.x, 16.0f), std::max(avail.y - readoutHeight, 16.0f)};
@@ -258,8 +273,7 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   if (!texture) {
     view.regionSize = regionSize;
     ImGui::Dummy(toIm(regionSize));
-    if (problem.empty()) ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
-    else ImGui::TextDisabled("%s", problem.c_str());
+    ImGui::TextDisabled("%s", problem.empty() ? notShownReason(state, view).c_str() : problem.c_str());
   } else {
     placeImage(view, *texture, regionSize);
     if (view.frameOverlays) frameOverlays(state, view, {texture->width(), texture->height()}, regionSize);
