@@ -77,8 +77,12 @@ const std::string& UiState::fail(const std::string& source, const std::string& p
 
 // Exports answer "wrote ..." when they wrote (ui_export.h), else what went wrong.
 void UiState::reportExport(const std::string& result) {
-  if (result.rfind("wrote ", 0) == 0) status = result;
-  else fail("export", result);
+  reportResult("export", result, result.rfind("wrote ", 0) == 0);
+}
+
+void UiState::reportResult(const std::string& source, const std::string& result, bool ok) {
+  if (ok) status = result;
+  else fail(source, result);
 }
 
 // 2. Selection: into the view that takes it, with the output's declared display.

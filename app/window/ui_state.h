@@ -35,6 +35,7 @@ public:
   void report(LogLevel level, const std::string& source, const std::string& message);
   const std::string& fail(const std::string& source, const std::string& problem);
   void reportExport(const std::string& result);
+  void reportResult(const std::string& source, const std::string& result, bool ok);  // ok: status only
   bool statusIsProblem() const { return !status.empty() && status == lastProblem_; }
 
   // Actions. Each returns "" or a message naming what is valid (and logs it).

@@ -87,8 +87,7 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
     if (ImGui::IsKeyPressed(GLFW_KEY_Q, false)) glfwSetWindowShouldClose(window, GLFW_TRUE);
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
       const std::string result = saveSettingsFile(state, "penumbra_settings.json");
-      if (result.rfind("saved ", 0) == 0) state.status = result;
-      else state.fail("settings", result);
+      state.reportResult("settings", result, result.rfind("saved ", 0) == 0);
     }
     if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.reportExport(exportAllStages(state, ""));
     return;

@@ -102,18 +102,22 @@ void drawTools(UiState& state) {
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Save", "Load", "(?)"}));
   ImGui::InputText("##settings", &settingsPath);
   ImGui::SameLine();
-  if (ImGui::Button("Save")) state.status = saveSettingsFile(state, settingsPath);
+  if (ImGui::Button("Save")) {
+    const std::string result = saveSettingsFile(state, settingsPath);
+    state.reportResult("settings", result, result.rfind("saved ", 0) == 0);
+  }
   ImGui::SameLine();
   if (ImGui::Button("Load##settings")) {
     bool ok = false;
-    state.status = loadSettingsFile(state, settingsPath, ok);
+    const std::string result = loadSettingsFile(state, settingsPath, ok);
+    state.reportResult("settings", result, ok);
   }
   helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
              "Open one at start with `penumbra --config FILE`.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - buttonsWidth({"Export all", "(?)"}));
   ImGui::InputTextWithHint("##exportdir", kDefaultExportDirectory, &exportDirectory);
   ImGui::SameLine();
-  if (ImGui::Button("Export all")) state.status = exportAllStages(state, exportDirectory);
+  if (ImGui::Button("Export all")) state.reportExport(exportAllStages(state, exportDirectory));
   helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
              "`penumbra export` with these settings.");
   if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();
