@@ -101,5 +101,6 @@ struct Session {
   double framesPerSecond() const;
   double framesDrawnPerSecond() const;
   int framesMeasured() const { return int(frameSeconds.size()); }
+  int uiFramesBuilt = 0, uiFramesDrawn = 0;  // UI frames built / drawn and swapped (window_app.cpp)
   void recordFrame(double drawSeconds, double endSeconds);
 };

@@ -3,6 +3,7 @@
 // The actions here touch more than one part. No ImGui here, so every action a click performs
 // can also be performed by a script line.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ public:
   bool showHelp = false, showShaderLog = false, showLog = false;
   bool showSpeedError = false;  // the right panel's "Speed vs error" tab instead of the inspector
   float uiScale = 1;            // fonts and sizes (projectors, high-DPI): app/window/ui_scale.h
+  // What this frame's views show that the draw data does not (their textures' contents),
+  // mixed in by each view: the window draws a frame only when it differs (ui_frame_change.h).
+  std::uint64_t shownContent = 0;
 
   // Reports: into the log and onto the status line. fail() passes `problem` through (""
   // logs nothing); reportExport() logs an export's result unless it says what it wrote.

@@ -19,6 +19,7 @@
 #include "io/output_path.h"
 #include "scene/scene_builtin.h"
 #include "window/panels/ui_export.h"
+#include "window/ui_frame_change.h"
 #include "window/ui_frame_recover.h"
 #include "window/ui_help.h"
 #include "window/ui_log_panel.h"
@@ -184,10 +185,11 @@ void drawStatusLine(UiState& state, const Layout& layout) {
   ImGui::SameLine(rightStart);
   ImGui::TextUnformatted(speed);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("UI fps: frames the window can draw per second while something happens\n"
-                      "(1 / median time to draw one, over the last %d frames). An idle window\n"
-                      "draws only when woken: input, or every 0.1 s; %.1f frames drawn per\n"
-                      "second just now.", session.framesMeasured(), session.framesDrawnPerSecond());
+    ImGui::SetTooltip("UI fps: frames the window draws per second while something happens\n"
+                      "(1 / median time to build and draw one, over the last %d frames drawn\n"
+                      "for input, a run or a script). Idle, it draws nothing: it wakes on input\n"
+                      "or every 0.1 s and draws only what changed. %.0f such frames in the\n"
+                      "last second.", session.framesMeasured(), session.framesDrawnPerSecond());
   ImGui::End();
 }
 
@@ -338,16 +340,23 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene,
   return 0;
 }
 
+// The window was exposed (uncovered, restored): its contents must be drawn again.
+bool exposed = false;
+void onRefresh(GLFWwindow*) { exposed = true; }
+
 // 7. One frame: events, script, run, UI, screenshots. Returns false when the window is done
 //    (a script ended or failed, --screenshot written); `result` then holds the exit status.
 struct FrameLoop {
+  FrameLoop(const WindowOptions& o, GLFWwindow* w, UiState& s, std::unique_ptr<ScriptRunner>& r)
+      : options(o), window(w), state(s), runner(r) {}
   const WindowOptions& options;
   GLFWwindow* window;
   UiState& state;
   std::unique_ptr<ScriptRunner>& runner;
-  int framesRendered = 0, screenshotCount = 0;
+  int framesRendered = 0, screenshotCount = 0;  // UI frames built (drawn or not)
   bool draggingSlider = false;
   int result = 0;
+  FrameChange change;
 
   bool frame() {
     // 7a. Events: wait when idle, so an idle window costs no CPU.
@@ -382,23 +391,36 @@ struct FrameLoop {
     state.keepPickInEye(glm::ivec2(state.views.panels[0].eyeRegion));
     recordPickedPixel(state);
     pickSoftShadowMapTexels(state);
-    state.runIfNeeded(glm::ivec2(state.views.panels[0].eyeRegion));
+    const bool ran = state.runIfNeeded(glm::ivec2(state.views.panels[0].eyeRegion));
     // 7d. The UI (fonts rebuilt first when the UI scale changed).
     applyUiScale(state.uiScale);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     applySyntheticInput(state);
     ImGui::NewFrame();
+    const bool input = userInput();
     handleShortcuts(state, window, screenshotCount);
     const RunKey before = state.currentKey();
+    state.shownContent = 0;
     const bool moving = drawUi(state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y, state.uiScale));
     // A slider dragged since its press counts as moving too: preview until released.
     if (!ImGui::IsAnyItemActive()) draggingSlider = false;
     else if (state.currentKey() != before) draggingSlider = true;
     state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera);
     ImGui::Render();
+    ++framesRendered;
+    ++state.session.uiFramesBuilt;
+    // 7e. Drawn and swapped only when it shows something new (ui_frame_change.h), or a
+    //     screenshot reads it: requested (script, F12), or --screenshot after --frames.
+    // (An interactive lesson waits for the student: its screenshot shows where it waits.)
+    const bool finalShot = (!runner || options.interactiveLesson) && !options.screenshot.empty() &&
+                           framesRendered >= options.frames;
+    if (exposed) change.forceNext();
+    exposed = false;
+    const bool draw = change.changed(*ImGui::GetDrawData(), state.shownContent);
+    if (!draw && !finalShot && state.script.screenshotRequest.empty()) return true;
     present(width, height);
-    // 7e. Screenshots: requested (script, F12), or --screenshot after --frames.
+    ++state.session.uiFramesDrawn;
     if (!state.script.screenshotRequest.empty()) {
       const std::string path = state.script.screenshotRequest;
       state.script.screenshotRequest.clear();  // once, even if it cannot be written
@@ -406,17 +428,18 @@ struct FrameLoop {
       std::printf("penumbra: wrote %s\n", path.c_str());
       state.status = "screenshot " + path;
     }
-    // (An interactive lesson waits for the student: its screenshot shows where it waits.)
-    if ((!runner || options.interactiveLesson) && !options.screenshot.empty() &&
-        framesRendered >= options.frames) {
+    if (finalShot) {
       saveScreenshot(window, options.screenshot);
       std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(), framesRendered);
       return false;
     }
     glfwSwapBuffers(window);
+    // The UI's speed: frames drawn because something happened (input, a run, a script), not
+    // those that only showed the new speed (they would feed themselves).
     const auto done = std::chrono::steady_clock::now();
-    state.session.recordFrame(std::chrono::duration<double>(done - woken).count(),
-                              std::chrono::duration<double>(done.time_since_epoch()).count());
+    if (input || ran || runner)
+      state.session.recordFrame(std::chrono::duration<double>(done - woken).count(),
+                                std::chrono::duration<double>(done.time_since_epoch()).count());
     return true;
   }
 
@@ -426,7 +449,19 @@ struct FrameLoop {
     glClearColor(0.1f, 0.1f, 0.1f, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    ++framesRendered;
+  }
+
+  // Whether the user did anything this frame (after ImGui::NewFrame).
+  static bool userInput() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || io.MouseWheel != 0 || io.MouseWheelH != 0 ||
+        !io.InputQueueCharacters.empty())
+      return true;
+    for (bool down : io.MouseDown)
+      if (down) return true;
+    for (bool down : io.KeysDown)
+      if (down) return true;
+    return false;
   }
 
   // 7f. The one rule: an exception in a frame (a stage, a panel, an action) goes to the log
@@ -442,6 +477,7 @@ struct FrameLoop {
       glfwGetFramebufferSize(window, &width, &height);
       present(width, height);
       glfwSwapBuffers(window);
+      change.forceNext();
     }
     const bool unattended = (runner && !options.interactiveLesson) || !options.screenshot.empty();
     if (unattended) result = 1;
@@ -473,6 +509,7 @@ int runWindow(const WindowOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  glfwSetWindowRefreshCallback(window, onRefresh);
   ImGui_ImplOpenGL3_Init("#version 450 core");
 
   int result = 0;

@@ -276,6 +276,13 @@ std::vector<ScriptActionSpec> makeTable() {
          printTiming(s, text(a));
          return std::string();
        }},
+      {"print_frames", kString,
+       [=](S& s, const json& a, C&) {
+         std::printf("frames %s: %d built, %d drawn\n", text(a).c_str(), s.session.uiFramesBuilt,
+                     s.session.uiFramesDrawn);
+         std::fflush(stdout);
+         return std::string();
+       }},
       {"print_log", kString,
        [=](S& s, const json& a, C&) {
          printLog(s, text(a));
