@@ -29,7 +29,7 @@ std::string UiState::loadScene(const std::string& source) {
     return fail("scene", error.what());
   }
   adoptScene(std::move(loaded), source);
-  for (const std::string& warning : warnings) log.warning("scene", "'" + source + "': " + warning);
+  for (const std::string& warning : warnings) log.warning("scene", warning);  // they name the file
   if (!warnings.empty()) status += "; warning: " + warnings.front() + (warnings.size() > 1 ? " (more in the log)" : "");
   return "";
 }

@@ -313,7 +313,7 @@ int checkOptions(const WindowOptions& options, Scene& scene, std::vector<std::st
 int prepareState(UiState& state, const WindowOptions& options, Scene scene,
                  const std::vector<std::string>& warnings) {
   state.adoptScene(std::move(scene), options.scene);
-  for (const std::string& warning : warnings) state.log.warning("scene", "'" + options.scene + "': " + warning);
+  for (const std::string& warning : warnings) state.log.warning("scene", warning);  // they name the file
   if (!options.config.empty()) {
     bool ok = false;
     const std::string message = loadSettingsFile(state, options.config, ok);
