@@ -7,6 +7,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev nlohmann-json3-dev
   libopenimageio-dev openimageio-tools libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
   xvfb xauth libcli11-dev googletest libgtest-dev assimp-testmodels
+  xdotool  # real X input events in the window tests (tests/window/real_input_combo.sh)
   libembree-dev
   libcairo2-dev  # the bench report's charts as PNG, SVG and PDF (app/bench/plot.cpp)
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)

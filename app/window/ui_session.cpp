@@ -190,12 +190,17 @@ int Session::medianRuns() const {
   return runs;
 }
 
-void Session::recordFrameInterval(double seconds) {
-  frameSeconds.push_back(seconds);
+void Session::recordFrame(double drawSeconds, double endSeconds) {
+  frameSeconds.push_back(drawSeconds);
   if (frameSeconds.size() > kFrameHistory) frameSeconds.pop_front();
+  frameEnds.push_back(endSeconds);
+  while (frameEnds.front() < endSeconds - 1.0) frameEnds.pop_front();
 }
 
 double Session::framesPerSecond() const {
+  if (frameSeconds.empty()) return 0;
   const double seconds = median({frameSeconds.begin(), frameSeconds.end()});
   return seconds > 0 ? 1.0 / seconds : 0;
 }
+
+double Session::framesDrawnPerSecond() const { return double(frameEnds.size()); }

@@ -58,7 +58,8 @@ struct Session {
   double fullResolutionMs = 0;  // the last run at full resolution
   int pipelineRuns = 0;
   glm::ivec2 requestedEye{0, 0};  // "fit view": runs once the layout holds for a frame
-  std::deque<double> frameSeconds;  // UI frame intervals (per-stage times: the pipeline's)
+  std::deque<double> frameSeconds;  // time to draw each recent UI frame, waits excluded
+  std::deque<double> frameEnds;     // when recent frames ended (seconds, steady clock)
   std::string runError;  // why the last run failed, "" after a success: the frame then holds
                          // new, blank and stale outputs, so exports are refused (ui_export.h)
 
@@ -93,6 +94,13 @@ struct Session {
   double lastPipelineMs() const;
   double medianPipelineMs() const;
   int medianRuns() const;
+  // The UI's speed: 1 / the median time to draw a frame (a run, the UI, the swap; not the
+  // wait for input), over the last frames: the rate while something happens. An idle window
+  // draws only when woken (input, or every 0.1 s): framesDrawnPerSecond counts the frames
+  // that ended in the last second.
   double framesPerSecond() const;
-  void recordFrameInterval(double seconds);
+  double framesDrawnPerSecond() const;
+  int framesMeasured() const { return int(frameSeconds.size()); }
+  int uiFramesBuilt = 0, uiFramesDrawn = 0;  // UI frames built / drawn and swapped (window_app.cpp)
+  void recordFrame(double drawSeconds, double endSeconds);
 };

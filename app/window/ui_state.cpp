@@ -26,10 +26,11 @@ std::string UiState::loadScene(const std::string& source) {
   try {
     loaded = ::loadScene(source, warnings);
   } catch (const std::exception& error) {
-    return error.what();
+    return fail("scene", error.what());
   }
   adoptScene(std::move(loaded), source);
-  for (const std::string& warning : warnings) status += "; warning: " + warning;
+  for (const std::string& warning : warnings) log.warning("scene", warning);  // they name the file
+  if (!warnings.empty()) status += "; warning: " + warnings.front() + (warnings.size() > 1 ? " (more in the log)" : "");
   return "";
 }
 
@@ -39,7 +40,8 @@ void UiState::adoptScene(Scene loaded, const std::string& source) {
   for (ViewPanel& view : views.panels) view.fitPending = true;
   const Scene& scene = session.scene;
   status = "scene '" + scene.name + "' (" + std::to_string(scene.triangleCount()) + " triangles)";
-  sceneWarnings = lightWarnings(scene);
+  sceneWarnings.clear();  // a new scene: its warnings are logged again
+  setSceneWarnings(lightWarnings(scene));
   checkedLight = scene.light;
 }
 
@@ -49,17 +51,47 @@ void UiState::checkLight() {
   if (l.center == c.center && l.forward == c.forward && l.up == c.up && l.width == c.width &&
       l.height == c.height)
     return;
-  sceneWarnings = lightWarnings(session.scene);
+  setSceneWarnings(lightWarnings(session.scene));
   checkedLight = l;
+}
+
+// A warning that persists while the light moves is logged once, when it appears.
+void UiState::setSceneWarnings(std::vector<std::string> warnings) {
+  for (const std::string& warning : warnings)
+    if (std::find(sceneWarnings.begin(), sceneWarnings.end(), warning) == sceneWarnings.end())
+      log.warning("scene", warning);
+  sceneWarnings = std::move(warnings);
+}
+
+// 1b. Reports.
+void UiState::report(LogLevel level, const std::string& source, const std::string& message) {
+  log.add(level, source, message);
+  status = message;
+  lastProblem_ = message;
+}
+
+const std::string& UiState::fail(const std::string& source, const std::string& problem) {
+  if (!problem.empty()) report(LogLevel::Error, source, problem);
+  return problem;
+}
+
+// Exports answer "wrote ..." when they wrote (ui_export.h), else what went wrong.
+void UiState::reportExport(const std::string& result) {
+  reportResult("export", result, result.rfind("wrote ", 0) == 0);
+}
+
+void UiState::reportResult(const std::string& source, const std::string& result, bool ok) {
+  if (ok) status = result;
+  else fail(source, result);
 }
 
 // 2. Selection: into the view that takes it, with the output's declared display.
 std::string UiState::selectOutput(const std::string& stageDotOutput) {
   const Output* declared = session.outputOf(stageDotOutput);
   if (!declared)
-    return "unknown output '" + stageDotOutput + "'; valid: " + joined(session.outputKeys());
+    return fail("view", "unknown output '" + stageDotOutput + "'; valid: " + joined(session.outputKeys()));
   ViewPanel* target = views.selectionTarget();
-  if (!target) return "both views are locked: unlock one to show " + stageDotOutput;
+  if (!target) return fail("view", "both views are locked: unlock one to show " + stageDotOutput);
   target->output = stageDotOutput;
   target->minus.clear();  // a difference belongs to the output it was made for
   target->clipNegative = false;
@@ -85,23 +117,25 @@ std::string UiState::selectStage(const std::string& stageName) {
     if (stage.outputs().empty()) return "";
     return selectOutput(stageName + "." + stage.outputs().front().name);
   } catch (const std::out_of_range& error) {
-    return error.what();
+    return fail("view", error.what());
   }
 }
 
 // 3. Shaders: a reload is part of the run key, so the next frame runs with them.
 bool UiState::reloadShaders() {
-  std::string log;
-  const bool ok = ShaderProgram::reloadAll(log);
+  std::string compileLog;
+  const bool ok = ShaderProgram::reloadAll(compileLog);
   ++session.shaderReloads;
   if (ok) {
     shaderLog.clear();
     showShaderLog = false;
     status = "shaders reloaded";
   } else {
-    shaderLog = log;
+    shaderLog = compileLog;
     showShaderLog = true;
+    log.error("shaders", "reload failed, the last good programs stay:\n" + compileLog);
     status = "shader reload failed: the last good programs stay (see Shader log)";
+    lastProblem_ = status;
   }
   return ok;
 }
@@ -143,7 +177,7 @@ bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
   updateLiveTruth(*this);
   std::string problem;
   const bool ran = session.runIfNeeded(viewRegion, requestedOutputs(), problem);
-  if (!problem.empty()) status = problem;
+  fail("pipeline", problem);
   if (ran) recordLiveTruthRun(*this);
   return ran;
 }

@@ -3,11 +3,13 @@
 // The actions here touch more than one part. No ImGui here, so every action a click performs
 // can also be performed by a script line.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "window/script/ui_script_io.h"
 #include "window/ui_live_truth.h"
+#include "window/ui_log.h"
 #include "window/ui_session.h"
 #include "window/views/ui_view_state.h"
 
@@ -21,14 +23,26 @@ public:
 
   // Messages.
   std::string status;     // the status line: what happened last
+  UiLog log;              // every warning and error of the session (ui_log.h)
   std::vector<std::string> sceneWarnings;  // app/scene/scene_checks.h, shown in the status line
   AreaLight checkedLight;                  // the light sceneWarnings were computed for
   std::string shaderLog;  // last failed hot reload
-  bool showHelp = false, showShaderLog = false;
+  bool showHelp = false, showShaderLog = false, showLog = false;
   bool showSpeedError = false;  // the right panel's "Speed vs error" tab instead of the inspector
   float uiScale = 1;            // fonts and sizes (projectors, high-DPI): app/window/ui_scale.h
+  // What this frame's views show that the draw data does not (their textures' contents),
+  // mixed in by each view: the window draws a frame only when it differs (ui_frame_change.h).
+  std::uint64_t shownContent = 0;
 
-  // Actions. Each returns "" or a message naming what is valid.
+  // Reports: into the log and onto the status line. fail() passes `problem` through (""
+  // logs nothing); reportExport() logs an export's result unless it says what it wrote.
+  void report(LogLevel level, const std::string& source, const std::string& message);
+  const std::string& fail(const std::string& source, const std::string& problem);
+  void reportExport(const std::string& result);
+  void reportResult(const std::string& source, const std::string& result, bool ok);  // ok: status only
+  bool statusIsProblem() const { return !status.empty() && status == lastProblem_; }
+
+  // Actions. Each returns "" or a message naming what is valid (and logs it).
   std::string loadScene(const std::string& source);  // keeps the old scene on failure
   void adoptScene(Scene loaded, const std::string& source);  // and forgets the pick
   std::string selectOutput(const std::string& stageDotOutput);  // into the active view
@@ -48,4 +62,8 @@ public:
   void keepPickInEye(glm::ivec2 viewRegion);
   glm::ivec2 fullEye{0, 0};  // the eye size of the last keepPickInEye outside previews
   void checkLight();  // recomputes sceneWarnings when the light moved since the last check
+
+private:
+  void setSceneWarnings(std::vector<std::string> warnings);  // logs the new ones
+  std::string lastProblem_;  // the status text of the last report
 };

@@ -19,7 +19,10 @@
 #include "io/output_path.h"
 #include "scene/scene_builtin.h"
 #include "window/panels/ui_export.h"
+#include "window/ui_frame_change.h"
+#include "window/ui_frame_recover.h"
 #include "window/ui_help.h"
+#include "window/ui_log_panel.h"
 #include "window/ui_scale.h"
 #include "window/panels/ui_inspector.h"
 #include "window/script/ui_lesson.h"
@@ -87,6 +90,7 @@ void saveScreenshot(GLFWwindow* window, const std::string& path) {
 }
 
 // 2. Keyboard shortcuts (listed by ui_help.cpp); none while a text field has the keyboard.
+//    Nothing but the window manager's close button and Ctrl+Q closes the window (Esc does not).
 void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
@@ -94,13 +98,15 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
   if (ImGui::IsKeyPressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
   if (ImGui::IsKeyPressed(GLFW_KEY_F5)) state.reloadShaders();
-  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
   if (ImGui::IsKeyPressed(GLFW_KEY_F12))
     state.script.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
   if (io.KeyCtrl) {
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, false))
-      state.status = saveSettingsFile(state, "penumbra_settings.json");
-    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.status = exportAllStages(state, "");
+    if (ImGui::IsKeyPressed(GLFW_KEY_Q, false)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
+      const std::string result = saveSettingsFile(state, "penumbra_settings.json");
+      state.reportResult("settings", result, result.rfind("saved ", 0) == 0);
+    }
+    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.reportExport(exportAllStages(state, ""));
     return;
   }
   ViewState& views = state.views;
@@ -129,48 +135,77 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) state.views.movePick({0, -step});
 }
 
-// 3. The status line: what happened last, and how fast things are.
-void drawStatusLine(const UiState& state, const Layout& layout) {
+// 3. The status line: the log's count, what happened last (scene warnings first), and how
+//    fast things are on the right. The left text is cut with "..." before the right text
+//    (hover: all of it); the log holds every warning and error whole.
+void drawStatusLine(UiState& state, const Layout& layout) {
   ImGui::SetNextWindowPos({0, layout.panelHeight()});
   ImGui::SetNextWindowSize({layout.width, layout.status});
   ImGui::Begin("##status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoScrollbar);
+  const Session& session = state.session;
+  const int eyeWidth = session.frame ? session.frame->eyeWidth : 0;
+  const int eyeHeight = session.frame ? session.frame->eyeHeight : 0;
   char speed[200];
-  const double pipelineMs = state.session.medianPipelineMs();
+  const double pipelineMs = session.medianPipelineMs();
   std::snprintf(speed, sizeof speed, "eye %dx%d | pipeline %.1f ms (%.1f/s, median of %d) | UI %.0f fps | %s%s",
-                state.session.frame ? state.session.frame->eyeWidth : 0, state.session.frame ? state.session.frame->eyeHeight : 0,
-                pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0, state.session.medianRuns(),
-                state.session.framesPerSecond(),
-                state.session.runEveryFrame ? "runs every frame" : "runs on change",
-                state.session.previewing && state.session.previewDivisor > 1
-                    ? (" | PREVIEW at 1/" + std::to_string(state.session.previewDivisor) +
+                eyeWidth, eyeHeight, pipelineMs, pipelineMs > 0 ? 1000.0 / pipelineMs : 0.0,
+                session.medianRuns(), session.framesPerSecond(),
+                session.runEveryFrame ? "runs every frame" : "runs on change",
+                session.previewing && session.previewDivisor > 1
+                    ? (" | PREVIEW at 1/" + std::to_string(session.previewDivisor) +
                        " resolution while the camera moves").c_str()
                     : "");
   float speedWidth = ImGui::CalcTextSize(speed).x;
   if (speedWidth > 0.55f * layout.width) {  // large UI scale: the numbers only
-    std::snprintf(speed, sizeof speed, "eye %dx%d | %.1f ms | UI %.0f fps%s",
-                  state.session.frame ? state.session.frame->eyeWidth : 0,
-                  state.session.frame ? state.session.frame->eyeHeight : 0, pipelineMs,
-                  state.session.framesPerSecond(), state.session.previewing ? " | PREVIEW" : "");
+    std::snprintf(speed, sizeof speed, "eye %dx%d | %.1f ms | UI %.0f fps%s", eyeWidth, eyeHeight,
+                  pipelineMs, session.framesPerSecond(), session.previewing ? " | PREVIEW" : "");
     speedWidth = ImGui::CalcTextSize(speed).x;
   }
-  const float padding = ImGui::GetStyle().WindowPadding.x;
-  ImGui::PushClipRect(ImGui::GetCursorScreenPos(),
-                      {layout.width - speedWidth - 2 * padding, layout.height}, true);
-  if (!state.sceneWarnings.empty()) {  // what the depth-map methods cannot show (scene_checks.h)
-    ImGui::TextColored({1.0f, 0.8f, 0.2f, 1.0f}, "warning: %s%s", state.sceneWarnings.front().c_str(),
-                       state.sceneWarnings.size() > 1 ? " (+ more: hover)" : "");
-    if (ImGui::IsItemHovered()) {
-      std::string all;
-      for (const std::string& warning : state.sceneWarnings) all += warning + "\n";
-      ImGui::SetTooltip("%s", all.c_str());
-    }
-    ImGui::SameLine();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float rightStart = layout.width - speedWidth - style.WindowPadding.x;
+  drawLogCount(state);
+  // What is left between the count and the right text, less a gap that keeps them apart.
+  const float room = rightStart - 2 * style.ItemSpacing.x - ImGui::GetCursorScreenPos().x;
+  std::string warning;
+  if (!state.sceneWarnings.empty())  // what the depth-map methods cannot show (scene_checks.h)
+    warning = "warning: " + state.sceneWarnings.front() +
+              (state.sceneWarnings.size() > 1 ? " (+" + std::to_string(state.sceneWarnings.size() - 1) + " more)" : "");
+  const std::string status = state.status.empty() ? "F1: help" : state.status;
+  const float gap = style.ItemSpacing.x;
+  const float statusWidth = ImGui::CalcTextSize(status.c_str()).x;
+  const float warningWidth = warning.empty() ? 0 : ImGui::CalcTextSize(warning.c_str()).x + gap;
+  // Both fit, or the warning keeps at least half of the room and the status the rest.
+  float warningRoom = warningWidth;
+  if (warningWidth + statusWidth > room) warningRoom = std::max(0.5f * room, room - statusWidth);
+  const ImVec2 leftStart = ImGui::GetCursorScreenPos();
+  if (!warning.empty()) {
+    ImGui::TextColored({1.0f, 0.8f, 0.2f, 1.0f}, "%s", elided(warning, warningRoom - gap).c_str());
+    ImGui::SameLine(0, gap);
   }
-  ImGui::TextUnformatted(state.status.empty() ? "F1: help" : state.status.c_str());
-  ImGui::PopClipRect();
-  ImGui::SameLine(layout.width - speedWidth - padding);
+  const float statusRoom = room - (ImGui::GetCursorScreenPos().x - leftStart.x);
+  const std::string shown = elided(status, statusRoom);
+  if (state.statusIsProblem()) ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "%s", shown.c_str());
+  else ImGui::TextUnformatted(shown.c_str());
+  if (ImGui::IsMouseHoveringRect(leftStart, {rightStart, leftStart.y + layout.status})) {
+    std::string all;
+    for (const std::string& line : state.sceneWarnings) all += "warning: " + line + "\n";
+    all += status;
+    ImGui::SetNextWindowSize({std::min(layout.width * 0.8f, ImGui::CalcTextSize(all.c_str()).x + 2 * style.WindowPadding.x), 0});
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(all.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+  ImGui::SameLine(rightStart);
   ImGui::TextUnformatted(speed);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("UI fps: frames the window draws per second while something happens\n"
+                      "(1 / median time to build and draw one, over the last %d frames drawn\n"
+                      "for input, a run or a script). Idle, it draws nothing: it wakes on input\n"
+                      "or every 0.1 s and draws only what changed. %.0f such frames in the\n"
+                      "last second.", session.framesMeasured(), session.framesDrawnPerSecond());
   ImGui::End();
 }
 
@@ -259,6 +294,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   stepSpeedErrorPanel();
   drawHelpWindow(state);
   drawShaderLogWindow(state);
+  drawLogWindow(state);
   return movingCamera;
 }
 
@@ -277,7 +313,8 @@ void applySyntheticInput(UiState& state) {
 }
 
 // 5. What can be checked before a window opens: output paths, scene, --set, script.
-int checkOptions(const WindowOptions& options, Scene& scene, std::vector<ScriptAction>& script) {
+int checkOptions(const WindowOptions& options, Scene& scene, std::vector<std::string>& warnings,
+                 std::vector<ScriptAction>& script) {
   try {
     if (!options.screenshot.empty()) checkOutputFile(options.screenshot, "--screenshot");
     if (!options.exportDirectory.empty()) checkOutputDirectory(options.exportDirectory, "--export", "");
@@ -285,7 +322,6 @@ int checkOptions(const WindowOptions& options, Scene& scene, std::vector<ScriptA
     std::fprintf(stderr, "penumbra: %s\n", error.what());
     return 2;
   }
-  std::vector<std::string> warnings;
   try {
     scene = loadScene(options.scene, warnings);
   } catch (const std::exception& error) {
@@ -306,9 +342,12 @@ int checkOptions(const WindowOptions& options, Scene& scene, std::vector<ScriptA
   return 0;
 }
 
-// 6. State after the context exists: scene, --config, then --set, then the final image.
-int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
+// 6. State after the context exists: scene (its loader's warnings into the log), --config,
+//    then --set, then the final image.
+int prepareState(UiState& state, const WindowOptions& options, Scene scene,
+                 const std::vector<std::string>& warnings) {
   state.adoptScene(std::move(scene), options.scene);
+  for (const std::string& warning : warnings) state.log.warning("scene", warning);  // they name the file
   if (!options.config.empty()) {
     bool ok = false;
     const std::string message = loadSettingsFile(state, options.config, ok);
@@ -335,13 +374,160 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene) {
   return 0;
 }
 
+// The window was exposed (uncovered, restored): its contents must be drawn again.
+bool exposed = false;
+void onRefresh(GLFWwindow*) { exposed = true; }
+
+// 7. One frame: events, script, run, UI, screenshots. Returns false when the window is done
+//    (a script ended or failed, --screenshot written); `result` then holds the exit status.
+struct FrameLoop {
+  FrameLoop(const WindowOptions& o, GLFWwindow* w, UiState& s, std::unique_ptr<ScriptRunner>& r)
+      : options(o), window(w), state(s), runner(r) {}
+  const WindowOptions& options;
+  GLFWwindow* window;
+  UiState& state;
+  std::unique_ptr<ScriptRunner>& runner;
+  int framesRendered = 0, screenshotCount = 0;  // UI frames built (drawn or not)
+  bool draggingSlider = false;
+  int result = 0;
+  FrameChange change;
+
+  bool frame() {
+    // 7a. Events: wait when idle, so an idle window costs no CPU.
+    const bool busy = (runner && !state.lesson.waiting) || !options.screenshot.empty() ||
+                      state.needsRun() || !state.script.syntheticInput.empty();
+    if (busy) glfwPollEvents();
+    else glfwWaitEventsTimeout(0.1);
+    const auto woken = std::chrono::steady_clock::now();
+    // 7b. Script actions, once the first run and the layout have settled.
+    if (runner && framesRendered >= 2 && state.session.pipelineRuns > 0) {
+      const ScriptRunner::Step step = runner->step(state);
+      if (step == ScriptRunner::Step::Failed) {
+        state.log.echo = false;  // said once, below, as scripts always have
+        state.log.error("script", runner->error());
+        std::fprintf(stderr, "penumbra: %s\n", runner->error().c_str());
+        result = 2;
+        return false;
+      }
+      if (step == ScriptRunner::Step::Done) {
+        if (!options.interactiveLesson) return false;
+        runner.reset();  // a student's lesson ends; the window stays theirs
+        state.lesson.finished = true;
+      }
+    }
+    if (state.script.cursorRequest) {  // a script's "mouse": as if the user moved it there
+      glfwSetCursorPos(window, state.script.cursorRequest->x, state.script.cursorRequest->y);
+      state.script.cursorRequest.reset();
+    }
+    // 7c. The pipeline, only when something changed.
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    state.keepPickInEye(glm::ivec2(state.views.panels[0].eyeRegion));
+    recordPickedPixel(state);
+    pickSoftShadowMapTexels(state);
+    const bool ran = state.runIfNeeded(glm::ivec2(state.views.panels[0].eyeRegion));
+    // 7d. The UI (fonts rebuilt first when the UI scale changed).
+    applyUiScale(state.uiScale);
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    applySyntheticInput(state);
+    ImGui::NewFrame();
+    const bool input = userInput();
+    handleShortcuts(state, window, screenshotCount);
+    const RunKey before = state.currentKey();
+    state.shownContent = 0;
+    const bool moving = drawUi(state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y, state.uiScale,
+                                                 lessonPanelHeight(state)));
+    // A slider dragged since its press counts as moving too: preview until released.
+    if (!ImGui::IsAnyItemActive()) draggingSlider = false;
+    else if (state.currentKey() != before) draggingSlider = true;
+    state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera);
+    ImGui::Render();
+    ++framesRendered;
+    ++state.session.uiFramesBuilt;
+    // 7e. Drawn and swapped only when it shows something new (ui_frame_change.h), or a
+    //     screenshot reads it: requested (script, F12), or --screenshot after --frames.
+    // (An interactive lesson waits for the student: its screenshot shows where it waits.)
+    const bool finalShot = (!runner || options.interactiveLesson) && !options.screenshot.empty() &&
+                           framesRendered >= options.frames;
+    if (exposed) change.forceNext();
+    exposed = false;
+    const bool draw = change.changed(*ImGui::GetDrawData(), state.shownContent);
+    if (!draw && !finalShot && state.script.screenshotRequest.empty()) return true;
+    present(width, height);
+    ++state.session.uiFramesDrawn;
+    if (!state.script.screenshotRequest.empty()) {
+      const std::string path = state.script.screenshotRequest;
+      state.script.screenshotRequest.clear();  // once, even if it cannot be written
+      saveScreenshot(window, path);
+      std::printf("penumbra: wrote %s\n", path.c_str());
+      state.status = "screenshot " + path;
+    }
+    if (finalShot) {
+      saveScreenshot(window, options.screenshot);
+      std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(), framesRendered);
+      return false;
+    }
+    glfwSwapBuffers(window);
+    // The UI's speed: frames drawn because something happened (input, a run, a script), not
+    // those that only showed the new speed (they would feed themselves).
+    const auto done = std::chrono::steady_clock::now();
+    if (input || ran || runner)
+      state.session.recordFrame(std::chrono::duration<double>(done - woken).count(),
+                                std::chrono::duration<double>(done.time_since_epoch()).count());
+    return true;
+  }
+
+  void present(int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    glClearColor(0.1f, 0.1f, 0.1f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+
+  // Whether the user did anything this frame (after ImGui::NewFrame).
+  static bool userInput() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || io.MouseWheel != 0 || io.MouseWheelH != 0 ||
+        !io.InputQueueCharacters.empty())
+      return true;
+    for (bool down : io.MouseDown)
+      if (down) return true;
+    for (bool down : io.KeysDown)
+      if (down) return true;
+    return false;
+  }
+
+  // 7f. The one rule: an exception in a frame (a stage, a panel, an action) goes to the log
+  //     and the status line; the session, its settings and the window stay. The frame it
+  //     left midway is closed as ImGui expects and shown as far as it was drawn. Unattended
+  //     runs (a script played through, --screenshot) end instead, with status 1: their
+  //     figures would be wrong.
+  bool recover(const std::string& what) {
+    state.report(LogLevel::Error, "window", what);
+    state.script.screenshotRequest.clear();
+    if (closeInterruptedFrame()) {
+      int width = 0, height = 0;
+      glfwGetFramebufferSize(window, &width, &height);
+      present(width, height);
+      glfwSwapBuffers(window);
+      change.forceNext();
+    }
+    const bool unattended = (runner && !options.interactiveLesson) || !options.screenshot.empty();
+    if (unattended) result = 1;
+    return !unattended;
+  }
+};
+
 }  // namespace
 
-// 7. Setup, the frame loop, teardown.
+// 8. Setup, the frame loop, teardown.
 int runWindow(const WindowOptions& options) {
   Scene scene;
+  std::vector<std::string> warnings;
   std::vector<ScriptAction> actions;
-  if (int status = checkOptions(options, scene, actions)) return status;
+  if (int status = checkOptions(options, scene, warnings, actions)) return status;
   // Unattended runs end with a message rather than hang (tests, lesson exports).
   std::unique_ptr<Watchdog> watchdog;
   if (!options.interactiveLesson && (!options.script.empty() || !options.screenshot.empty()))
@@ -358,92 +544,29 @@ int runWindow(const WindowOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  glfwSetWindowRefreshCallback(window, onRefresh);
   ImGui_ImplOpenGL3_Init("#version 450 core");
 
   int result = 0;
   try {
     auto state = std::make_unique<UiState>();  // GL objects: destroyed before the context
+    state->log.echo = true;  // the terminal shows what the log shows
     state->session.renderer = context->renderer();
     installFrameTraceSource();
-    result = prepareState(*state, options, std::move(scene));
+    result = prepareState(*state, options, std::move(scene), warnings);
     std::unique_ptr<ScriptRunner> runner;
     if (!options.script.empty())
       runner = std::make_unique<ScriptRunner>(
           std::move(actions), ScriptOptions{options.interactiveLesson, options.exportDirectory, options.script});
-    int framesRendered = 0, screenshotCount = 0;
-    bool draggingSlider = false;
-    auto last = std::chrono::steady_clock::now();
+    FrameLoop loop{options, window, *state, runner};
     while (result == 0 && !glfwWindowShouldClose(window)) {
-      // 7a. Events: wait when idle, so an idle window costs no CPU.
-      const bool busy = (runner && !state->lesson.waiting) || !options.screenshot.empty() ||
-                        state->needsRun() || !state->script.syntheticInput.empty();
-      if (busy) glfwPollEvents();
-      else glfwWaitEventsTimeout(0.1);
-      const auto now = std::chrono::steady_clock::now();
-      state->session.recordFrameInterval(std::chrono::duration<double>(now - last).count());
-      last = now;
-      // 7b. Script actions, once the first run and the layout have settled.
-      if (runner && framesRendered >= 2 && state->session.pipelineRuns > 0) {
-        const ScriptRunner::Step step = runner->step(*state);
-        if (step == ScriptRunner::Step::Failed) {
-          std::fprintf(stderr, "penumbra: %s\n", runner->error().c_str());
-          result = 2;
-          break;
-        }
-        if (step == ScriptRunner::Step::Done) {
-          if (!options.interactiveLesson) break;
-          runner.reset();  // a student's lesson ends; the window stays theirs
-          state->lesson.finished = true;
-        }
+      try {
+        if (!loop.frame()) break;
+      } catch (const std::exception& failure) {
+        if (!loop.recover(failure.what())) break;
       }
-      if (state->script.cursorRequest) {  // a script's "mouse": as if the user moved it there
-        glfwSetCursorPos(window, state->script.cursorRequest->x, state->script.cursorRequest->y);
-        state->script.cursorRequest.reset();
-      }
-      // 7c. The pipeline, only when something changed.
-      int width = 0, height = 0;
-      glfwGetFramebufferSize(window, &width, &height);
-      state->keepPickInEye(glm::ivec2(state->views.panels[0].eyeRegion));
-      recordPickedPixel(*state);
-      pickSoftShadowMapTexels(*state);
-      state->runIfNeeded(glm::ivec2(state->views.panels[0].eyeRegion));
-      // 7d. The UI (fonts rebuilt first when the UI scale changed).
-      applyUiScale(state->uiScale);
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      applySyntheticInput(*state);
-      ImGui::NewFrame();
-      handleShortcuts(*state, window, screenshotCount);
-      const RunKey before = state->currentKey();
-      const bool moving = drawUi(*state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y,
-                                                   state->uiScale, lessonPanelHeight(*state)));
-      // A slider dragged since its press counts as moving too: preview until released.
-      if (!ImGui::IsAnyItemActive()) draggingSlider = false;
-      else if (state->currentKey() != before) draggingSlider = true;
-      state->session.setCameraMoving(moving || draggingSlider || state->script.movesCamera);
-      ImGui::Render();
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glViewport(0, 0, width, height);
-      glClearColor(0.1f, 0.1f, 0.1f, 1);
-      glClear(GL_COLOR_BUFFER_BIT);
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      ++framesRendered;
-      // 7e. Screenshots: requested (script, F12), or --screenshot after --frames.
-      if (!state->script.screenshotRequest.empty()) {
-        saveScreenshot(window, state->script.screenshotRequest);
-        std::printf("penumbra: wrote %s\n", state->script.screenshotRequest.c_str());
-        state->status = "screenshot " + state->script.screenshotRequest;
-        state->script.screenshotRequest.clear();
-      }
-      // (An interactive lesson waits for the student: its screenshot shows where it waits.)
-      if ((!runner || options.interactiveLesson) && !options.screenshot.empty() &&
-          framesRendered >= options.frames) {
-        saveScreenshot(window, options.screenshot);
-        std::printf("penumbra: wrote %s after %d frames\n", options.screenshot.c_str(), framesRendered);
-        break;
-      }
-      glfwSwapBuffers(window);
     }
+    if (result == 0) result = loop.result;
   } catch (const std::exception& failure) {
     std::fprintf(stderr, "penumbra: %s\n", failure.what());
     result = 1;

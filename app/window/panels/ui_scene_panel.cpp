@@ -126,16 +126,20 @@ void pathField(const char* id, std::string& path, const char* hint, std::initial
 void drawTools(UiState& state) {
   static std::string settingsPath = "penumbra_settings.json", exportDirectory;
   pathField("##settings", settingsPath, "", {"Save", "Load", "(?)"});
-  if (ImGui::Button("Save")) state.status = saveSettingsFile(state, settingsPath);
+  if (ImGui::Button("Save")) {
+    const std::string result = saveSettingsFile(state, settingsPath);
+    state.reportResult("settings", result, result.rfind("saved ", 0) == 0);
+  }
   ImGui::SameLine();
   if (ImGui::Button("Load##settings")) {
     bool ok = false;
-    state.status = loadSettingsFile(state, settingsPath, ok);
+    const std::string result = loadSettingsFile(state, settingsPath, ok);
+    state.reportResult("settings", result, ok);
   }
   helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
              "Open one at start with `penumbra --config FILE`.");
   pathField("##exportdir", exportDirectory, kDefaultExportDirectory, {"Export all", "(?)"});
-  if (ImGui::Button("Export all")) state.status = exportAllStages(state, exportDirectory);
+  if (ImGui::Button("Export all")) state.reportExport(exportAllStages(state, exportDirectory));
   helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
              "`penumbra export` with these settings.");
   if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();

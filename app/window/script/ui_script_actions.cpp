@@ -14,6 +14,7 @@
 #include "window/ui_graph.h"
 #include "window/ui_layout_report.h"
 #include "window/ui_live_truth.h"
+#include "window/ui_log_panel.h"
 #include "window/ui_scale.h"
 #include "window/ui_state.h"
 #include "window/views/ui_view_difference.h"
@@ -273,6 +274,18 @@ std::vector<ScriptActionSpec> makeTable() {
       {"print_timing", kString,
        [=](S& s, const json& a, C&) {
          printTiming(s, text(a));
+         return std::string();
+       }},
+      {"print_frames", kString,
+       [=](S& s, const json& a, C&) {
+         std::printf("frames %s: %d built, %d drawn\n", text(a).c_str(), s.session.uiFramesBuilt,
+                     s.session.uiFramesDrawn);
+         std::fflush(stdout);
+         return std::string();
+       }},
+      {"print_log", kString,
+       [=](S& s, const json& a, C&) {
+         printLog(s, text(a));
          return std::string();
        }},
       {"print_layout", kString,

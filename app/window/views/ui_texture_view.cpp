@@ -5,8 +5,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <functional>
 
 #include "window/ui_camera.h"
+#include "window/ui_frame_change.h"
 #include "window/ui_light_gesture.h"
 #include "window/views/ui_nbuffer_hover.h"
 #include "window/ui_graph.h"
@@ -217,6 +220,35 @@ void drawReadout(const UiState& state, const ViewPanel& view, const GlTexture& t
   ImGui::TextUnformatted(fitting({what + (" " + where) + ": " + text, where + " " + text, text}).c_str());
 }
 
+// 4a. What the image shows beyond what the draw data says (the display texture's contents:
+//     its source, the run that wrote it, the settings that coloured it).
+void mixShownContent(UiState& state, const ViewPanel& view, const GlTexture& source) {
+  std::uint64_t& hash = state.shownContent;
+  const ViewSettings& s = view.settings;
+  mixHash(hash, source.id());
+  mixHash(hash, std::uint64_t(state.session.pipelineRuns));
+  mixHash(hash, std::hash<std::string>{}(view.output + "-" + view.minus));
+  mixHash(hash, view.clipNegative);
+  for (bool on : s.channels) mixHash(hash, on);
+  for (float v : {s.black, s.white}) {
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    mixHash(hash, bits);
+  }
+  mixHash(hash, std::uint64_t(s.colormap));
+  mixHash(hash, s.overlay);
+  mixHash(hash, std::uint64_t(std::int64_t(s.layer)));
+}
+
+// 4b. Why a view has nothing to show: its output has not been run yet (it runs next
+//     frame), the last run failed, or the last run did not write it.
+std::string notShownReason(const UiState& state, const ViewPanel& view) {
+  if (!state.session.runError.empty())
+    return "'" + view.output + "' was not written: the last run failed (the log says why)";
+  if (state.needsRun()) return "'" + view.output + "': not run yet";
+  return "'" + view.output + "' was not written by the last run";
+}
+
 }  // namespace
 
 // 5. Child window: toolbar, image region, readout.
@@ -250,7 +282,13 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   std::string problem;
   const GlTexture* texture = shownTexture(state, view, &problem);
   if (texture) syncSettings(state, view, *texture);
+  const std::string shownOutput = view.output, shownMinus = view.minus;
   drawViewToolbar(state, view, texture, compact);
+  if (view.output != shownOutput || view.minus != shownMinus) {  // picked in the toolbar just now
+    problem.clear();
+    texture = shownTexture(state, view, &problem);  // usually none: the next frame runs it
+    if (texture) syncSettings(state, view, *texture);
+  }
   const float readoutHeight = ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const glm::vec2 regionSize{std::max(avail.x, 16.0f), std::max(avail.y - readoutHeight, 16.0f)};
@@ -258,23 +296,29 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
   if (!texture) {
     view.regionSize = regionSize;
     ImGui::Dummy(toIm(regionSize));
-    if (problem.empty()) ImGui::TextDisabled("'%s' was not written this frame", view.output.c_str());
-    else ImGui::TextDisabled("%s", problem.c_str());
+    ImGui::TextDisabled("%s", problem.empty() ? notShownReason(state, view).c_str() : problem.c_str());
   } else {
     placeImage(view, *texture, regionSize);
     if (view.frameOverlays) frameOverlays(state, view, {texture->width(), texture->height()}, regionSize);
     view.regionSize = regionSize;
     const glm::vec2 origin = toGlm(ImGui::GetCursorScreenPos());
     view.regionOrigin = origin;
+    // While any popup is open (an output list over the image), the popup owns the mouse: in
+    // the popup's first frame ImGui has not placed it yet and would let the image below take
+    // a click or a wheel.
+    const bool popupOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+    ImGui::BeginDisabled(popupOpen);
     ImGui::InvisibleButton("image", toIm(regionSize),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
+    ImGui::EndDisabled();
     const glm::ivec2 textureSize{texture->width(), texture->height()};
     movingCamera = handleMouse(state, index, textureSize, origin, regionSize);
     std::optional<glm::ivec2> hover;
     if (ImGui::IsItemHovered())
       hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);
     drawImage(state, view, view.renderer.render(*texture, view.settings, state.session.pipelineRuns), origin, regionSize, hover);
+    mixShownContent(state, view, *texture);
     drawReadout(state, view, *texture, hover);
   }
   ImGui::EndChild();

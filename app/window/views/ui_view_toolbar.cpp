@@ -52,14 +52,14 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
     if (ImGui::Selectable("- (nothing): the output itself", view.minus.empty()))
       setViewDifference(state, view, "");
     if (!layerOutputs(state.session.pipeline).far.empty() && ImGui::Selectable("thickness: far - near"))
-      state.status = showThickness(state);
+      state.fail("view", showThickness(state));
     const GlTexture* a = state.session.frame && state.session.frame->has(view.output) ? &state.session.frame->texture(view.output) : nullptr;
     for (const std::string& key : state.session.outputKeys()) {
       if (key == view.output || !a || !state.session.frame->has(key)) continue;
       const GlTexture& b = state.session.frame->texture(key);
       if (b.width() != a->width() || b.height() != a->height()) continue;
       if (ImGui::Selectable(("- " + key).c_str(), key == view.minus))
-        state.status = setViewDifference(state, view, key);
+        state.fail("view", setViewDifference(state, view, key));
     }
     ImGui::EndCombo();
   }
@@ -76,29 +76,38 @@ void drawDifferenceControls(UiState& state, ViewPanel& view) {
                       "texels no occluder covers (far cleared to 0, near to 1).");
 }
 
-// 2. Line 1: what is shown (output, lock, channels, colormap, level).
-void drawOutputCombo(UiState& state, ViewPanel& view, float width) {
+// 2. Line 1: what is shown (output, lock, channels, colormap, level). Returns whether the
+//    output changed: the texture the view was drawn with so far is then the old output's,
+//    and the new one has usually not been run yet (demand-driven runs), so the rest of the
+//    toolbar waits for the next frame.
+bool drawOutputCombo(UiState& state, ViewPanel& view, float width) {
+  bool changed = false;
   ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo("##output", comboPreview(view.output, width).c_str())) {
     for (const std::string& key : state.session.outputKeys())
       if (ImGui::Selectable(key.c_str(), key == view.output)) {
+        changed = key != view.output || !view.minus.empty();
         view.output = key;
         view.fitPending = true;
         setViewDifference(state, view, "");
+        changed = true;
       }
     ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", view.output.c_str());  // the preview may be cut
+  return changed;
 }
 
-void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
-  drawOutputCombo(state, view, std::clamp(ImGui::GetContentRegionAvail().x - uiPixels(170), uiPixels(120), uiPixels(210)));
+// Returns whether the output changed (drawOutputCombo).
+bool drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* texture) {
+  if (drawOutputCombo(state, view, std::clamp(ImGui::GetContentRegionAvail().x - uiPixels(170), uiPixels(120), uiPixels(210))))
+    return true;
   sameLineIfFits(60);
   ImGui::Checkbox("lock", &view.locked);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A locked view keeps its output when stages are selected on the left.");
   drawDifferenceControls(state, view);
-  if (!texture) return;
+  if (!texture) return false;
   // Channel toggles as small buttons, lit when on.
   const char* names[4] = {"R", "G", "B", "A"};
   const ImVec4 lit[4] = {{0.75f, 0.2f, 0.2f, 1}, {0.2f, 0.6f, 0.25f, 1}, {0.25f, 0.35f, 0.8f, 1},
@@ -127,13 +136,16 @@ void drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Colormap for a single channel (colour shows each channel in gray).");
-  const GlTexture& source = state.session.frame->texture(view.output);  // a difference view is 2D
-  if (source.isArray()) {
+  // The output's own texture (a difference view is 2D); read only where this run wrote it.
+  const Frame* frame = state.session.frame.get();
+  const GlTexture* source = frame && frame->has(view.output) ? &frame->texture(view.output) : nullptr;
+  if (source && source->isArray()) {
     sameLineIfFits(170);
     ImGui::SetNextItemWidth(uiPixels(110));
-    ImGui::SliderInt("level", &view.settings.layer, 0, source.layers() - 1);
+    ImGui::SliderInt("level", &view.settings.layer, 0, source->layers() - 1);
     helpMarker("Array layer: for the N-buffer, level n holds min/max over 2^n x 2^n texels.");
   }
+  return false;
 }
 
 // 3. Line 2: the value range, overlay, zoom, exports.
@@ -167,10 +179,10 @@ void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture
   ImGui::SameLine();
   ImGui::TextDisabled("%.0f%%", view.transform.zoom * 100);
   sameLineIfFits(90);
-  if (ImGui::Button("PNG")) state.status = exportViewFiles(state, view, "", ExportKind::Png);
+  if (ImGui::Button("PNG")) state.reportExport(exportViewFiles(state, view, "", ExportKind::Png));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Export this view as displayed (PNG)");
   ImGui::SameLine();
-  if (ImGui::Button("EXR")) state.status = exportViewFiles(state, view, "", ExportKind::Exr);
+  if (ImGui::Button("EXR")) state.reportExport(exportViewFiles(state, view, "", ExportKind::Exr));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Export this view's raw values (EXR)");
 }
 
@@ -180,9 +192,8 @@ void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture
 void drawViewToolbar(UiState& state, ViewPanel& view, const GlTexture* texture, bool compact) {
   if (compact && !view.toolsOpen) {
     drawOutputCombo(state, view, ImGui::GetContentRegionAvail().x - buttonsWidth({"..."}));
-  } else {
-    drawSourceControls(state, view, texture);
-    if (texture) drawRangeControls(state, view, *texture);
+  } else if (!drawSourceControls(state, view, texture) && texture) {
+    drawRangeControls(state, view, *texture);
   }
   if (!compact) return;
   ImGui::SameLine();
