@@ -157,7 +157,7 @@ public:
     // A run estimated to be long is drawn in tiles of the soft shadow map (a scissor each:
     // every fragment still drawn once, the sums unchanged), about kFragmentsPerTile each, with
     // a cancel check after each tile, so Esc or --time-limit stops it within seconds.
-    const int tiles = std::clamp(int(std::ceil(std::sqrt(cost.fragments / kFragmentsPerTile))), 1, 16);
+    const int tiles = std::clamp(int(std::ceil(std::sqrt(cost.fragments / kFragmentsPerTile))), 1, 64);
     drawPatchesInTiles(params, occluderMap, receiverMap, 0, drawn, tiles, n);
     if (twoPasses) drawPatchesInTiles(params, occluderBack, receiverMap, 1, drawn, tiles, n);
     endAdditive();
