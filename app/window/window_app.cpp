@@ -24,6 +24,7 @@
 #include "window/panels/ui_inspector.h"
 #include "window/script/ui_lesson.h"
 #include "window/panels/ui_pipeline_panel.h"
+#include "window/panels/ui_run_budget.h"
 #include "window/panels/ui_scene_panel.h"
 #include "window/script/ui_script.h"
 #include "window/watchdog.h"
@@ -225,6 +226,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   stepSpeedErrorPanel();
   drawHelpWindow(state);
   drawShaderLogWindow(state);
+  drawRunBudgetModal(state);
   return movingCamera;
 }
 
@@ -325,6 +327,7 @@ int runWindow(const WindowOptions& options) {
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
+  installRunCancelKeys(window);  // Esc cancels a run in progress
 
   int result = 0;
   try {
@@ -414,6 +417,7 @@ int runWindow(const WindowOptions& options) {
     result = 1;
   }
   ImGui_ImplOpenGL3_Shutdown();
+  installRunCancelKeys(nullptr);
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   return result;
