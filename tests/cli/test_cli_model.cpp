@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/trace_command.h"
 #include "support/command.h"
 #include "support/temp_directory.h"
 
@@ -41,4 +42,33 @@ TEST(CliModel, BoundsAndTrianglesPrintedAndRecorded) {
   EXPECT_EQ(run["triangles"], 4);
   EXPECT_EQ(run["bounds"]["min"], nlohmann::json({-6.0, 0.0, -6.0}));
   EXPECT_EQ(run["bounds"]["max"], nlohmann::json({6.0, 1.0, 6.0}));
+}
+
+// The window's trace panel shows traceCommandLine() for the picked pixel at the view's eye
+// size; run as printed, the CLI records that pixel of an image of that size.
+TEST(CliTrace, CommandLineRecordsTheImageSizeAndThePixel) {
+  const TempDirectory dir("penumbra_cli_trace");
+  const fs::path out = dir.path() / "t.json";
+  const std::string command =
+      traceCommandLine("cube", 30, 40, 61, 67, {"light.resolution=128", "trace.rays=2"});
+  ASSERT_EQ(command.rfind("penumbra trace ", 0), 0u) << command;
+  EXPECT_NE(command.find("--width 61 --height 67"), std::string::npos) << command;
+  const auto result = runPenumbra(command.substr(std::string("penumbra ").size()) + " --out " +
+                                  out.string());
+  ASSERT_EQ(result.exitCode, 0) << result.output;
+  std::ifstream in(out);
+  const auto trace = nlohmann::json::parse(in);
+  EXPECT_EQ(trace["image_size"], nlohmann::json({61, 67}));
+  EXPECT_EQ(trace["pixel"], nlohmann::json({30, 40}));
+  EXPECT_EQ(trace["rays"], 4);
+  // A pixel outside that image is refused, naming the size.
+  const auto outside = runPenumbra("trace --scene cube --pixel 61,10 --width 61 --height 67");
+  EXPECT_EQ(outside.exitCode, 2) << outside.output;
+  EXPECT_NE(outside.output.find("inside the 61x67 image"), std::string::npos) << outside.output;
+}
+
+TEST(CliTrace, ScenePathsAreQuotedForTheShell) {
+  EXPECT_NE(traceCommandLine("/my models/a'b.glb", 0, 0, 8, 8, {}).find("'/my models/a'\\''b.glb'"),
+            std::string::npos)
+      << traceCommandLine("/my models/a'b.glb", 0, 0, 8, 8, {});
 }
