@@ -79,7 +79,7 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
   if (ImGui::IsKeyPressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
   if (ImGui::IsKeyPressed(GLFW_KEY_F5)) state.reloadShaders();
-  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+  // Esc cancels a run under way (panels/ui_run_budget.h); it does not close the window.
   if (ImGui::IsKeyPressed(GLFW_KEY_F12))
     state.script.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
   if (io.KeyCtrl) {

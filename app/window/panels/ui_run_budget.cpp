@@ -40,14 +40,36 @@ void drawRunBudgetModal(UiState& state) {
   ImGui::EndPopup();
 }
 
+namespace {
+
+// Esc seen by a key callback (chained before ImGui's): a press and its release can both
+// arrive within one poll during a long tile, where glfwGetKey would read "released".
+GLFWkeyfun previousKeyCallback = nullptr;
+bool escapePressed = false;
+
+void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) escapePressed = true;
+  if (previousKeyCallback) previousKeyCallback(window, key, scancode, action, mods);
+}
+
+}  // namespace
+
 void installRunCancelKeys(GLFWwindow* window) {
+  static GLFWwindow* installed = nullptr;
   if (!window) {
     setRunCancelPoll(nullptr);
+    if (installed) glfwSetKeyCallback(installed, previousKeyCallback);
+    installed = nullptr;
     return;
   }
+  installed = window;
+  previousKeyCallback = glfwSetKeyCallback(window, keyCallback);
   setRunCancelPoll([window] {
+    escapePressed = false;
     glfwPollEvents();
-    if (glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS) requestRunCancel("Esc pressed");
-    else if (glfwWindowShouldClose(window)) requestRunCancel("the window is closing");
+    if (escapePressed || glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS)
+      requestRunCancel("Esc pressed");
+    else if (glfwWindowShouldClose(window))
+      requestRunCancel("the window is closing");
   });
 }
