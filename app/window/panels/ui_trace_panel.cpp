@@ -206,7 +206,11 @@ void describeTraceCommand(const UiState& state, RayTraceInfo& trace) {
   for (const auto& stage : session.pipeline.stages())
     for (const Param& param : stage->params()) {
       const std::string key = stage->name() + "." + param.key;
-      if (key == "trace.record_x" || key == "trace.record_y" || param.automatic) continue;
+      // The window sets the picks itself (record_*, pick_*, patch_*): the command's --pixel
+      // says which pixel, and auto parameters are auto on the command line too.
+      const bool pick = param.key.rfind("record_", 0) == 0 || param.key.rfind("pick_", 0) == 0 ||
+                        param.key.rfind("patch_", 0) == 0;
+      if (pick || param.automatic) continue;
       const auto declared = session.parameterDefaults.find(key);
       if (!param.allowsAuto && declared != session.parameterDefaults.end() &&
           declared->second == param.value)
