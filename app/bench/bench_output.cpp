@@ -250,8 +250,9 @@ PlotSpec scatterOf(const std::vector<BenchResult>& results, size_t setup, const 
   spec.logY = true;  // the hard shadow's error is ~10x the Monte Carlo errors
   for (const BenchResult& r : results) {
     if (r.setup != setup) continue;
-    auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), r.family);
-    if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(r.family); it = spec.seriesNames.end() - 1; }
+    const std::string legend = seriesLegend(r.method, r.family);  // plot.h
+    auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), legend);
+    if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(legend); it = spec.seriesNames.end() - 1; }
     spec.points.push_back({r.msMedian, r.error.meanAbsInShadow, int(it - spec.seriesNames.begin()), r.label, r.pareto});
   }
   return spec;
@@ -399,8 +400,9 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
     spec.yLabel = "mean |visibility error| in shadow (Atty 2006)";
     spec.logX = false;
     spec.connectSeries = true;
-    auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), r.family);
-    if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(r.family); it = spec.seriesNames.end() - 1; }
+    const std::string legend = seriesLegend(r.method, r.family);  // plot.h
+    auto it = std::find(spec.seriesNames.begin(), spec.seriesNames.end(), legend);
+    if (it == spec.seriesNames.end()) { spec.seriesNames.push_back(legend); it = spec.seriesNames.end() - 1; }
     spec.points.push_back({map ? double(r.map) : setup.axisValue, r.error.meanAbsInShadow,
                            int(it - spec.seriesNames.begin()), r.label, false});
   }

@@ -18,10 +18,6 @@ namespace {
 
 using Color = std::array<double, 3>;
 const Color kBlack{0, 0, 0}, kGrid{0.88, 0.88, 0.88}, kFrontier{0.1, 0.1, 0.1};
-// Colour-blind-safe series colours (Okabe-Ito), then grey.
-const Color kSeries[] = {{0.0, 0.45, 0.70}, {0.90, 0.62, 0.0}, {0.0, 0.62, 0.45},
-                         {0.80, 0.47, 0.65}, {0.84, 0.37, 0.0}, {0.35, 0.70, 0.90},
-                         {0.94, 0.89, 0.26}, {0.4, 0.4, 0.4}};
 const char* kFont = "DejaVu Sans";
 
 std::string tickText(double value) {
@@ -109,21 +105,31 @@ void line(cairo_t* cr, double xa, double ya, double xb, double yb, const Color& 
   cairo_stroke(cr);
 }
 
-// Square, diamond or triangle by series, so colour is not the only cue.
+// The series' shape and colour (seriesStyle), so colour is not the only cue.
 void marker(cairo_t* cr, double x, double y, int series, double r) {
-  const Color& c = kSeries[size_t(series) % std::size(kSeries)];
-  cairo_set_source_rgb(cr, c[0], c[1], c[2]);
-  const int shape = series / int(std::size(kSeries)) + series % 3;
-  if (shape % 3 == 0) {
-    cairo_rectangle(cr, x - r, y - r, 2 * r, 2 * r);
-  } else if (shape % 3 == 1) {
-    cairo_move_to(cr, x, y - r * 1.3), cairo_line_to(cr, x + r * 1.3, y);
-    cairo_line_to(cr, x, y + r * 1.3), cairo_line_to(cr, x - r * 1.3, y);
-    cairo_close_path(cr);
-  } else {
-    cairo_move_to(cr, x, y - r * 1.2), cairo_line_to(cr, x + r * 1.2, y + r);
-    cairo_line_to(cr, x - r * 1.2, y + r);
-    cairo_close_path(cr);
+  const SeriesStyle style = seriesStyle(series);
+  cairo_set_source_rgb(cr, style.r, style.g, style.b);
+  switch (style.shape) {
+    case MarkerShape::Square: cairo_rectangle(cr, x - r, y - r, 2 * r, 2 * r); break;
+    case MarkerShape::Diamond:
+      cairo_move_to(cr, x, y - r * 1.3), cairo_line_to(cr, x + r * 1.3, y);
+      cairo_line_to(cr, x, y + r * 1.3), cairo_line_to(cr, x - r * 1.3, y);
+      cairo_close_path(cr);
+      break;
+    case MarkerShape::Triangle:
+      cairo_move_to(cr, x, y - r * 1.2), cairo_line_to(cr, x + r * 1.2, y + r);
+      cairo_line_to(cr, x - r * 1.2, y + r);
+      cairo_close_path(cr);
+      break;
+    case MarkerShape::Circle:
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, x, y, r * 1.1, 0, 2 * M_PI);
+      break;
+    case MarkerShape::TriangleDown:
+      cairo_move_to(cr, x, y + r * 1.2), cairo_line_to(cr, x + r * 1.2, y - r);
+      cairo_line_to(cr, x - r * 1.2, y - r);
+      cairo_close_path(cr);
+      break;
   }
   cairo_fill(cr);
 }
@@ -231,7 +237,7 @@ void drawPlot(cairo_t* cr, const PlotSpec& spec, const Layout& l) {
       std::sort(run.begin(), run.end(), [](auto a, auto b) { return a->x < b->x; });
       for (size_t i = 1; i < run.size(); ++i)
         line(cr, px(run[i - 1]->x), py(run[i - 1]->y), px(run[i]->x), py(run[i]->y),
-             kSeries[series % std::size(kSeries)], 1.5);
+             Color{seriesStyle(int(series)).r, seriesStyle(int(series)).g, seriesStyle(int(series)).b}, 1.5);
     }
   for (const PlotPoint* p : l.points) marker(cr, px(p->x), py(p->y), p->series, 4);
   for (size_t i = 0; i < l.frontier.size(); ++i) {
@@ -284,4 +290,36 @@ std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, 
     return cairo_pdf_surface_create(file, l.width, l.height);
   }, draw, false);
   return {png, svg, pdf};
+}
+
+SeriesStyle seriesStyle(int series) {
+  // Okabe-Ito (colour-blind safe) with black for its vermillion, which read as a second
+  // orange, and a darker yellow that shows on white; then grey.
+  static const SeriesStyle first[] = {
+      {0.0, 0.45, 0.70, MarkerShape::Square},     {0.90, 0.62, 0.0, MarkerShape::Diamond},
+      {0.0, 0.62, 0.45, MarkerShape::Triangle},   {0.80, 0.47, 0.65, MarkerShape::Circle},
+      {0.0, 0.0, 0.0, MarkerShape::TriangleDown}, {0.35, 0.70, 0.90, MarkerShape::Circle},
+      {0.80, 0.72, 0.0, MarkerShape::Square},     {0.55, 0.55, 0.55, MarkerShape::Triangle}};
+  constexpr int kColours = int(std::size(first)), kShapes = 5;
+  const int index = series < 0 ? 0 : series;
+  SeriesStyle style = first[index % kColours];
+  // Past eight: the same colours in the next shapes, so (colour, shape) repeats only after 40.
+  style.shape = MarkerShape((int(style.shape) + index / kColours) % kShapes);
+  return style;
+}
+
+std::string methodDisplayName(const std::string& method) {
+  if (method == "filter") return "Monte Carlo";
+  if (method == "trace") return "Monte Carlo (unfiltered)";
+  if (method == "hard_shadow") return "hard shadow";
+  if (method == "pcss") return "PCSS";
+  if (method == "ssm") return "SSM";
+  if (method == "raster4d") return "raster4d (exact)";
+  return method;
+}
+
+std::string seriesLegend(const std::string& method, const std::string& family) {
+  const std::string name = methodDisplayName(method);
+  if (family.empty() || family == method || family == name) return name;
+  return name + ": " + family;
 }

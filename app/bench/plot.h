@@ -28,3 +28,19 @@ struct PlotSpec {
 // Writes `stem`.png, .svg and .pdf (each atomically: a temporary file renamed); returns
 // their paths. Throws std::runtime_error naming the file it cannot write.
 std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, const PlotSpec& spec);
+
+// One style per series, shared by these charts and the window's speed-vs-error panel: the
+// first 40 series all differ in colour or shape, and no two of the first eight share a
+// shape with a similar colour (PCSS and "hierarchical 2L" were both orange diamonds).
+enum class MarkerShape { Square, Diamond, Triangle, Circle, TriangleDown };
+struct SeriesStyle {
+  double r, g, b;  // 0..1, readable on white and on the window's dark plot
+  MarkerShape shape;
+};
+SeriesStyle seriesStyle(int series);
+
+// A method's name as a reader knows it ("Monte Carlo", "PCSS", "SSM", ...), from its stage.
+std::string methodDisplayName(const std::string& method);
+// A legend entry: the method's name, then the configuration when it says more
+// ("Monte Carlo: hierarchical 2L", "PCSS").
+std::string seriesLegend(const std::string& method, const std::string& family);

@@ -48,6 +48,10 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
   nlohmann::json run;
   run["scene"] = frame.scene.name;
   run["triangles"] = frame.scene.triangleCount();
+  const Bounds bounds = frame.scene.bounds(false);
+  run["bounds"] = {{"min", {bounds.min.x, bounds.min.y, bounds.min.z}},
+                   {"max", {bounds.max.x, bounds.max.y, bounds.max.z}}};
+  if (!frame.scene.notes.empty()) run["scene_notes"] = frame.scene.notes;
   run["renderer"] = renderer;
   run["eye_size"] = {frame.eyeWidth, frame.eyeHeight};
   run["frame_key"] = frame.frameKey;

@@ -22,6 +22,7 @@
 #include "cli/trace_command.h"
 #include "core/input_error.h"
 #include "core/pipeline.h"
+#include "core/run_control.h"
 #include "window/window_app.h"
 
 namespace {
@@ -43,6 +44,9 @@ int runCommand(const std::string& command, const std::function<int()>& run) {
   } catch (const InputError& error) {
     std::fprintf(stderr, "%s%s\n", prefix.c_str(), error.what());
     return 2;
+  } catch (const RunCancelled& error) {
+    std::fprintf(stderr, "%sstopped: %s; nothing was written\n", prefix.c_str(), error.what());
+    return 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "%sout of memory\n", prefix.c_str());
     return 1;
@@ -235,6 +239,19 @@ int main(int argc, char** argv) {
       "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
                "penumbra graph | dot -Tsvg > graph.svg");
 
+  // --time-limit on every command but bench (whose --time-limit bounds its reference tracing,
+  // estimated before it starts): the run is cancelled at the next check after that many
+  // seconds (between stages, SSM passes, reference rows) and the command exits 1 with
+  // nothing half-written (core/run_control.h).
+  std::string timeLimit;
+  const char* timeLimitHelp = "seconds the command may run; then it stops at the next check "
+                              "(between stages, SSM passes, reference rows) and exits 1, "
+                              "writing nothing";
+  app.add_option("--time-limit", timeLimit, timeLimitHelp)->check(positiveSeconds);
+  for (CLI::App* sub : app.get_subcommands({}))
+    if (sub != benchCommand && sub != graphCommand)
+      sub->add_option("--time-limit", timeLimit, timeLimitHelp)->check(positiveSeconds);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -248,6 +265,7 @@ int main(int argc, char** argv) {
 
   const std::string command = app.get_subcommands().empty() ? "" : app.get_subcommands()[0]->get_name();
   return runCommand(command, [&] {
+    const RunTimeLimit limit(timeLimit.empty() ? 0.0 : std::strtod(timeLimit.c_str(), nullptr));
     if (*graphCommand) {
       std::fputs(Pipeline().dot().c_str(), stdout);
       return 0;

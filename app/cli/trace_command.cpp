@@ -21,6 +21,7 @@ const char* stepDecisionName(int decision) {
 std::string traceStepsJson(const Frame& frame, int x, int y) {
   nlohmann::json result;
   result["pixel"] = {x, y};
+  result["image_size"] = {frame.eyeWidth, frame.eyeHeight};
   const GlTexture& visibility = frame.texture("trace.visibility");
   const int glY = frame.eyeHeight - 1 - y;
   float value = 0;
@@ -47,6 +48,29 @@ std::string traceStepsJson(const Frame& frame, int x, int y) {
                      {"texelPoint", {step.stepping.z, step.stepping.w}}});
   result["steps"] = steps;
   return result.dump(1) + "\n";
+}
+
+namespace {
+
+// Single quotes for a POSIX shell where the text needs them.
+std::string shellWord(const std::string& text) {
+  const bool plain = !text.empty() && text.find_first_not_of(
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-+=.,/:@%") == std::string::npos;
+  if (plain) return text;
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
+
+std::string traceCommandLine(const std::string& scene, int x, int y, int width, int height,
+                             const std::vector<std::string>& sets) {
+  std::string command = "penumbra trace --scene " + shellWord(scene) + " --pixel " +
+                        std::to_string(x) + "," + std::to_string(y) + " --width " +
+                        std::to_string(width) + " --height " + std::to_string(height);
+  for (const std::string& set : sets) command += " --set " + shellWord(set);
+  return command;
 }
 
 int runTraceCommand(const TraceOptions& options) {

@@ -1,4 +1,5 @@
 #include "core/pipeline.h"
+#include "core/run_control.h"
 
 #include <algorithm>
 #include <chrono>
@@ -442,6 +443,7 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
   // 3. One stage, timed.
   auto runStage = [&](size_t i) {
     Stage& stage = *stages_[i];
+    throwIfRunCancelled("before stage " + stage.name());  // core/run_control.h
     StageTime& time = times_[i];
     const auto start = std::chrono::steady_clock::now();
     if (queries) glBeginQuery(GL_TIME_ELAPSED, queries_[i]);
@@ -483,6 +485,7 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
     for (size_t j = 0; j < i; ++j)
       if (willRun.count(stages_[j]->name()) && !times_[j].ran) runStage(j);
   }
+  throwIfRunCancelled("after the last stage");  // one that stopped early left partial data
 }
 
 // The `auto` choices decided after stage `after`: each parameter takes the option its

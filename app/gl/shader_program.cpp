@@ -138,10 +138,24 @@ GLuint ShaderProgram::id() {
   return program_;
 }
 
+namespace {
+
+// A program deleted while current stays current until unbound, and its name stays in
+// GL_CURRENT_PROGRAM: whoever saves and restores the current program (ImGui's renderer does)
+// then binds a name that no longer exists, GL_INVALID_VALUE in glUseProgram. Unbind first.
+void deleteProgram(GLuint program) {
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  if (GLuint(current) == program) glUseProgram(0);
+  glDeleteProgram(program);
+}
+
+}  // namespace
+
 ShaderProgram::~ShaderProgram() {
   auto& programs = livePrograms();
   programs.erase(std::remove(programs.begin(), programs.end(), this), programs.end());
-  if (program_) glDeleteProgram(program_);
+  if (program_) deleteProgram(program_);
 }
 
 bool ShaderProgram::reload(std::string& log) {
@@ -172,7 +186,7 @@ bool ShaderProgram::reload(std::string& log) {
   }
   for (GLuint shader : shaders) glDeleteShader(shader);
   if (!ok) return false;
-  if (program_) glDeleteProgram(program_);
+  if (program_) deleteProgram(program_);
   program_ = program;
   return true;
 }

@@ -4,6 +4,7 @@
 
 #include "scene/scene_builtin.h"
 #include "scene/scene_checks.h"
+#include "scene/scene_frame.h"
 
 int HeadlessSession::open(const std::string& command, const std::string& sceneNameOrPath,
                           const std::vector<std::string>& sets, int width, int height) {
@@ -18,6 +19,8 @@ int HeadlessSession::open(const std::string& command, const std::string& sceneNa
   } catch (const std::exception& error) {
     return fail(2, error.what());
   }
+  std::fprintf(stderr, "penumbra %s: scene '%s': %s\n", command.c_str(), scene.name.c_str(),
+               sceneSummary(scene).c_str());
   for (const std::string& warning : warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
   for (const std::string& warning : lightWarnings(scene))
     std::fprintf(stderr, "warning: %s\n", warning.c_str());

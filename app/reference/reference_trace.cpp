@@ -1,5 +1,7 @@
 #include "reference/reference_trace.h"
 
+#include "core/run_control.h"
+
 #include <embree3/rtcore.h>
 #include <unistd.h>
 
@@ -240,7 +242,9 @@ bool ReferenceTracer::trace(const ReferenceRequest& request, std::vector<float>&
   std::atomic<int> nextRow{0};
   auto worker = [&] {
     for (int y = nextRow++; y < h; y = nextRow++) {
-      if (progress && progress->cancel) return;
+      // Between rows: a cancel request of its own, or of the whole run (core/run_control.h:
+      // Esc in the window, a command's --time-limit).
+      if ((progress && progress->cancel) || runCancelRequested()) return;
       for (int x = 0; x < w; ++x) {
         const size_t i = size_t(y) * w + x;
         const float* p = &request.wsPosition[4 * i];
@@ -255,7 +259,7 @@ bool ReferenceTracer::trace(const ReferenceRequest& request, std::vector<float>&
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (std::thread& thread : pool) thread.join();
-  return !(progress && progress->cancel);
+  return !(progress && progress->cancel) && !runCancelRequested();
 }
 
 double ReferenceTracer::estimateSeconds(const ReferenceRequest& request, int stride) const {

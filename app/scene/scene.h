@@ -62,6 +62,9 @@ struct Scene {
   std::vector<SceneObject> objects;
   AreaLight light;
   Camera camera;
+  // What loading did that the objects do not show, in words ("bunny.glb: file units x [...]
+  // scaled by 0.0161 to 2.5 across"), for the scene summary (scene/scene_frame.h).
+  std::vector<std::string> notes;
 
   Bounds bounds(bool occludersOnly = false) const;
   size_t triangleCount() const;

@@ -3,6 +3,7 @@
 #include "core/input_error.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -12,6 +13,7 @@
 
 #include "scene/mesh_builders.h"
 #include "scene/scene_file.h"
+#include "scene/scene_frame.h"
 #include "scene/scene_gltf.h"
 #include "scene/scene_stress.h"
 
@@ -74,16 +76,40 @@ Scene spheres() {
 }
 
 // Puts loaded objects on the ground: scaled so the largest side is `size`, resting on y = 0.
-void placeOnGround(std::vector<SceneObject>& objects, float size) {
+// Returns the scale applied.
+float placeOnGround(std::vector<SceneObject>& objects, float size, Bounds* fileBounds = nullptr) {
   Bounds bounds;
   for (const SceneObject& object : objects)
     for (const glm::vec3& p : object.mesh.positions) bounds.extend(p);
+  if (fileBounds) *fileBounds = bounds;
   const glm::vec3 extent = bounds.max - bounds.min;
   const float scale = size / std::max({extent.x, extent.y, extent.z, 1e-6f});
   const glm::vec3 center = 0.5f * (bounds.min + bounds.max);
   glm::mat4 place = glm::scale(glm::mat4(1), glm::vec3(scale));
   place = glm::translate(place, {-center.x, -bounds.min.y, -center.z});
   for (SceneObject& object : objects) transformMesh(object.mesh, place);
+  return scale;
+}
+
+// A researcher's bare glTF, in whatever units it was written: scaled to 2.5 units across on
+// the ground (the size every stage's defaults are set for: depth bias, light size, map
+// resolution), then the camera, ground and light framed around it. The file's own bounds
+// and the scale go into the scene's notes.
+Scene bareGltf(const std::string& path, std::vector<std::string>& warnings) {
+  Scene scene;
+  scene.name = std::filesystem::path(path).stem().string();
+  std::vector<SceneObject> loaded = loadGltf(path, glm::mat4(1), warnings);
+  Bounds fileBounds;
+  const float scale = placeOnGround(loaded, 2.5f, &fileBounds);
+  char factor[32];
+  std::snprintf(factor, sizeof factor, "%.4g", scale);
+  scene.notes.push_back(std::filesystem::path(path).filename().string() + " in file units: " +
+                        boundsText(fileBounds) + ", scaled by " + factor +
+                        " to 2.5 across on the ground");
+  scene.objects.push_back(ground());
+  for (SceneObject& object : loaded) scene.objects.push_back(std::move(object));
+  frameScene(scene);
+  return scene;
 }
 
 Scene gltfOnGround(const std::string& path, const std::string& name,
@@ -157,10 +183,11 @@ Scene loadSceneOrThrow(const std::string& nameOrPath, std::vector<std::string>& 
     scene = nameOrPath == "engine"   ? gltfOnGround(kEnginePath, "engine", warnings)
             : nameOrPath == "dragon" ? dragon(warnings)
                                      : makeBuiltinScene(nameOrPath);
-  else if (extension == ".json")
+  else if (extension == ".json") {
     scene = loadSceneFile(nameOrPath, warnings);
-  else if (extension == ".gltf" || extension == ".glb")
-    scene = gltfOnGround(nameOrPath, std::filesystem::path(nameOrPath).stem().string(), warnings);
+    for (std::string& warning : cameraWarnings(scene)) warnings.push_back(std::move(warning));
+  } else if (extension == ".gltf" || extension == ".glb")
+    scene = bareGltf(nameOrPath, warnings);
   else
     scene = makeBuiltinScene(nameOrPath);  // throws with the list of valid names
   if (std::string problem = validateScene(scene); !problem.empty())

@@ -1,5 +1,7 @@
 #include "window/ui_session.h"
 
+#include "core/run_control.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -135,8 +137,18 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
   const RunKey key = currentKey(requested);
   if (!runEveryFrame && holds(key)) return false;
   lastRun = key;  // a failing run is not retried until something changes
+  clearRunCancel();  // Esc cancels the run under way, not the next one
   try {
     pipeline.run(*frame, key.requested);
+  } catch (const RunBudgetExceeded& error) {
+    runError = error.what();
+    budgetKey = error.budgetKey, budgetMessage = error.what(), budgetEstimate = error.estimate;
+    problem = "run refused as too long: " + runError;
+    return false;
+  } catch (const RunCancelled& error) {
+    runError = error.what();
+    problem = std::string("run ") + error.what() + "; change anything to run again";
+    return false;
   } catch (const std::exception& error) {
     runError = error.what();
     problem = "pipeline failed: " + runError + " (exports are refused until a run succeeds)";

@@ -62,6 +62,10 @@ struct Session {
   std::deque<double> frameEnds;     // when recent frames ended (seconds, steady clock)
   std::string runError;  // why the last run failed, "" after a success: the frame then holds
                          // new, blank and stale outputs, so exports are refused (ui_export.h)
+  // A run refused as too long before it started (core/run_control.h): the parameter that
+  // lets it run and its estimate in that parameter's unit; the window asks (ui_run_budget.h).
+  std::string budgetKey, budgetMessage;
+  double budgetEstimate = 0;
 
   // 3. Scenes and parameters; "" or a message naming what is valid.
   void adoptScene(Scene loaded, const std::string& source);  // GpuScene and Frame rebuilt

@@ -27,6 +27,7 @@
 #include "window/panels/ui_inspector.h"
 #include "window/script/ui_lesson.h"
 #include "window/panels/ui_pipeline_panel.h"
+#include "window/panels/ui_run_budget.h"
 #include "window/panels/ui_scene_panel.h"
 #include "window/script/ui_script.h"
 #include "window/watchdog.h"
@@ -98,6 +99,7 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
   for (ImWchar c : io.InputQueueCharacters) question |= c == '?';
   if (ImGui::IsKeyPressed(GLFW_KEY_F1) || question) state.showHelp = !state.showHelp;
   if (ImGui::IsKeyPressed(GLFW_KEY_F5)) state.reloadShaders();
+  // Esc cancels a run under way (panels/ui_run_budget.h); it does not close the window.
   if (ImGui::IsKeyPressed(GLFW_KEY_F12))
     state.script.screenshotRequest = "penumbra_screenshot_" + std::to_string(++screenshotCount) + ".png";
   if (io.KeyCtrl) {
@@ -295,6 +297,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   drawHelpWindow(state);
   drawShaderLogWindow(state);
   drawLogWindow(state);
+  drawRunBudgetModal(state);
   return movingCamera;
 }
 
@@ -546,6 +549,7 @@ int runWindow(const WindowOptions& options) {
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   glfwSetWindowRefreshCallback(window, onRefresh);
   ImGui_ImplOpenGL3_Init("#version 450 core");
+  installRunCancelKeys(window);  // Esc cancels a run in progress
 
   int result = 0;
   try {
@@ -572,6 +576,7 @@ int runWindow(const WindowOptions& options) {
     result = 1;
   }
   ImGui_ImplOpenGL3_Shutdown();
+  installRunCancelKeys(nullptr);
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   return result;

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/frame.h"
+#include "core/run_control.h"
 #include "reference/reference_cache.h"
 #include "reference/reference_request.h"
 #include "reference/reference_trace.h"
@@ -160,6 +161,7 @@ private:
       });
       while (!workerDone) {
         bar.update();
+        pollRunCancel();  // Esc in the window (core/run_control.h); the rows stop at the next
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
       }
       worker.join();

@@ -10,13 +10,17 @@
 //   6. the soft shadow map projected onto the scene: visibility = 1 - occlusion, clamped.
 // The maps share the light's frustum (Eq 3.1 of the thesis): aligned with the rectangular
 // light and of its aspect ratio, seen from the projection point behind the light centre.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/frame.h"
+#include "core/run_control.h"
 #include "gl/gpu_layout_ssm.h"
 #include "gl/shader_program.h"
 #include "shared/screen_pass_layout.h"
 #include "shared_inputs/light_input.h"
+#include "soft_shadow_maps/ssm_cost.h"
 
 // Each pass's bindings (shaders/shared/ssm_layout.h), within GL 4.5's minimums.
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, SSM_PARAMS_BINDING},
@@ -35,6 +39,7 @@ static_assert(gpu::distinctBelow({DEPTH_BOUNDS_MAP_UNIT}, gpu::kTextureUnits) &&
 namespace {
 
 constexpr int kPickedLightSize = 256;  // texels of the picked-receiver view of the light
+constexpr double kFragmentsPerTile = 5e7;  // a cancel check per this many estimated fragments
 
 class SoftShadowMapStage final : public Stage {
 public:
@@ -87,6 +92,10 @@ public:
                     "still counts as that receiver, in receiver-depth steps between neighbouring "
                     "texels (its slope). Points farther in front are occluders: SSM computes no "
                     "self-shadowing, they stay lit.", 2.0, 0.0, 64.0),
+        Param::real("budget", "Millions of fragments the micro-patch quads may cover in a run, "
+                    "estimated from the scene before they are drawn (ssm_cost.h: patches x "
+                    "texels per quad, which grows without bound as an occluder nears the light); "
+                    "a run over it is refused. 0: no limit.", 2000.0, 0.0, 1e9),
         Param::integer("pick_x", "Eye pixel (column) of the receiver whose back-projected "
                        "micro-patches the pickedLight view draws; -1: none.", -1, -1, 8192),
         Param::integer("pick_y", "Eye pixel (row from the top) of the picked receiver.", -1, -1,
@@ -130,6 +139,14 @@ public:
                    param("patch_x").asInt(), param("patch_y").asInt()};
     params.tolerance = {param("receiver_tolerance").asFloat(), 0, 0, 0};
 
+    // Before steps 3-5, their cost from the scene: refused over the budget (core/run_control.h).
+    const SsmCostEstimate cost =
+        estimateSsmCost(frame.scene, frame.light, n, twoPasses ? 2 : 1, param("fill").asFloat());
+    frame.counters["ssm.estimatedFragments"] = cost.fragments;
+    frame.counters["ssm.estimatedPatches"] = cost.patches;
+    checkBudget(cost, n);
+    throwIfRunCancelled("in ssm, before the micro-patches");
+
     // Steps 3-5: the soft shadow map(s) and the patch count.
     const GLenum format = param("accumulation").asEnum() == "r16f" ? GL_RG16F : GL_RG32F;
     if (accumulation_.id() == 0 || accumulation_.width() != n || accumulation_.internalFormat() != format)
@@ -137,8 +154,12 @@ public:
     GlTexture& patchCount = frame.output(*this, "patchCount", n, n);
     const int drawn = int(std::lround(param("fill").asFloat() * n * n));
     beginAdditive(accumulation_, &patchCount);
-    drawPatches(params, occluderMap, receiverMap, 0, drawn);
-    if (twoPasses) drawPatches(params, occluderBack, receiverMap, 1, drawn);
+    // A run estimated to be long is drawn in tiles of the soft shadow map (a scissor each:
+    // every fragment still drawn once, the sums unchanged), about kFragmentsPerTile each, with
+    // a cancel check after each tile, so Esc or --time-limit stops it within seconds.
+    const int tiles = std::clamp(int(std::ceil(std::sqrt(cost.fragments / kFragmentsPerTile))), 1, 64);
+    drawPatchesInTiles(params, occluderMap, receiverMap, 0, drawn, tiles, n);
+    if (twoPasses) drawPatchesInTiles(params, occluderBack, receiverMap, 1, drawn, tiles, n);
     endAdditive();
     GlTexture& softShadowMap = frame.output(*this, "softShadowMap", n, n);
     copyColor(accumulation_, softShadowMap);
@@ -190,6 +211,21 @@ public:
   }
 
 private:
+  void checkBudget(const SsmCostEstimate& cost, int n) {
+    const double budget = param("budget").asFloat();
+    if (budget <= 0 || cost.fragments <= budget * 1e6) return;
+    char message[640];
+    std::snprintf(message, sizeof message,
+                  "ssm: this run would blend about %.3g fragments (%.3g micro-patches x %.3g "
+                  "texels per quad at ssm.resolution=%d: an occluder close to the light gives "
+                  "each patch a quad the size of the map), over ssm.budget=%g million. Lower "
+                  "ssm.resolution or move the light away from the occluders, or run it anyway "
+                  "with --set ssm.budget=%.0f (0: no limit)",
+                  cost.fragments, cost.patches, cost.meanQuadTexels, n, budget,
+                  std::ceil(cost.fragments * 1.25e-6));
+    throw RunBudgetExceeded(message, "ssm.budget", cost.fragments * 1e-6, budget);
+  }
+
   void renderDepth(Frame& frame, GlTexture& target, GLenum depthTest, float clearDepth,
                    bool receivers) {
     glNamedFramebufferTexture(depthFramebuffer_.id(), GL_DEPTH_ATTACHMENT, target.id(), 0);
@@ -260,6 +296,28 @@ private:
     glBindVertexArray(emptyVertexArray());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
     glBindVertexArray(0);
+  }
+
+  void drawPatchesInTiles(const gpu::SsmParams& params, const GlTexture& occluders,
+                          const GlTexture& receivers, int pass, int instances, int tiles, int n) {
+    if (tiles <= 1) return drawPatches(params, occluders, receivers, pass, instances);
+    for (int ty = 0; ty < tiles; ++ty)
+      for (int tx = 0; tx < tiles; ++tx) {
+        const int x0 = tx * n / tiles, x1 = (tx + 1) * n / tiles;
+        const int y0 = ty * n / tiles, y1 = (ty + 1) * n / tiles;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(x0, y0, x1 - x0, y1 - y0);
+        drawPatches(params, occluders, receivers, pass, instances);
+        glDisable(GL_SCISSOR_TEST);
+        glFinish();  // the tile is done before the check
+        pollRunCancel();
+        if (runCancelRequested()) {
+          endAdditive();  // GL state as every stage leaves it
+          throwIfRunCancelled("in ssm after " + std::to_string(ty * tiles + tx + 1) + " of " +
+                              std::to_string(tiles * tiles) + " tiles of pass " +
+                              std::to_string(pass + 1));
+        }
+      }
   }
 
   void bindParams(const gpu::SsmParams& params) {

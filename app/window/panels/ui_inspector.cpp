@@ -167,6 +167,7 @@ void drawRayTrace(UiState& state) {
   static glm::ivec2 cachedPick{-1};
   if (cachedRuns != state.session.pipelineRuns || cachedPick != *state.views.pick || cachedRay != state.views.selectedRay) {
     trace = rayTraceSource()(*state.session.frame, *state.views.pick, state.views.selectedRay);
+    describeTraceCommand(state, trace);
     cachedRuns = state.session.pipelineRuns;
     cachedPick = *state.views.pick;
     cachedRay = state.views.selectedRay;

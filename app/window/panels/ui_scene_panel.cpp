@@ -9,8 +9,10 @@
 #include <string>
 
 #include "scene/scene_builtin.h"
+#include "scene/scene_frame.h"
 #include "window/ui_camera.h"
 #include "window/panels/ui_export.h"
+#include "window/script/ui_script_actions.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_state.h"
 #include "window/ui_widgets.h"
@@ -35,6 +37,13 @@ void drawScenePicker(UiState& state) {
   ImGui::SameLine();
   if ((ImGui::Button("Load") || entered) && !path.empty())
     if (std::string problem = state.loadScene(path); !problem.empty()) state.status = problem;
+  // The model's size in the scene's units, and a button that fits camera, ground and light.
+  ImGui::TextWrapped("bounds %s", boundsText(state.session.scene.bounds(false)).c_str());
+  if (ImGui::Button("Frame scene"))
+    if (std::string problem = frameLoadedScene(state); !problem.empty()) state.status = problem;
+  helpMarker("Places the camera, the ground and the light to fit the model, whatever its units: "
+             "the camera outside it looking at its centre, the ground under its lowest point, "
+             "the light above it (a bare .gltf/.glb is framed when it loads).");
 }
 
 // 2. Eye image size: follow the view, or a fixed size (the performance target is 640x480).

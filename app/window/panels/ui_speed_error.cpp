@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "bench/plot.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -80,12 +82,30 @@ LogAxis axisFor(const std::vector<double>& values) {
   return {lo, std::max(hi, lo + 0.5)};
 }
 
-// Colour per method, in the order the methods first appear.
-ImU32 methodColour(size_t index) {
-  static const ImU32 colours[] = {IM_COL32(110, 170, 255, 255), IM_COL32(230, 90, 90, 255),
-                                  IM_COL32(120, 220, 140, 255), IM_COL32(220, 140, 240, 255),
-                                  IM_COL32(240, 220, 90, 255), IM_COL32(160, 160, 160, 255)};
-  return colours[index % std::size(colours)];
+// Colour and shape per series (bench/plot.h, as the report's charts), in the order the
+// series first appear; the window's plot is dark, so black is drawn white.
+ImU32 seriesColour(size_t index) {
+  const SeriesStyle style = seriesStyle(int(index));
+  if (style.r + style.g + style.b == 0) return IM_COL32(235, 235, 235, 255);
+  return IM_COL32(int(style.r * 255), int(style.g * 255), int(style.b * 255), 255);
+}
+
+void seriesMarker(ImDrawList* draw, ImVec2 p, size_t index, float r) {
+  const ImU32 colour = seriesColour(index);
+  switch (seriesStyle(int(index)).shape) {
+    case MarkerShape::Square: draw->AddRectFilled({p.x - r, p.y - r}, {p.x + r, p.y + r}, colour); break;
+    case MarkerShape::Diamond:
+      draw->AddQuadFilled({p.x, p.y - 1.3f * r}, {p.x + 1.3f * r, p.y}, {p.x, p.y + 1.3f * r},
+                          {p.x - 1.3f * r, p.y}, colour);
+      break;
+    case MarkerShape::Triangle:
+      draw->AddTriangleFilled({p.x, p.y - 1.2f * r}, {p.x + 1.2f * r, p.y + r}, {p.x - 1.2f * r, p.y + r}, colour);
+      break;
+    case MarkerShape::Circle: draw->AddCircleFilled(p, 1.1f * r, colour); break;
+    case MarkerShape::TriangleDown:
+      draw->AddTriangleFilled({p.x, p.y + 1.2f * r}, {p.x - 1.2f * r, p.y - r}, {p.x + 1.2f * r, p.y - r}, colour);
+      break;
+  }
 }
 
 // 2. The chart: points (only those measured: frames > 0), frontier, the current one ringed.
@@ -146,10 +166,11 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   int hovered = -1;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   for (size_t i = 0; i < points.size(); ++i) {
-    auto it = std::find(methods.begin(), methods.end(), points[i]->method);
-    if (it == methods.end()) methods.push_back(points[i]->method), it = methods.end() - 1;
+    const std::string legend = seriesLegend(points[i]->method, points[i]->family);
+    auto it = std::find(methods.begin(), methods.end(), legend);
+    if (it == methods.end()) methods.push_back(legend), it = methods.end() - 1;
     const ImVec2 p = at(*points[i]);
-    draw->AddCircleFilled(p, 3.5f, methodColour(size_t(it - methods.begin())));
+    seriesMarker(draw, p, size_t(it - methods.begin()), 0.3f * em);
     if (onFrontier[i]) draw->AddCircle(p, 5.5f, IM_COL32(255, 190, 60, 255));
     if (std::hypot(mouse.x - p.x, mouse.y - p.y) < 6) hovered = int(i);
   }
@@ -166,15 +187,21 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   const float lineWidth = ImGui::GetContentRegionAvail().x, gap = ImGui::GetStyle().ItemSpacing.x;
   float used = ImGui::CalcTextSize("-- Pareto frontier").x;
   ImGui::TextColored({1, 0.75f, 0.25f, 1}, "-- Pareto frontier");
+  const float markerWidth = 1.2f * em;
   for (size_t m = 0; m < methods.size(); ++m) {
-    const std::string entry = "o " + methods[m];
-    const float width = ImGui::CalcTextSize(entry.c_str()).x;
+    const float width = markerWidth + ImGui::CalcTextSize(methods[m].c_str()).x;
     if (used + gap + width <= lineWidth) {
       ImGui::SameLine();
       used += gap + width;
     } else
       used = width;
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(methodColour(m)), "%s", entry.c_str());
+    // The entry's own marker, then its name: shape and colour as on the chart.
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::Dummy({markerWidth, ImGui::GetTextLineHeight()});
+    seriesMarker(ImGui::GetWindowDrawList(), {at.x + 0.5f * markerWidth, at.y + 0.5f * ImGui::GetTextLineHeight()},
+                 m, 0.3f * em);
+    ImGui::SameLine(0, 0);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(seriesColour(m)), "%s", methods[m].c_str());
   }
 }
 

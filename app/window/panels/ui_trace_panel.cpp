@@ -5,6 +5,9 @@
 
 #include <algorithm>
 
+#include "cli/trace_command.h"
+#include "window/ui_state.h"
+
 RayTraceSource& rayTraceSource() {
   static RayTraceSource source;
   return source;
@@ -177,10 +180,51 @@ void drawRayTracePanel(const RayTraceInfo& trace, glm::ivec2 lightMapSize,
                        std::vector<ViewOverlayShape>& overlay) {
   ImGui::TextWrapped("%zu steps%s%s", trace.steps.size(), trace.result.empty() ? "" : ", ",
                      trace.result.c_str());
+  if (!trace.commandLine.empty()) {
+    ImGui::TextDisabled("CLI:");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", trace.commandLine.c_str());
+    if (ImGui::SmallButton("Copy command")) ImGui::SetClipboardText(trace.commandLine.c_str());
+    if (!trace.commandNote.empty()) ImGui::TextWrapped("%s", trace.commandNote.c_str());
+  }
   if (trace.steps.empty()) return;
   const std::vector<ViewOverlayShape> shapes = traceOverlay(trace, lightMapSize);
   overlay.insert(overlay.end(), shapes.begin(), shapes.end());
   if (hasPoints(trace.steps)) drawPointPlot(trace.steps);
   else drawPlot(trace.steps);
   drawTable(trace.steps);
+}
+
+void describeTraceCommand(const UiState& state, RayTraceInfo& trace) {
+  trace.commandLine.clear();
+  trace.commandNote.clear();
+  const Session& session = state.session;
+  if (!session.frame || !state.views.pick) return;
+  const int width = session.frame->eyeWidth, height = session.frame->eyeHeight;
+  const glm::ivec2 image{state.views.pick->x, height - 1 - state.views.pick->y};  // row 0 on top
+  std::vector<std::string> sets;
+  for (const auto& stage : session.pipeline.stages())
+    for (const Param& param : stage->params()) {
+      const std::string key = stage->name() + "." + param.key;
+      // The window sets the picks itself (record_*, pick_*, patch_*): the command's --pixel
+      // says which pixel, and auto parameters are auto on the command line too.
+      const bool pick = param.key.rfind("record_", 0) == 0 || param.key.rfind("pick_", 0) == 0 ||
+                        param.key.rfind("patch_", 0) == 0;
+      if (pick || param.automatic) continue;
+      const auto declared = session.parameterDefaults.find(key);
+      if (!param.allowsAuto && declared != session.parameterDefaults.end() &&
+          declared->second == param.value)
+        continue;
+      sets.push_back(key + "=" + param.toString());
+    }
+  trace.commandLine = traceCommandLine(session.sceneSource, image.x, image.y, width, height, sets);
+  const Camera& c = session.scene.camera;
+  const Camera& c0 = session.initialCamera;
+  const AreaLight& l = session.scene.light;
+  const AreaLight& l0 = session.initialLight;
+  if (c.position != c0.position || c.target != c0.target || c.up != c0.up ||
+      c.fovYDegrees != c0.fovYDegrees || l.center != l0.center || l.forward != l0.forward ||
+      l.up != l0.up || l.width != l0.width || l.height != l0.height)
+    trace.commandNote = "The camera or the light moved since the scene loaded; the command "
+                        "uses the scene's (Reset camera / Reset light to match).";
 }

@@ -42,7 +42,15 @@ struct RayTraceInfo {
   int raysPerPixel = 0;            // n x n
   std::vector<RayStepRecord> steps;
   std::string result;              // "visible", "blocked", ... (free text)
+  std::string commandLine;         // the `penumbra trace` that records the same pixel (or "")
+  std::string commandNote;         // why it may differ (a moved camera), or ""
 };
+
+struct UiState;
+// The `penumbra trace` command of the picked pixel at the view's eye size, the loaded scene
+// and every parameter set away from its default (cli/trace_command.h); a note when the camera
+// or the light moved since the scene loaded (the command uses the scene's).
+void describeTraceCommand(const UiState& state, RayTraceInfo& trace);
 
 using RayTraceSource = std::function<RayTraceInfo(const Frame&, glm::ivec2 pixel, int ray)>;
 RayTraceSource& rayTraceSource();  // empty until the trace stage installs one

@@ -226,6 +226,7 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"eye_size", pairOr({"fit"}), [](S& s, const json& a, C&) { return eyeSize(s, a); }},
       {"scene", kString, [=](S& s, const json& a, C&) { return s.loadScene(text(a)); }},
+      {"frame_scene", kBool, [](S& s, const json&, C&) { return frameLoadedScene(s); }},
       {"colormap", kString, [](S& s, const json& a, C&) { return colormap(s, a); }},
       {"channels", kString, [](S& s, const json& a, C&) { return channels(s, a); }},
       {"level", kCount,

@@ -59,3 +59,4 @@ std::string say(UiState& state, const nlohmann::json& a, ScriptContext& context)
 std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
 void printPick(const UiState& state, const std::string& label);
 void printTiming(const UiState& state, const std::string& label);
+std::string frameLoadedScene(UiState& state);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "scene/scene_frame.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_script_actions.h"
 #include "window/ui_graph.h"
@@ -216,4 +217,17 @@ void printTiming(const UiState& state, const std::string& label) {
     else
       std::printf("  %-14s  not run\n", time.stage.c_str());
   std::fflush(stdout);
+}
+
+// 5. The camera, the ground and the light fitted to the loaded model (the scene panel's
+//    "Frame scene" button and the frame_scene action): a copy is framed and adopted, so the
+//    GPU scene is rebuilt with the moved ground and "Reset camera" returns to the framing.
+std::string frameLoadedScene(UiState& state) {
+  Scene framed = state.session.scene;
+  frameScene(framed);
+  if (std::string problem = validateScene(framed); !problem.empty()) return "frame scene: " + problem;
+  const std::string source = state.session.sceneSource;
+  state.adoptScene(std::move(framed), source);
+  state.status = "framed: " + boundsText(framedBounds(state.session.scene));
+  return "";
 }
