@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "window/views/ui_view_colorbar.h"
+
 void printLayout(const std::string& label) {
   const ImGuiContext& context = *ImGui::GetCurrentContext();
   for (const ImGuiWindow* window : context.Windows) {
@@ -18,5 +20,6 @@ void printLayout(const std::string& label) {
                 label.c_str(), window->Name, window->Pos.x, window->Pos.y, window->Size.x,
                 window->Size.y, window->ContentSize.x, window->ContentSize.y, overflow);
   }
+  printColorBars(label);
   std::fflush(stdout);
 }

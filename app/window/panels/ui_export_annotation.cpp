@@ -50,7 +50,8 @@ Annotation viewAnnotation(const UiState& state, const ViewPanel& view,
   if (view.settings.colormap != Colormap::Categorical) {
     annotation.bar = ColorBar{view.settings.colormap, view.settings.black, view.settings.white,
                               view.output + (view.minus.empty() ? "" : " - " + view.minus) +
-                                  ": " + channelName};
+                                  ": " + channelName +
+                                  (view.settings.autoRange ? " · auto range (p99)" : "")};
     return annotation;
   }
   const Output* output = state.session.outputOf(view.output);

@@ -135,6 +135,7 @@ std::string range(UiState& state, const json& a) {
   } else {
     view.settings.black = a[0].get<float>();
     view.settings.white = a[1].get<float>();
+    view.settings.autoRange = false;
   }
   return "";
 }
