@@ -29,7 +29,8 @@ std::string viewCaption(const UiState& state, const ViewPanel& view) {
       const auto declared = state.session.parameterDefaults.find(name + "." + param.key);
       if (declared != state.session.parameterDefaults.end() && declared->second == param.value)
         continue;
-      if (param.key.rfind("record_", 0) == 0) continue;  // the recorded pixel: not a setting
+      // The pixel whose steps are recorded or whose mask is shown: a pick, not a setting.
+      if (param.key.rfind("record_", 0) == 0 || param.key.rfind("pick_", 0) == 0) continue;
       // The shown stage's own keys stay short; the others name their stage.
       const std::string key = name == stageName ? param.key : name + "." + param.key;
       changed += (changed.empty() ? "" : ", ") + key + "=" + param.toString();

@@ -108,7 +108,7 @@ std::string number(const UiState& state, const ScriptContext& context, const std
     double value = 0;
     if (!outputNumber(state, name, value, problem)) return "";
     const bool count = name.rfind("pixels:", 0) == 0;
-    return formatted(value, count ? "%.0f" : name.rfind("share:", 0) == 0 ? "%.0f" : "%.3g");
+    return formatted(value, count ? "%.0f" : name.rfind("share:", 0) == 0 ? "%.0f" : "%.4g");
   }
   if (name.rfind("ms:", 0) == 0) {
     double total = 0;
@@ -201,8 +201,11 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
 std::string checkScreenshot(const json& value) {
   if (value.is_object() && value.contains("crop")) {
     const json& crop = value["crop"];
-    if (!crop.is_string() || (crop != "view" && crop.get<std::string>().rfind("window:", 0) != 0))
-      return "\"crop\": expected \"view\" or \"window:NAME\"";
+    const std::string c = crop.is_string() ? crop.get<std::string>() : "";
+    const bool view = c == "view" || (c.size() == 6 && c.rfind("view:", 0) == 0 && c[5] >= '0' &&
+                                      c[5] < char('0' + kMaxViews));
+    if (!view && c.rfind("window:", 0) != 0)
+      return "\"crop\": expected \"view\", \"view:N\" (0 to 3) or \"window:NAME\"";
     json rest = value;
     rest.erase("crop");
     rest.erase("annotate");
@@ -224,8 +227,8 @@ std::string screenshot(const UiState& state, const json& a, ScriptContext& conte
   FigurePanel panel{context.pendingScreenshot, caption};
   // Where the widget lay in the last frame (the screenshot is taken one frame later).
   const std::string crop = a.is_object() ? a.value("crop", "") : "";
-  if (crop == "view") {
-    const ViewPanel& view = state.views.panels[state.views.activeView];
+  if (crop.rfind("view", 0) == 0) {
+    const ViewPanel& view = state.views.panels[crop == "view" ? state.views.activeView : crop[5] - '0'];
     panel.crop = {int(view.regionOrigin.x), int(view.regionOrigin.y), int(view.regionSize.x),
                   int(view.regionSize.y)};
   } else if (!crop.empty()) {

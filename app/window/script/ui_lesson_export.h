@@ -34,9 +34,9 @@ std::string fillNumbers(const UiState& state, const ScriptContext& context, cons
 std::string keepNumbers(const UiState& state, const nlohmann::json& a, ScriptContext& context);
 // The export_view handler: exports, and records the PNG as a panel of the lesson.
 std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
-// {"screenshot": "f.png" | {"file": "f.png", "caption": "...", "crop": "view" | "window:NAME"}}:
-// the window, also a panel; on the sheet only the active view's image region ("view") or
-// the named ImGui window ("window:Ray trace of the picked pixel") when "crop" is given.
+// {"screenshot": "f.png" | {"file": "f.png", "caption": "...", "crop": "view" | "view:N" | "window:NAME"}}:
+// the window, also a panel; on the sheet only the active view's image region ("view"), view
+// N's ("view:0" is A) or the named ImGui window ("window:Ray trace of the picked pixel").
 std::string checkScreenshot(const nlohmann::json& value);
 std::string screenshot(const UiState& state, const nlohmann::json& a, ScriptContext& context);
 // At the end of a lesson with panels: figure_sheet.png/.pdf and lesson.md. "" or why not.
