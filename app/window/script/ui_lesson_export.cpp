@@ -184,10 +184,17 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
     caption = fillNumbers(state, context, a["caption"].get<std::string>(), problem);
     if (!problem.empty()) return problem;
   }
-  state.status = exportViewFiles(state, view, context.resolved(file), ExportKind::Both, annotate,
-                                 context.crop);
+  const std::string target = context.resolved(file);
+  state.status = exportViewFiles(state, view, target, ExportKind::Both, annotate, context.crop);
   std::printf("penumbra: %s\n", state.status.c_str());
   if (state.status.rfind("wrote ", 0) != 0) return state.status;
+  // A PNG panel keeps its raw values beside it (x.exr): the numbers behind an annotated image.
+  if (fs::path(target).extension() == ".png") {
+    const std::string raw = exportViewFiles(state, view, fs::path(target).replace_extension(".exr").string(),
+                                            ExportKind::Both, false, context.crop);
+    std::printf("penumbra: %s\n", raw.c_str());
+    if (raw.rfind("wrote ", 0) != 0) return raw;
+  }
   // "wrote /abs/x.png, /abs/x.exr": the PNG is the panel.
   std::stringstream written(state.status.substr(6));
   for (std::string path; std::getline(written, path, ',');) {

@@ -32,7 +32,8 @@ std::string fillNumbers(const UiState& state, const ScriptContext& context, cons
 // {"keep": {"rmse_random": "error.rmse", "t_trace": "ms:trace"}}: this run's numbers, kept
 // under a name for a later text ("{rmse_random}").
 std::string keepNumbers(const UiState& state, const nlohmann::json& a, ScriptContext& context);
-// The export_view handler: exports, and records the PNG as a panel of the lesson.
+// The export_view handler: exports (a PNG with its EXR beside it), and records the PNG as a
+// panel of the lesson.
 std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
 // {"screenshot": "f.png" | {"file": "f.png", "caption": "...", "crop": "view" | "view:N" | "window:NAME"}}:
 // the window, also a panel; on the sheet only the active view's image region ("view"), view
