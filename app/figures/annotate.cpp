@@ -189,6 +189,10 @@ AnnotatedImage annotateView(const std::vector<std::uint8_t>& rgb, int width, int
     for (int x = 0; x < scaledWidth; ++x)
       std::copy_n(&rgb[(size_t(y / factor) * width + x / factor) * 3], 3,
                   &canvas[(size_t(y) * canvasWidth + left + x) * 3]);
+  if (left > 0)  // a grey edge either side: a white image stays apart from the canvas
+    for (int y = 0; y < scaledHeight; ++y)
+      for (const int x : {left - 1, left + scaledWidth})
+        std::fill_n(&canvas[(size_t(y) * canvasWidth + x) * 3], 3, std::uint8_t(150));
   AnnotatedImage out;
   out.width = canvasWidth;
   out.height = scaledHeight + annotationHeight(annotation, canvasWidth);

@@ -39,7 +39,8 @@ std::vector<std::uint8_t> annotateImage(const std::vector<std::uint8_t>& rgb, in
 // labels: they are enlarged first by a whole factor, nearest neighbour (each texel a
 // factor x factor block, nothing interpolated), the smallest that makes them
 // kAnnotatedMinWidth wide without passing kAnnotatedMaxHeight; an image still narrower than
-// that is centred on a white canvas of that width. Images already wide enough are unchanged.
+// that is centred on a white canvas of
+// that width, a grey edge either side. Images already wide enough are unchanged.
 constexpr int kAnnotatedMinWidth = 400, kAnnotatedMaxHeight = 800;
 int annotationEnlargement(int width, int height);
 struct AnnotatedImage {
