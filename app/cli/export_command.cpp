@@ -18,7 +18,12 @@ void writeAnnotatedPng(const std::filesystem::path& png, const Frame& frame, con
                        const GlTexture& texture, const Output& output, int layer,
                        const std::string& keyParameters) {
   const std::vector<float> values = texture.readFloats(layer);
-  const DisplayHint& hint = output.display;
+  DisplayHint hint = output.display;
+  const int shown = hint.channel < texture.channelCount() ? hint.channel : -1;
+  // Errors and counts: the range the window's view starts from (robustRange, io/colormap.h).
+  const bool automatic = hint.rangeFromData && shown >= 0 &&
+                         robustRange(values, texture.channelCount(), shown,
+                                     hint.colormap == Colormap::Diverging, hint.black, hint.white);
   Annotation annotation;
   annotation.caption = frame.scene.name + " · " + key +
                        (texture.isArray() ? " level " + std::to_string(layer) : "") + " · " +
@@ -29,11 +34,12 @@ void writeAnnotatedPng(const std::filesystem::path& png, const Frame& frame, con
     annotation.legend = categoryLegend(values, texture.channelCount(), channel, output.doc);
   else if (channel >= 0)
     annotation.bar = ColorBar{hint.colormap, hint.black, hint.white,
-                              key + ": " + output.channels.at(size_t(channel))};
-  const auto rgb = annotateImage(displayRgb8(values, texture.width(), texture.height(),
-                                             texture.channelCount(), hint),
-                                 texture.width(), texture.height(), annotation);
-  writePng(png, rgb, texture.width(), texture.height() + annotationHeight(annotation, texture.width()));
+                              key + ": " + output.channels.at(size_t(channel)) +
+                                  (automatic ? " · auto range (p99)" : "")};
+  const AnnotatedImage annotated = annotateView(  // small outputs enlarged first (annotate.h)
+      displayRgb8(values, texture.width(), texture.height(), texture.channelCount(), hint),
+      texture.width(), texture.height(), annotation);
+  writePng(png, annotated.rgb, annotated.width, annotated.height);
 }
 
 }  // namespace

@@ -21,6 +21,10 @@ struct DisplayHint {
   int channel = -1;  // -1: show RGB as colour; else this channel as a single value
   float black = 0, white = 1;
   Colormap colormap = Colormap::Gray;
+  // Errors and counts whose spread depends on the scene: views and annotated exports start
+  // from the data's range instead (robustRange, app/io/colormap.h; symmetric when diverging),
+  // black..white above is used only where no value is written.
+  bool rangeFromData = false;
 };
 
 // What an output is to the rest of the program. A *shadow method's visibility* is eye-sized,

@@ -170,3 +170,32 @@ std::vector<std::uint8_t> annotateImage(const std::vector<std::uint8_t>& rgb, in
     throw std::runtime_error(std::string("annotating a PNG: ") + cairo_status_to_string(status));
   return out;
 }
+
+int annotationEnlargement(int width, int height) {
+  if (width <= 0 || height <= 0 || width >= kAnnotatedMinWidth) return 1;
+  const int wide = (kAnnotatedMinWidth + width - 1) / width;  // reaches the width
+  const int tall = std::max(1, kAnnotatedMaxHeight / height);    // stays below the height cap
+  return std::max(1, std::min(wide, tall));
+}
+
+AnnotatedImage annotateView(const std::vector<std::uint8_t>& rgb, int width, int height,
+                            const Annotation& annotation) {
+  const int factor = annotationEnlargement(width, height);
+  const int scaledWidth = width * factor, scaledHeight = height * factor;
+  const int canvasWidth = std::max(scaledWidth, kAnnotatedMinWidth);
+  const int left = (canvasWidth - scaledWidth) / 2;
+  std::vector<std::uint8_t> canvas(size_t(canvasWidth) * scaledHeight * 3, 255);
+  for (int y = 0; y < scaledHeight; ++y)
+    for (int x = 0; x < scaledWidth; ++x)
+      std::copy_n(&rgb[(size_t(y / factor) * width + x / factor) * 3], 3,
+                  &canvas[(size_t(y) * canvasWidth + left + x) * 3]);
+  if (left > 0)  // a grey edge either side: a white image stays apart from the canvas
+    for (int y = 0; y < scaledHeight; ++y)
+      for (const int x : {left - 1, left + scaledWidth})
+        std::fill_n(&canvas[(size_t(y) * canvasWidth + x) * 3], 3, std::uint8_t(150));
+  AnnotatedImage out;
+  out.width = canvasWidth;
+  out.height = scaledHeight + annotationHeight(annotation, canvasWidth);
+  out.rgb = annotateImage(canvas, canvasWidth, scaledHeight, annotation);
+  return out;
+}

@@ -34,3 +34,19 @@ int annotationHeight(const Annotation& annotation, int width);
 // width x (height + annotationHeight(...)).
 std::vector<std::uint8_t> annotateImage(const std::vector<std::uint8_t>& rgb, int width,
                                         int height, const Annotation& annotation);
+
+// Small outputs (hash_stats' 64 x 64 histogram, its 16 x 160 bit bars) would clip the band's
+// labels: they are enlarged first by a whole factor, nearest neighbour (each texel a
+// factor x factor block, nothing interpolated), the smallest that makes them
+// kAnnotatedMinWidth wide without passing kAnnotatedMaxHeight; an image still narrower than
+// that is centred on a white canvas of
+// that width, a grey edge either side. Images already wide enough are unchanged.
+constexpr int kAnnotatedMinWidth = 400, kAnnotatedMaxHeight = 800;
+int annotationEnlargement(int width, int height);
+struct AnnotatedImage {
+  std::vector<std::uint8_t> rgb;  // top-row-first RGB8
+  int width = 0, height = 0;
+};
+// Enlarges (annotationEnlargement), pads to kAnnotatedMinWidth when needed, then annotates.
+AnnotatedImage annotateView(const std::vector<std::uint8_t>& rgb, int width, int height,
+                            const Annotation& annotation);

@@ -84,6 +84,18 @@ std::vector<fs::path> writeFigureSheet(const fs::path& stem, const std::string& 
     if (cairo_surface_status(image.get()) != CAIRO_STATUS_SUCCESS)
       throw std::runtime_error("figure sheet: cannot read panel " + panel.png.string() + ": " +
                                cairo_status_to_string(cairo_surface_status(image.get())));
+    const FigurePanel::Rect& c = panel.crop;
+    const int w = cairo_image_surface_get_width(image.get()), h = cairo_image_surface_get_height(image.get());
+    if (c.width > 0 && c.height > 0) {  // a part of it, clamped to the image
+      const int x0 = std::clamp(c.x, 0, w - 1), y0 = std::clamp(c.y, 0, h - 1);
+      const int cw = std::clamp(c.width, 1, w - x0), ch = std::clamp(c.height, 1, h - y0);
+      Surface part(cairo_image_surface_create(CAIRO_FORMAT_RGB24, cw, ch), &cairo_surface_destroy);
+      cairo_t* cr = cairo_create(part.get());
+      cairo_set_source_surface(cr, image.get(), -x0, -y0);
+      cairo_paint(cr);
+      cairo_destroy(cr);
+      image = std::move(part);
+    }
     images.push_back(std::move(image));
   }
   const SheetSize size = figureSheetSize(int(panels.size()));

@@ -10,6 +10,11 @@
 struct FigurePanel {
   std::filesystem::path png;
   std::string caption;
+  // Only this rectangle of the PNG (pixels, row 0 at the top) goes on the sheet, so that a
+  // window screenshot shows the widget it means at a readable size; empty: the whole image.
+  struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;
+  } crop{};
 };
 
 // Every panel fills a kSheetCell x (kSheetImage + kSheetCaption) cell (the image scaled to

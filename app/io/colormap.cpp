@@ -69,3 +69,20 @@ std::vector<std::uint8_t> displayRgb8(const std::vector<float>& values, int widt
     }
   return rgb;
 }
+
+bool robustRange(const std::vector<float>& values, int channels, int channel, bool symmetric,
+                 float& low, float& high) {
+  if (channels <= 0 || channel < 0 || channel >= channels) return false;
+  std::vector<float> magnitudes;
+  magnitudes.reserve(values.size() / size_t(channels));
+  for (size_t i = size_t(channel); i < values.size(); i += size_t(channels))
+    if (std::isfinite(values[i]) && values[i] != 0) magnitudes.push_back(std::fabs(values[i]));
+  if (magnitudes.empty()) return false;
+  const size_t rank = size_t(std::ceil(kRobustPercentile * double(magnitudes.size())));
+  const size_t index = std::clamp<size_t>(rank, 1, magnitudes.size()) - 1;
+  std::nth_element(magnitudes.begin(), magnitudes.begin() + std::ptrdiff_t(index), magnitudes.end());
+  const float p = magnitudes[index];
+  low = symmetric ? -p : 0.0f;
+  high = p;
+  return true;
+}

@@ -14,3 +14,13 @@ std::array<std::uint8_t, 3> applyColormap(Colormap map, float t, float rawValue)
 // +Inf white, -Inf black so broken values are never silently mapped to a colour.
 std::vector<std::uint8_t> displayRgb8(const std::vector<float>& values, int width, int height,
                                       int channels, const DisplayHint& hint);
+
+// The range a data-ranged output (DisplayHint::rangeFromData) is shown in: p = the 99th
+// percentile (nearest rank: the ceil(0.99 n)-th smallest) of |v| over the n finite, non-zero
+// values of `channel` (zero is what the stages write where nothing happened: no error, no
+// fetch, a pixel that does not count), then [-p, p] when `symmetric` (signed data: white
+// stays at 0), else [0, p]. A few extreme pixels no longer flatten the rest. false (low and
+// high untouched) when no value qualifies.
+constexpr double kRobustPercentile = 0.99;
+bool robustRange(const std::vector<float>& values, int channels, int channel, bool symmetric,
+                 float& low, float& high);

@@ -212,6 +212,8 @@ LayoutFrame measureLayout(const ImDrawData& data) {
   return frame;
 }
 
+#include "window/views/ui_view_colorbar.h"
+
 void printLayout(const std::string& label) {
   const ImGuiContext& context = *ImGui::GetCurrentContext();
   for (const ImGuiWindow* window : context.Windows) {
@@ -238,5 +240,6 @@ void printLayout(const std::string& label) {
                   image.rect.x1 - image.rect.x0, image.rect.y1 - image.rect.y0, image.clip.x0,
                   image.clip.y0, image.clip.x1, image.clip.y1);
   }
+  printColorBars(label);
   std::fflush(stdout);
 }

@@ -32,9 +32,9 @@ public:
     outputs_ = {
         {"signed", "Method minus reference: > 0 too bright (missed occluders), < 0 too dark "
                    "(over-occlusion). 0 where the pixel does not count.",
-         GL_R32F, {"error"}, {0, -1, 1, Colormap::Diverging}},
+         GL_R32F, {"error"}, {0, -1, 1, Colormap::Diverging, true}},
         {"absolute", "|method - reference| (0 where the pixel does not count).", GL_R32F,
-         {"error"}, {0, 0, 1, Colormap::Perceptual}},
+         {"error"}, {0, 0, 1, Colormap::Perceptual, true}},
     };
     params_ = {
         Param::choice("method", "Which shadow method is measured (every stage whose output "

@@ -74,7 +74,7 @@ public:
          kRoleShadowMethod},
         {"cost", "Per pixel: texel fetches, search iterations, rays searched, rays ended by an "
                  "early out.", GL_RGBA32F, {"fetches", "iterations", "raysSearched", "earlyOuts"},
-         {0, 0, 200, Colormap::Perceptual}},
+         {0, 0, 200, Colormap::Perceptual, true}},
     };
     params_ = {
         Param::integerOrAuto("rays", "Rays per pixel along each side of the light: n x n rays "

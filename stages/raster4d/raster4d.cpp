@@ -63,12 +63,12 @@ public:
                  "receiver's own tangent plane, 0 reaching the light.",
          GL_R32F, {"occluded"}, {0, 0, 1, Colormap::Gray}},
         {"fbTriangles", "Triangles per FB pixel (STEP 4: every pixel of a triangle's Proj4 AABB).",
-         GL_R32F, {"triangles"}, {0, 0, 64, Colormap::Perceptual}},
+         GL_R32F, {"triangles"}, {0, 0, 64, Colormap::Perceptual, true}},
         {"fbSamples", "Output samples per FB pixel (STEP 3).", GL_R32F, {"samples"},
-         {0, 0, 64, Colormap::Perceptual}},
+         {0, 0, 64, Colormap::Perceptual, true}},
         {"fbPairs", "(sample, triangle) pairs per FB pixel tested with the four planes (after "
                   "the early rejection when it is on).",
-         GL_R32F, {"pairs"}, {0, 0, 4096, Colormap::Perceptual}},
+         GL_R32F, {"pairs"}, {0, 0, 4096, Colormap::Perceptual, true}},
         Output::buffer("masks", "The occlusion masks: per pixel (GL order) m rows of ceil(m/32) "
                                 "uint words, bit j of row i = light sample (i, j)."),
     };

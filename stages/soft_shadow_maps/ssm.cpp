@@ -65,7 +65,7 @@ public:
                           "front pass, g: back pass); above 1 where patches overlap.",
          GL_RG32F, {"occlusionFront", "occlusionBack"}, {0, 0, 1, Colormap::Perceptual}},
         {"patchCount", "Micro-patches that hid some of the light from each texel's receiver.",
-         GL_R32F, {"patches"}, {0, 0, 1000, Colormap::Perceptual}},
+         GL_R32F, {"patches"}, {0, 0, 1000, Colormap::Perceptual, true}},
         {"pickedLight", "The light rectangle seen from the picked receiver: how many "
                         "back-projected micro-patches cover each point (0: gap, a light leak; "
                         "2+: overlap). r: front pass, g: back pass.",

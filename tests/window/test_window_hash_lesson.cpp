@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "io/image_export.h"
 #include "support/command.h"
 #include "support/window_test.h"
 
@@ -49,14 +50,18 @@ TEST(WindowHashLesson, BadHashesShowInTheShadowTheHistogramAndTheTable) {
   const double noisy = roughness(dir / "a_md5_16_shadow.png");
   const double hard = roughness(dir / "b_md5_4_shadow.png");
   EXPECT_GT(noisy, 3 * hard) << noisy << " vs " << hard;
-  // md5_4's pair histogram: every pixel of the 64 x 64 image but one cell is the empty colour.
+  // md5_4's pair histogram: every cell of the 64 x 64 histogram but one is empty (the raw
+  // counts of the EXR: the PNG is annotated, enlarged under its colour bar).
   int width = 0, height = 0;
-  const auto histogram = pixels(dir / "b_md5_4_pairs.png", width, height);
+  std::vector<std::string> names;
+  const auto histogram = readExr(dir / "b_md5_4_pairs.exr", width, height, names);
   ASSERT_EQ(width * height, 4096);
   int empty = 0;
-  for (size_t i = 0; i < histogram.size(); i += 3)
-    empty += histogram[i] == histogram[0] && histogram[i + 1] == histogram[1];
+  for (float count : histogram) empty += count == 0;
   EXPECT_GE(empty, 4095 - 1);
+  int pngWidth = 0, pngHeight = 0;
+  pixels(dir / "b_md5_4_pairs.png", pngWidth, pngHeight);
+  EXPECT_EQ(pngWidth, 64 * 7) << "a small output is enlarged before it is annotated";
   // Verdicts (white passed, red failed): lcg32 mostly red, md5_16 mostly white.
   const auto redCells = [&](const char* name) {
     const auto rgb = pixels(dir / name, width, height);

@@ -54,7 +54,10 @@ TEST(WindowLesson, Fig32LessonExportsFiguresWhoseNoiseFallsWithRaysAndFilter) {
     OIIO::ImageBuf image((dir / name).string());
     ASSERT_TRUE(image.read()) << name << ": " << image.geterror();
     EXPECT_EQ(image.spec().width, 640) << name;
-    EXPECT_EQ(image.spec().height, 480) << name;
+    if (name == figures.back())  // the difference carries its colour bar below the image
+      EXPECT_GT(image.spec().height, 480) << name;
+    else
+      EXPECT_EQ(image.spec().height, 480) << name;
     const auto stats = OIIO::ImageBufAlgo::computePixelStats(image);
     EXPECT_GT(stats.max[0] - stats.min[0], 0.3) << name << " looks blank";
     EXPECT_GT(stats.stddev[0], 0.01) << name << " looks flat";

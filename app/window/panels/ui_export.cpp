@@ -112,13 +112,14 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
       if (path == png) {
         std::vector<std::uint8_t> rgb = displayRgb8ForView(values, width, height,
                                                            texture.channelCount(), view.settings);
-        int pngHeight = height;
-        if (annotate) {
-          const Annotation annotation = viewAnnotation(state, view, values, texture.channelCount());
-          rgb = annotateImage(rgb, width, height, annotation);
-          pngHeight += annotationHeight(annotation, width);
+        int pngWidth = width, pngHeight = height;
+        if (annotate) {  // small outputs enlarged first so the labels fit (annotate.h)
+          AnnotatedImage annotated = annotateView(
+              rgb, width, height, viewAnnotation(state, view, values, texture.channelCount()));
+          rgb = std::move(annotated.rgb);
+          pngWidth = annotated.width, pngHeight = annotated.height;
         }
-        writePng(png, rgb, width, pngHeight);
+        writePng(png, rgb, pngWidth, pngHeight);
       } else
         writeExr(exr, values, width, height, shownChannelNames(state, view));
       written += (written.empty() ? "" : ", ") + fs::absolute(path).string();

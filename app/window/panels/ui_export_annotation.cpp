@@ -29,6 +29,8 @@ std::string viewCaption(const UiState& state, const ViewPanel& view) {
       const auto declared = state.session.parameterDefaults.find(name + "." + param.key);
       if (declared != state.session.parameterDefaults.end() && declared->second == param.value)
         continue;
+      // The pixel whose steps are recorded or whose mask is shown: a pick, not a setting.
+      if (param.key.rfind("record_", 0) == 0 || param.key.rfind("pick_", 0) == 0) continue;
       // The shown stage's own keys stay short; the others name their stage.
       const std::string key = name == stageName ? param.key : name + "." + param.key;
       changed += (changed.empty() ? "" : ", ") + key + "=" + param.toString();
@@ -50,7 +52,8 @@ Annotation viewAnnotation(const UiState& state, const ViewPanel& view,
   if (view.settings.colormap != Colormap::Categorical) {
     annotation.bar = ColorBar{view.settings.colormap, view.settings.black, view.settings.white,
                               view.output + (view.minus.empty() ? "" : " - " + view.minus) +
-                                  ": " + channelName};
+                                  ": " + channelName +
+                                  (view.settings.autoRange ? " · auto range (p99)" : "")};
     return annotation;
   }
   const Output* output = state.session.outputOf(view.output);

@@ -5,10 +5,14 @@
 #include <filesystem>
 #include <sstream>
 
+#include <imgui.h>
+#include <imgui_internal.h>
+
 #include "io/image_export.h"
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_export_annotation.h"
 #include "window/script/ui_lesson_crop.h"
+#include "window/script/ui_lesson_numbers.h"
 #include "window/ui_state.h"
 
 namespace fs = std::filesystem;
@@ -58,10 +62,54 @@ std::string formatted(double value, const char* format) {
   return text;
 }
 
-// "ms:a+b" -> the sum of the stages' medians; "ms"; "crop.rmse" (ui_lesson_crop.h); "counter".
+std::string number(const UiState& state, const ScriptContext& context, const std::string& name,
+                   std::string& problem);
+
+// A kept name's text or a number's, as a double (for pct: and ratio:).
+bool operand(const UiState& state, const ScriptContext& context, const std::string& whole,
+             const std::string& name, double& value, std::string& problem) {
+  const auto kept = context.kept.find(name);
+  const std::string text = kept != context.kept.end() ? kept->second : number(state, context, name, problem);
+  if (!problem.empty()) return false;
+  try {
+    value = std::stod(text);
+    return true;
+  } catch (const std::exception&) {
+    problem = "{" + whole + "}: '" + name + "' is not a number (" + text + ")";
+    return false;
+  }
+}
+
+// "ms:a+b" -> the sum of the stages' medians; "ms"; "crop.rmse" (ui_lesson_crop.h);
+// "pixels:error.signed<-0.05" and the other output numbers (ui_lesson_numbers.h);
+// "pct:a/b", "ratio:a/b" of two numbers or kept names; "counter".
 std::string number(const UiState& state, const ScriptContext& context, const std::string& name,
                    std::string& problem) {
   if (name == "ms") return formatted(state.session.medianPipelineMs(), "%.1f");
+  if (name.rfind("pct:", 0) == 0 || name.rfind("ratio:", 0) == 0) {
+    const bool percent = name[0] == 'p';
+    const std::string pair = name.substr(percent ? 4 : 6);
+    const size_t slash = pair.find('/');
+    if (slash == std::string::npos || slash == 0 || slash + 1 == pair.size()) {
+      problem = "{" + name + "}: expected two numbers' names, a/b (e.g. {pct:raster4d.pairsKept/raster4d.pairsConsidered})";
+      return "";
+    }
+    double a = 0, b = 0;
+    if (!operand(state, context, name, pair.substr(0, slash), a, problem) ||
+        !operand(state, context, name, pair.substr(slash + 1), b, problem))
+      return "";
+    if (b == 0) {
+      problem = "{" + name + "}: '" + pair.substr(slash + 1) + "' is 0";
+      return "";
+    }
+    return percent ? formatted(100 * a / b, "%.0f") : formatted(a / b, "%.3g");
+  }
+  if (isOutputNumber(name)) {
+    double value = 0;
+    if (!outputNumber(state, name, value, problem)) return "";
+    const bool count = name.rfind("pixels:", 0) == 0;
+    return formatted(value, count ? "%.0f" : name.rfind("share:", 0) == 0 ? "%.0f" : "%.4g");
+  }
   if (name.rfind("ms:", 0) == 0) {
     double total = 0;
     std::stringstream stages(name.substr(3));
@@ -87,7 +135,8 @@ std::string number(const UiState& state, const ScriptContext& context, const std
                  ? formatted(counter->second, "%.0f")  // counts as counts
                  : formatted(counter->second, "%.4g");
   }
-  problem = "{" + name + "}: no such number in this run (ms, ms:stage, or a counter such as error.rmse)";
+  problem = "{" + name + "}: no such number in this run (ms, ms:stage, crop.*, pixels:, share:, min:, "
+            "max:, p99:, pick:, pct:a/b, ratio:a/b, a kept name, or a counter such as error.rmse)";
   return "";
 }
 
@@ -135,10 +184,17 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
     caption = fillNumbers(state, context, a["caption"].get<std::string>(), problem);
     if (!problem.empty()) return problem;
   }
-  state.status = exportViewFiles(state, view, context.resolved(file), ExportKind::Both, annotate,
-                                 context.crop);
+  const std::string target = context.resolved(file);
+  state.status = exportViewFiles(state, view, target, ExportKind::Both, annotate, context.crop);
   std::printf("penumbra: %s\n", state.status.c_str());
   if (state.status.rfind("wrote ", 0) != 0) return state.status;
+  // A PNG panel keeps its raw values beside it (x.exr): the numbers behind an annotated image.
+  if (fs::path(target).extension() == ".png") {
+    const std::string raw = exportViewFiles(state, view, fs::path(target).replace_extension(".exr").string(),
+                                            ExportKind::Both, false, context.crop);
+    std::printf("penumbra: %s\n", raw.c_str());
+    if (raw.rfind("wrote ", 0) != 0) return raw;
+  }
   // "wrote /abs/x.png, /abs/x.exr": the PNG is the panel.
   std::stringstream written(state.status.substr(6));
   for (std::string path; std::getline(written, path, ',');) {
@@ -149,14 +205,46 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
   return "";
 }
 
+std::string checkScreenshot(const json& value) {
+  if (value.is_object() && value.contains("crop")) {
+    const json& crop = value["crop"];
+    const std::string c = crop.is_string() ? crop.get<std::string>() : "";
+    const bool view = c == "view" || (c.size() == 6 && c.rfind("view:", 0) == 0 && c[5] >= '0' &&
+                                      c[5] < char('0' + kMaxViews));
+    if (!view && c.rfind("window:", 0) != 0)
+      return "\"crop\": expected \"view\", \"view:N\" (0 to 3) or \"window:NAME\"";
+    json rest = value;
+    rest.erase("crop");
+    rest.erase("annotate");
+    return checkExportView(rest);
+  }
+  return checkExportView(value);
+}
+
 // The window as a panel too: saved at the end of the next frame, before the sheet is drawn.
-std::string screenshot(const json& a, ScriptContext& context) {
+std::string screenshot(const UiState& state, const json& a, ScriptContext& context) {
   const std::string file = a.is_string() ? a.get<std::string>() : a["file"].get<std::string>();
   context.pendingScreenshot = context.resolved(file);
-  const std::string caption = a.is_object() && a.contains("caption")
-                                  ? a["caption"].get<std::string>()
-                                  : "the window: " + fs::path(file).stem().string();
-  context.panels.push_back({context.pendingScreenshot, caption});
+  std::string caption = a.is_object() && a.contains("caption")
+                            ? a["caption"].get<std::string>()
+                            : "the window: " + fs::path(file).stem().string();
+  std::string problem;
+  caption = fillNumbers(state, context, caption, problem);
+  if (!problem.empty()) return problem;
+  FigurePanel panel{context.pendingScreenshot, caption};
+  // Where the widget lay in the last frame (the screenshot is taken one frame later).
+  const std::string crop = a.is_object() ? a.value("crop", "") : "";
+  if (crop.rfind("view", 0) == 0) {
+    const ViewPanel& view = state.views.panels[crop == "view" ? state.views.activeView : crop[5] - '0'];
+    panel.crop = {int(view.regionOrigin.x), int(view.regionOrigin.y), int(view.regionSize.x),
+                  int(view.regionSize.y)};
+  } else if (!crop.empty()) {
+    const ImGuiWindow* window = ImGui::FindWindowByName(crop.substr(7).c_str());
+    if (!window || !window->WasActive)
+      return "screenshot: no window '" + crop.substr(7) + "' is shown";
+    panel.crop = {int(window->Pos.x), int(window->Pos.y), int(window->Size.x), int(window->Size.y)};
+  }
+  context.panels.push_back(panel);
   return "";
 }
 

@@ -32,9 +32,13 @@ std::string fillNumbers(const UiState& state, const ScriptContext& context, cons
 // {"keep": {"rmse_random": "error.rmse", "t_trace": "ms:trace"}}: this run's numbers, kept
 // under a name for a later text ("{rmse_random}").
 std::string keepNumbers(const UiState& state, const nlohmann::json& a, ScriptContext& context);
-// The export_view handler: exports, and records the PNG as a panel of the lesson.
+// The export_view handler: exports (a PNG with its EXR beside it), and records the PNG as a
+// panel of the lesson.
 std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& context);
-// {"screenshot": "f.png" | {"file": "f.png", "caption": "..."}}: the window, also a panel.
-std::string screenshot(const nlohmann::json& a, ScriptContext& context);
+// {"screenshot": "f.png" | {"file": "f.png", "caption": "...", "crop": "view" | "view:N" | "window:NAME"}}:
+// the window, also a panel; on the sheet only the active view's image region ("view"), view
+// N's ("view:0" is A) or the named ImGui window ("window:Ray trace of the picked pixel").
+std::string checkScreenshot(const nlohmann::json& value);
+std::string screenshot(const UiState& state, const nlohmann::json& a, ScriptContext& context);
 // At the end of a lesson with panels: figure_sheet.png/.pdf and lesson.md. "" or why not.
 std::string finishLesson(const ScriptContext& context);

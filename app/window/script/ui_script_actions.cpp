@@ -136,6 +136,7 @@ std::string range(UiState& state, const json& a) {
   } else {
     view.settings.black = a[0].get<float>();
     view.settings.white = a[1].get<float>();
+    view.settings.autoRange = false;
   }
   return "";
 }
@@ -188,8 +189,8 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        }},
       {"export_all", kString, [](S& s, const json& a, C& c) { return exportAll(s, a, c); }},
-      {"screenshot", checkExportView,
-       [](S&, const json& a, C& c) { return screenshot(a, c); }},
+      {"screenshot", checkScreenshot,
+       [](S& s, const json& a, C& c) { return screenshot(s, a, c); }},
       {"view", kCount,
        [](S& s, const json& a, C&) -> std::string {
          if (a.get<int>() >= kMaxViews) return "views are 0 (A), 1 (B), 2 (C) and 3 (D)";

@@ -51,13 +51,14 @@ json panelJson(const ViewPanel& view) {
           {"center", {center.x, center.y}},
           {"texture", {view.lastTextureSize.x, view.lastTextureSize.y}},
           {"colormap", colormapName(view.settings.colormap)}, {"channels", channels},
-          {"range", {view.settings.black, view.settings.white}}, {"overlay", view.settings.overlay}};
+          {"range", {view.settings.black, view.settings.white}}, {"auto_range", view.settings.autoRange},
+          {"overlay", view.settings.overlay}};
 }
 
 // 1. One panel, checked against the pipeline's outputs.
 PanelSettings readPanel(const UiState& state, const json& p, const std::string& at) {
   onlyKeys(p, at, {"output", "minus", "clip_negative", "locked", "level", "zoom", "center", "texture",
-                   "colormap", "channels", "range", "overlay"});
+                   "colormap", "channels", "range", "auto_range", "overlay"});
   PanelSettings panel;
   auto output = [&](const char* key) -> std::string {
     if (!p.contains(key)) return "";
@@ -118,6 +119,11 @@ PanelSettings readPanel(const UiState& state, const json& p, const std::string& 
     if (!p["range"].is_array() || p["range"].size() != 2) fail(at + "/range", "expected [black, white]");
     panel.settings.black = finite(p["range"][0], at + "/range/0");
     panel.settings.white = finite(p["range"][1], at + "/range/1");
+    panel.settings.autoRange = false;
+  }
+  if (p.contains("auto_range")) {  // after "range": the saved range is the last one found
+    if (!p["auto_range"].is_boolean()) fail(at + "/auto_range", "expected true or false");
+    panel.settings.autoRange = p["auto_range"].get<bool>();
   }
   return panel;
 }

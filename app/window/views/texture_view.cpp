@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "io/colormap.h"
+
 // 1. The sampler type must match the texture: float / unsigned integer, 2D / 2D array.
 ShaderProgram& TextureView::programFor(const GlTexture& source) {
   if (source.isInteger()) return source.isArray() ? uintArray_ : uint2D_;
@@ -49,6 +51,23 @@ const GlTexture& TextureView::render(const GlTexture& source, const ViewSettings
 const GlTexture& TextureView::render(const GlTexture& source, const DisplayHint& hint) {
   Output output{"", "", source.internalFormat(), {}, hint};
   return render(source, defaultViewSettings(output, source.channelCount()));
+}
+
+void TextureView::autoRange(const GlTexture& source, ViewSettings& settings, long generation) {
+  if (!settings.autoRange) return;
+  const int channel = singleChannel(settings, source.channelCount());
+  if (channel < 0) return;
+  const int layer = std::clamp(settings.layer, 0, std::max(source.layers() - 1, 0));
+  RangeKey& r = range_;
+  if (r.source != source.id() || r.generation != generation || r.layer != layer || r.channel != channel) {
+    const std::vector<float> values = readRegion(source, 0, 0, source.width(), source.height(), layer);
+    r = {source.id(), generation, layer, channel, false, 0, 1};
+    r.found = robustRange(values, source.channelCount(), channel,
+                          settings.colormap == Colormap::Diverging, r.low, r.high);
+  }
+  if (!r.found) return;
+  settings.black = r.low;
+  settings.white = r.high;
 }
 
 // 3. Read-back of a rectangle, in the formats GlTexture::readFloats uses.

@@ -19,6 +19,12 @@ public:
   const GlTexture& render(const GlTexture& source, const ViewSettings& settings, long generation);
   // The declared default mapping (layer 0), as `penumbra export` writes the PNG.
   const GlTexture& render(const GlTexture& source, const DisplayHint& hint);
+  // An auto-ranged view (settings.autoRange): black/white = robustRange of the shown channel
+  // of layer settings.layer. The texture is read back only when source, generation, layer or
+  // channel differ from the last call (once per pipeline run, not per UI frame); otherwise
+  // the range found then is applied again. Nothing changes for a colour (RGB) view or when
+  // no value is written (the declared range stays).
+  void autoRange(const GlTexture& source, ViewSettings& settings, long generation);
 
 private:
   ShaderProgram& programFor(const GlTexture& source);
@@ -33,6 +39,13 @@ private:
     long generation = -1;
     ViewSettings settings;
   } last_;
+  struct RangeKey {
+    GLuint source = 0;
+    long generation = -1;
+    int layer = -1, channel = -1;
+    bool found = false;
+    float low = 0, high = 1;
+  } range_;
 };
 
 // Raw values of one texel (x, y in GL order: row 0 at the bottom) of layer `layer`; the

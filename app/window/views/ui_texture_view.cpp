@@ -14,6 +14,7 @@
 #include "window/views/ui_nbuffer_hover.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
+#include "window/views/ui_view_colorbar.h"
 #include "window/views/ui_view_toolbar.h"
 
 namespace {
@@ -317,8 +318,10 @@ bool drawTextureView(UiState& state, int index, ImVec2 size) {
     std::optional<glm::ivec2> hover;
     if (ImGui::IsItemHovered())
       hover = view.transform.texelAt(toGlm(ImGui::GetIO().MousePos), origin, regionSize);
+    updateAutoRange(state, view, *texture);
     drawImage(state, view, view.renderer.render(*texture, view.settings, state.session.pipelineRuns), origin, regionSize, hover);
     mixShownContent(state, view, *texture);
+    drawViewColorBar(state, view, *texture, origin, regionSize);
     drawReadout(state, view, *texture, hover);
   }
   ImGui::EndChild();

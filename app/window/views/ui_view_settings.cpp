@@ -15,6 +15,7 @@ ViewSettings defaultViewSettings(const Output& output, int channelCount) {
   settings.black = hint.black;
   settings.white = hint.white;
   settings.colormap = hint.colormap;
+  settings.autoRange = hint.rangeFromData && hint.colormap != Colormap::Categorical;
   return settings;
 }
 

@@ -16,6 +16,9 @@ struct ViewSettings {
   Colormap colormap = Colormap::Gray;
   bool overlay = false;  // paint NaN, Inf and negative values of the shown channels
   int layer = 0;         // array textures (the N-buffer: one layer per level)
+  // black/white follow the data (robustRange, app/io/colormap.h), recomputed once per run,
+  // until the user sets a range (drag, type, Autofit, a script's or settings file's range).
+  bool autoRange = false;
 };
 
 // Overlay colours (display only; never confused with a colormap because they are saturated
@@ -24,7 +27,8 @@ constexpr std::array<std::uint8_t, 3> kOverlayNaN{255, 0, 255};
 constexpr std::array<std::uint8_t, 3> kOverlayInf{0, 255, 0};
 constexpr std::array<std::uint8_t, 3> kOverlayNegative{0, 0, 255};
 
-// 1. The settings a fresh view starts from: the output's declared DisplayHint.
+// 1. The settings a fresh view starts from: the output's declared DisplayHint (auto range
+//    for outputs declared rangeFromData).
 ViewSettings defaultViewSettings(const Output& output, int channelCount);
 
 // 2. Exactly one enabled channel (of the texture's `channelCount`) -> its index, shown as a

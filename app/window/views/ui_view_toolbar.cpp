@@ -30,6 +30,7 @@ void autofitView(ViewPanel& view, const GlTexture& texture) {
   }
   view.settings.black = low;
   view.settings.white = high;
+  view.settings.autoRange = false;  // the user's range from now on
 }
 
 void resetView(UiState& state, ViewPanel& view, const GlTexture& texture) {
@@ -153,11 +154,11 @@ void drawRangeControls(UiState& state, ViewPanel& view, const GlTexture& texture
   ViewSettings& s = view.settings;
   const float speed = std::max(1e-6f, std::abs(s.white - s.black) * 0.005f);
   ImGui::SetNextItemWidth(uiPixels(80));
-  ImGui::DragFloat("##black", &s.black, speed, 0, 0, "%.4g");
+  if (ImGui::DragFloat("##black", &s.black, speed, 0, 0, "%.4g")) s.autoRange = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Black point: drag, or double-click to type.");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(uiPixels(80));
-  ImGui::DragFloat("##white", &s.white, speed, 0, 0, "%.4g");
+  if (ImGui::DragFloat("##white", &s.white, speed, 0, 0, "%.4g")) s.autoRange = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("White point: drag, or double-click to type.");
   sameLineIfFits(60);
   if (ImGui::Button("Autofit")) autofitView(view, texture);
