@@ -266,6 +266,7 @@ int main(int argc, char** argv) {
     if (*hashStatsCommand) return runHashStatsCommand(hashStats);
     if (*lessonCommand) {
       lesson.interactiveLesson = lesson.exportDirectory.empty();
+      lesson.lessonCommand = true;
       return runWindow(lesson);
     }
     return runWindow(window);
