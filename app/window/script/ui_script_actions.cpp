@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/input_error.h"
+#include "io/headless_session.h"
 #include "io/json_input.h"
 #include "io/output_path.h"
 
@@ -48,17 +49,6 @@ std::string ScriptContext::shown(const std::string& text) const {
   for (size_t at = 0; (at = result.find(from, at)) != std::string::npos; at += to.size())
     result.replace(at, from.size(), to);
   return result;
-}
-
-std::string checkScriptPath(const std::string& path, bool underExportDirectory) {
-  if (path.empty()) return "an empty path";
-  const std::filesystem::path p(path);
-  for (const auto& part : p)
-    if (part == "..")
-      return "a path with '..' (writes stay inside the export folder; name a file or folder in it)";
-  if (underExportDirectory && p.is_absolute())
-    return "an absolute path (with an export folder, every path is relative to it)";
-  return "";
 }
 
 namespace {
@@ -187,6 +177,15 @@ std::string setParameters(UiState& state, const json& a) {
     // the first run was overridden by the automatic raster4d on a cheap scene, and a
     // lesson's "against the Embree reference" numbers were against raster4d).
     if (key == truthKey) keepUserTruth(state);
+  }
+  // A choice naming a disabled stage (composite.shadow = raster4d with raster4d off) is
+  // warned about: a later action may still enable it, so it is not refused here.
+  std::vector<std::string> assignments;
+  for (const auto& [key, value] : a.items())
+    assignments.push_back(key + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
+  if (std::string problem = disabledSelection(state.session.pipeline, assignments); !problem.empty()) {
+    std::fprintf(stderr, "penumbra: warning: %s\n", problem.c_str());
+    state.status = "warning: " + problem;
   }
   return "";
 }

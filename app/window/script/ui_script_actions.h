@@ -44,8 +44,7 @@ struct ScriptContext {
 
 // A lesson's export folder is recognised as one by this file, written last.
 inline constexpr const char* kLessonManifest = "lesson.md";
-// A path a script writes: "" or why not ("..", absolute under an export directory).
-std::string checkScriptPath(const std::string& path, bool underExportDirectory);
+// A path a script writes: checkScriptPath (io/output_path.h).
 
 using ScriptCheck = std::function<std::string(const nlohmann::json&)>;  // "" or what was expected
 using ScriptHandler =
