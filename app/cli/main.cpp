@@ -22,6 +22,7 @@
 #include "cli/trace_command.h"
 #include "core/input_error.h"
 #include "core/pipeline.h"
+#include "io/output_path.h"
 #include "window/window_app.h"
 
 namespace {
@@ -43,6 +44,9 @@ int runCommand(const std::string& command, const std::function<int()>& run) {
   } catch (const InputError& error) {
     std::fprintf(stderr, "%s%s\n", prefix.c_str(), error.what());
     return 2;
+  } catch (const WriteError& error) {  // the file system said no (io/output_path.h)
+    std::fprintf(stderr, "%s%s\n", prefix.c_str(), error.what());
+    return 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "%sout of memory\n", prefix.c_str());
     return 1;

@@ -30,7 +30,7 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
     const std::string reason = out->geterror();
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(writeFailure(path, saved, reason));
+    throw WriteError(writeFailure(path, saved, reason));
   }
   std::filesystem::rename(temporary, path);
 }
@@ -94,7 +94,7 @@ std::vector<std::filesystem::path> exportTexture(const std::filesystem::path& di
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
   const auto temporary = temporaryName(path);
   std::FILE* out = std::fopen(temporary.c_str(), "wb");
-  if (!out) throw std::runtime_error(writeFailure(path, errno, ""));
+  if (!out) throw WriteError(writeFailure(path, errno, ""));
   errno = 0;
   bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
   ok = std::fflush(out) == 0 && ok;
@@ -106,7 +106,7 @@ void writeTextFile(const std::filesystem::path& path, const std::string& text) {
   if (!ok) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(writeFailure(path, saved, ""));
+    throw WriteError(writeFailure(path, saved, ""));
   }
   std::filesystem::rename(temporary, path);
 }

@@ -14,6 +14,7 @@
 // - a failed write names the OS reason ("No space left on device").
 #pragma once
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 // A file we may create or replace: not a directory, and its parent exists or can be
@@ -29,6 +30,12 @@ void checkOutputDirectory(const std::filesystem::path& directory, const std::str
 // The temporary name a single file is written under before its rename:
 // "dir/.name.partial-<pid>.ext" (same extension, so image writers pick the same format).
 std::filesystem::path temporaryFileName(const std::filesystem::path& path);
+// A write the file system refused (full, read-only, gone): not bad input, not a bug in
+// penumbra either; main() prints its message without "internal error" and exits 1.
+struct WriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // "cannot write PATH: REASON" where REASON is the OS's (errno, else what the file system
 // says: no space left, read-only), falling back to `detail` (a library's message).
 std::string writeFailure(const std::filesystem::path& path, int savedErrno, const std::string& detail);
