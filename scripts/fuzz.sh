@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# `make fuzz`: libFuzzer (clang, ASan + UBSan) on the two readers of untrusted input, the
-# scene JSON reader and the glTF importer, FUZZ_SECONDS each (default 60), starting from
+# `make fuzz`: libFuzzer (clang, ASan + UBSan) on the readers of untrusted input, the scene
+# JSON reader, the glTF importer and the JSON reader of scripts, lessons and settings
+# (tests/fuzz/fuzz_*.cpp), FUZZ_SECONDS each (default 60), starting from
 # the seed corpus in tests/fuzz/corpus (kept in the repository) plus what earlier runs
 # found (BUILD_FUZZ/corpus, default build-fuzz). A finding (crash, sanitizer report, leak,
 # timeout, out of memory, an exception other than InputError) fails the run and leaves its
@@ -20,7 +21,8 @@ configure() {
 configure "$build"
 mkdir -p "$build/findings"
 status=0
-for harness in scene_json gltf; do
+harnesses=${FUZZ_HARNESSES:-scene_json gltf script lesson settings}
+for harness in $harnesses; do
   mkdir -p "$build/corpus/$harness"
   echo "fuzz_$harness: ${seconds} s"
   if ! "$build/fuzz_$harness" "$build/corpus/$harness" "tests/fuzz/corpus/$harness" \
@@ -37,13 +39,14 @@ done
 if [ "${FUZZ_COVERAGE:-1}" != 0 ] && command -v llvm-profdata-14 >/dev/null &&
    command -v llvm-cov-14 >/dev/null; then
   configure "$build/coverage" -DPENUMBRA_FUZZ_COVERAGE=ON
-  for harness in scene_json gltf; do
+  for harness in $harnesses; do
     LLVM_PROFILE_FILE="$build/coverage/$harness.profraw" "$build/coverage/fuzz_$harness" -runs=0 \
       "$build/corpus/$harness" "tests/fuzz/corpus/$harness" >/dev/null 2>&1 || true
     llvm-profdata-14 merge -sparse "$build/coverage/$harness.profraw" -o "$build/coverage/$harness.profdata"
     echo "line coverage, corpus of fuzz_$harness:"
     llvm-cov-14 report "$build/coverage/fuzz_$harness" -instr-profile="$build/coverage/$harness.profdata" \
-      app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/scene.cpp | sed -n '1,2p;/scene_/p;/TOTAL/p'
+      app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/scene.cpp \
+      app/io/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/json_input/p;/output_path/p;/TOTAL/p'
   done
 fi
 exit $status

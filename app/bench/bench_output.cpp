@@ -290,11 +290,11 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
                                                      const std::vector<BenchSetup>& setups,
                                                      const std::vector<BenchResult>& results) {
   // Staged in a temporary directory, moved into place when every file is written.
-  DirectoryTransaction transaction(target);
+  // The whole directory is one transaction (io/output_path.h): results.json, the manifest
+  // that marks an earlier bench output, last; then one rename.
+  DirectoryTransaction transaction(target, "results.json");
   const std::filesystem::path directory = transaction.path();
   std::vector<std::filesystem::path> written;
-  writeTextFile(directory / "results.json", benchJson(info, setupInfos(setups), results));
-  written.push_back(directory / "results.json");
   writeTextFile(directory / "results.csv", csv(info, setups, results));
   written.push_back(directory / "results.csv");
 
@@ -418,7 +418,9 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
   }
   writeTextFile(directory / "results.md", md.str());
   written.push_back(directory / "results.md");
-  transaction.commitFiles("results.md");
+  writeTextFile(directory / "results.json", benchJson(info, setupInfos(setups), results));
+  written.push_back(directory / "results.json");
+  transaction.commit();
   for (auto& path : written) path = transaction.target() / path.filename();
   return written;
 }

@@ -55,7 +55,7 @@ double cachedReferenceSeconds(const std::string& key) {
 int runBench(const BenchOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   // 1. The output path and the plan; every assignment checked before any GL work.
-  checkOutputDirectory(options.out, "--out", "");
+  checkOutputDirectory(options.out, "--out", "results.json");  // an earlier bench output or new
   std::vector<std::string> warnings;
   Scene scene;
   std::vector<BenchSetup> setups;

@@ -47,8 +47,12 @@ void writeAnnotatedPng(const std::filesystem::path& png, const Frame& frame, con
 std::vector<std::string> exportFrame(const std::string& target, const Frame& frame,
                                      const Pipeline& pipeline, const std::string& renderer,
                                      bool annotate, const std::string& keyParameters) {
-  // One transaction: every file goes into a temporary directory, renamed into place last.
-  DirectoryTransaction transaction(target);
+  // The output rule (io/output_path.h): a directory that is not an earlier export is
+  // refused before anything is written (the window's "Export all" and a script's
+  // export_all come here without the command line's check). One transaction: every file
+  // goes into a temporary directory, run.json (the manifest) last, renamed into place.
+  checkOutputDirectory(target, "export", "run.json");
+  DirectoryTransaction transaction(target, "run.json");
   const std::filesystem::path directory = transaction.path();
   std::vector<std::string> written;
   nlohmann::json run;

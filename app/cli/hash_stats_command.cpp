@@ -4,12 +4,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "gl/gl_context.h"
 #include "gl/hash_kind.h"
 #include "io/image_export.h"
+#include "io/output_path.h"
 #include "stats/dieharder_run.h"
 #include "stats/hash_stats_gpu.h"
 #include "stats/hash_stats_views.h"
@@ -221,6 +223,10 @@ int runHashStatsCommand(const HashStatsOptions& options) {
     std::fprintf(stderr, "penumbra hash-stats: %s\n", problem.c_str());
     return 2;
   }
+  // The output rule (io/output_path.h): checked before any GPU work; one transaction,
+  // hash_stats.json (the manifest) last.
+  if (!options.out.empty()) checkOutputDirectory(options.out, "--out", "hash_stats.json");
+  std::unique_ptr<DirectoryTransaction> transaction;
   std::string error;
   auto context = GlContext::createHeadless(error);
   if (!context) {
@@ -233,7 +239,8 @@ int runHashStatsCommand(const HashStatsOptions& options) {
     else hashes.push_back(options.hash);
     if (options.pattern == "all") patterns.assign(kPatternNames.begin(), kPatternNames.end());
     else patterns.push_back(options.pattern);
-    if (!options.out.empty()) std::filesystem::create_directories(options.out);
+    if (!options.out.empty()) transaction = std::make_unique<DirectoryTransaction>(options.out, "hash_stats.json");
+    const std::filesystem::path out = transaction ? transaction->path() : std::filesystem::path();
 
     // 1. Statistics and throughput on the GPU, per hash and pattern.
     GpuHashStats gpu;
@@ -245,7 +252,7 @@ int runHashStatsCommand(const HashStatsOptions& options) {
         std::fprintf(stderr, "penumbra hash-stats: %s, %s\n", hash.c_str(), pattern.c_str());
         rows.push_back({hash, pattern, speed,
                         gpu.runKeys(kind, patternFromName(pattern), options.count, options.keys, options.key)});
-        if (!options.out.empty()) writeImages(options.out, rows.back());
+        if (transaction) writeImages(out, rows.back());
       }
     }
     // 2. The real battery, where asked.
@@ -266,10 +273,10 @@ int runHashStatsCommand(const HashStatsOptions& options) {
       md += "\n## penumbra hash --key " + std::to_string(options.key) +
             " | dieharder -g 200, DIEHARD tests\n\n" + dieharderTable(dieharder);
     std::fputs(md.c_str(), stdout);
-    if (!options.out.empty()) {
-      writeTextFile(std::filesystem::path(options.out) / "hash_stats.md", md);
-      writeTextFile(std::filesystem::path(options.out) / "hash_stats.json",
-                    toJson(rows, dieharder, options, renderer).dump(1) + "\n");
+    if (transaction) {
+      writeTextFile(out / "hash_stats.md", md);
+      writeTextFile(out / "hash_stats.json", toJson(rows, dieharder, options, renderer).dump(1) + "\n");
+      transaction->commit();
     }
     return 0;
   } catch (const std::exception& problem) {

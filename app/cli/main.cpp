@@ -23,6 +23,7 @@
 #include "core/input_error.h"
 #include "core/pipeline.h"
 #include "core/run_control.h"
+#include "io/output_path.h"
 #include "window/window_app.h"
 
 namespace {
@@ -46,6 +47,8 @@ int runCommand(const std::string& command, const std::function<int()>& run) {
     return 2;
   } catch (const RunCancelled& error) {
     std::fprintf(stderr, "%sstopped: %s; nothing was written\n", prefix.c_str(), error.what());
+  } catch (const WriteError& error) {  // the file system said no (io/output_path.h)
+    std::fprintf(stderr, "%s%s\n", prefix.c_str(), error.what());
     return 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "%sout of memory\n", prefix.c_str());
@@ -284,6 +287,7 @@ int main(int argc, char** argv) {
     if (*hashStatsCommand) return runHashStatsCommand(hashStats);
     if (*lessonCommand) {
       lesson.interactiveLesson = lesson.exportDirectory.empty();
+      lesson.lessonCommand = true;
       return runWindow(lesson);
     }
     return runWindow(window);

@@ -6,6 +6,29 @@
 #include "scene/scene_checks.h"
 #include "scene/scene_frame.h"
 
+std::string disabledSelection(const Pipeline& pipeline, const std::vector<std::string>& sets) {
+  const auto named = [&](const std::string& key) {
+    for (const std::string& assignment : sets)
+      if (assignment.rfind(key + "=", 0) == 0) return true;
+    return false;
+  };
+  for (const auto& stage : pipeline.stages())
+    for (const Param& param : stage->params()) {
+      if (param.type != Param::Type::Enum || param.automatic) continue;
+      const std::string key = stage->name() + "." + param.key, chosen = param.asEnum();
+      for (const auto& target : pipeline.stages()) {
+        if (target->name() != chosen) continue;
+        for (const Param& enabled : target->params())
+          if (enabled.key == "enabled" && enabled.type == Param::Type::Bool && !enabled.asBool() &&
+              (named(key) || named(chosen + ".enabled")))
+            return key + "=" + chosen + " selects " + chosen + ", which is disabled (" + chosen +
+                   ".enabled=false): it does not run, so " + key + " would use nothing and the "
+                   "result would silently lack it; add --set " + chosen + ".enabled=true";
+      }
+    }
+  return "";
+}
+
 int HeadlessSession::open(const std::string& command, const std::string& sceneNameOrPath,
                           const std::vector<std::string>& sets, int width, int height) {
   const auto fail = [&](int status, const std::string& message) {
@@ -27,6 +50,9 @@ int HeadlessSession::open(const std::string& command, const std::string& sceneNa
   for (const std::string& assignment : sets)
     if (std::string problem = pipeline.set(assignment); !problem.empty())
       return fail(2, "--set " + problem);
+  // Refused rather than warned: the output would be silently wrong (a composite without the
+  // selected shadow, an error stage measuring nothing), and the fix is one more --set.
+  if (std::string problem = disabledSelection(pipeline, sets); !problem.empty()) return fail(2, "--set " + problem);
   // 2. OpenGL, the scene on the GPU, the frame.
   std::string error;
   context = GlContext::createHeadless(error);

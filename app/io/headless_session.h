@@ -11,6 +11,13 @@
 #include "gl/gl_context.h"
 #include "core/pipeline.h"
 
+// A selection the user made that names a disabled stage: "composite.shadow=raster4d" while
+// raster4d.enabled is false shades with no shadow at all, "error.method=raster4d" or
+// "error.against=reference" with that stage off measures nothing. Only choices named in
+// `sets` (or whose stage's "enabled" is named there) count: the defaults (error.against =
+// reference, reference off) ask for nothing. "" or the message naming the fix.
+std::string disabledSelection(const Pipeline& pipeline, const std::vector<std::string>& sets);
+
 class HeadlessSession {
 public:
   // Returns 0 when ready, else the exit status (the message is printed).

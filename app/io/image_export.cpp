@@ -4,18 +4,18 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
+#include <cstdio>
 #include <stdexcept>
 
 #include "io/colormap.h"
+#include "io/output_path.h"
 
 namespace {
 
-// "dir/name.exr" -> "dir/name.partial.exr": same extension, so OIIO picks the same writer.
+// "dir/name.exr" -> "dir/.name.partial-<pid>.exr": same extension, so OIIO picks the same
+// writer; a killed run's leftover is removed by the next check of the same output.
 std::filesystem::path temporaryName(const std::filesystem::path& path) {
-  std::filesystem::path temporary = path;
-  temporary.replace_extension(".partial" + path.extension().string());
-  return temporary;
+  return temporaryFileName(path);
 }
 
 void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
@@ -23,12 +23,14 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec,
   const auto temporary = temporaryName(path);
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) throw std::runtime_error("cannot write " + path.string() + ": " + OIIO::geterror());
+  errno = 0;
   if (!out->open(temporary.string(), spec) || !out->write_image(type, topRowFirst) ||
       !out->close()) {
+    const int saved = errno;
     const std::string reason = out->geterror();
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot write " + path.string() + ": " + reason);
+    throw WriteError(writeFailure(path, saved, reason));
   }
   std::filesystem::rename(temporary, path);
 }
@@ -91,17 +93,20 @@ std::vector<std::filesystem::path> exportTexture(const std::filesystem::path& di
 
 void writeTextFile(const std::filesystem::path& path, const std::string& text) {
   const auto temporary = temporaryName(path);
-  {
-    errno = 0;
-    std::ofstream out(temporary);
-    out << text;
-    out.flush();
-    if (!out) {
-      const std::string reason = errno ? std::strerror(errno) : "write failed";
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + path.string() + ": " + reason);
-    }
+  std::FILE* out = std::fopen(temporary.c_str(), "wb");
+  if (!out) throw WriteError(writeFailure(path, errno, ""));
+  errno = 0;
+  bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+  ok = std::fflush(out) == 0 && ok;
+  int saved = errno;
+  if (std::fclose(out) != 0 && ok) {
+    ok = false;
+    saved = errno;
+  }
+  if (!ok) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw WriteError(writeFailure(path, saved, ""));
   }
   std::filesystem::rename(temporary, path);
 }

@@ -18,9 +18,13 @@ constexpr size_t kMaxSceneTriangles = 5'000'000;
 constexpr size_t kMaxSceneObjects = 100'000;  // mesh instances (one draw call each)
 
 // What is left of the budget while a scene is assembled (app/scene/scene_gltf.h).
+// Bytes of glTF files and buffers read for one scene (app/scene/gltf_file_access.h).
+constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(2) << 30;
+
 struct SceneBudget {
   size_t triangles = kMaxSceneTriangles;
   size_t objects = kMaxSceneObjects;
+  std::uint64_t fileBytes = kMaxSceneFileBytes;
 };
 
 struct Mesh {

@@ -88,6 +88,26 @@ bool enclosesCenter(const LightCoordinates& light, const Mesh& mesh) {
   return inside >= 5;
 }
 
+// 4. A triangle lying in the light's plane (every corner within `eps` of it) that overlaps
+//    the rectangle: the light sits on that surface.
+bool liesInLightPlane(const LightCoordinates& light, const glm::dvec3 corner[3], double eps) {
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(corner[i].z) > eps) return false;
+  for (int i = 0; i < 3; ++i)
+    if (segmentMeetsRectangle(glm::dvec2(corner[i]), glm::dvec2(corner[(i + 1) % 3]), light.halfWidth,
+                              light.halfHeight))
+      return true;
+  // The rectangle inside the triangle: its centre (the origin) on the inner side of all edges.
+  double sign = 0;
+  for (int i = 0; i < 3; ++i) {
+    const glm::dvec2 a(corner[i]), b(corner[(i + 1) % 3]);
+    const double side = (b.x - a.x) * (0 - a.y) - (b.y - a.y) * (0 - a.x);
+    if (side * sign < 0) return false;
+    if (side != 0) sign = side;
+  }
+  return sign != 0;
+}
+
 }  // namespace
 
 std::vector<std::string> lightWarnings(const Scene& scene) {
@@ -107,7 +127,26 @@ std::vector<std::string> lightWarnings(const Scene& scene) {
     bool inFront = false;
     for (const glm::vec3& p : mesh.positions) inFront = inFront || light(p).z > 0;
     anythingInFront = anythingInFront || inFront;
-    if (object.receiverOnly) continue;
+    const std::string named = std::string(1, '\'').append(printable(object.name)).append("'");
+    if (object.receiverOnly) {
+      // A receiver in the light's plane, or cut by the light's rectangle: part of the light
+      // is on or behind its surface. The reference shadows that part; the depth-map methods
+      // and SSM (which see the surface at the light's plane, clipped) do not.
+      const double eps = 1e-4 * std::max(light.halfWidth, light.halfHeight);
+      bool inPlane = false;
+      for (size_t t = 0; t < mesh.triangleCount() && !inPlane; ++t) {
+        const glm::dvec3 corner[3] = {light(mesh.positions[mesh.indices[3 * t]]),
+                                      light(mesh.positions[mesh.indices[3 * t + 1]]),
+                                      light(mesh.positions[mesh.indices[3 * t + 2]])};
+        inPlane = liesInLightPlane(light, corner, eps) || crossesLight(light, corner);
+      }
+      if (inPlane)
+        warnings.push_back("the light's rectangle lies in or cuts through the plane of receiver " + named +
+                           ": part of the light is on or behind that surface, which the reference "
+                           "shadows and " + kDepthMapMethods + " and ssm do not (they show more "
+                           "light than the reference)");
+      continue;
+    }
     occluders = true;
     occluderInFront = occluderInFront || inFront;
     const std::string name = std::string(1, '\'').append(printable(object.name)).append("'");

@@ -5,7 +5,10 @@
 //   plane = the light's plane, Eq 3.1) hold nothing, so hard_shadow, classify and trace show
 //   no shadow anywhere, while the reference (which lights both sides) shows shadows;
 // - an occluder crosses the light's rectangle or encloses the light's centre: the layers
-//   clip it at the light's plane, so those methods show less shadow than the reference.
+//   clip it at the light's plane, so those methods show less shadow than the reference;
+// - a receiver lies in the light's plane or is cut by the light's rectangle (a light at the
+//   height of the ground): part of the light is behind that surface, which the reference
+//   shadows and the depth-map methods and SSM do not (they show more light).
 #pragma once
 #include <string>
 #include <vector>

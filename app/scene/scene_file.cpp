@@ -3,6 +3,7 @@
 #include "scene/mesh_builders.h"
 
 #include "core/input_error.h"
+#include "io/json_input.h"
 #include "scene/scene_gltf.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,83 +22,15 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// RFC 6901 escaping, so that a pointer built from a hostile key still reads unambiguously
-// (and bounded, control characters escaped: printable()).
+// RFC 6901 escaping, bounded, control characters escaped (io/json_input.h).
 std::string pointerTo(const std::string& parent, const std::string& key) {
-  std::string escaped;
-  for (char c : printable(key)) {
-    if (c == '~')
-      escaped += "~0";
-    else if (c == '/')
-      escaped += "~1";
-    else
-      escaped += c;
-  }
-  return parent + "/" + escaped;
+  return jsonPointer(parent, key);
 }
 
 std::string typeOf(const json& value) {
   const std::string type = value.type_name();
   return (type == "object" || type == "array" ? "an " : "a ") + type;
 }
-
-// JSON allows an object to repeat a key and nlohmann keeps the last one; in a scene file a
-// repeated key is a mistake (which one was meant?), so a first SAX pass finds them.
-class DuplicateKeys : public nlohmann::json_sax<json> {
- public:
-  std::string duplicate;  // JSON pointer of the first repeated key, "" if none
-
-  bool start_object(std::size_t) override { return push(true); }
-  bool end_object() override { return pop(); }
-  bool start_array(std::size_t) override { return push(false); }
-  bool end_array() override { return pop(); }
-  bool key(string_t& name) override {
-    Level& level = levels_.back();
-    level.key = name;
-    if (level.keys.insert(name).second) return true;
-    duplicate = pointer();
-    return false;  // stop parsing
-  }
-  bool null() override { return value(); }
-  bool boolean(bool) override { return value(); }
-  bool number_integer(number_integer_t) override { return value(); }
-  bool number_unsigned(number_unsigned_t) override { return value(); }
-  bool number_float(number_float_t, const string_t&) override { return value(); }
-  bool string(string_t&) override { return value(); }
-  bool binary(binary_t&) override { return value(); }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
-    return false;  // the DOM parse reports it with line and column
-  }
-
- private:
-  struct Level {
-    bool isObject;
-    std::set<std::string> keys;
-    std::string key;
-    size_t index = 0;
-  };
-  bool value() {
-    if (!levels_.empty() && !levels_.back().isObject) ++levels_.back().index;
-    return true;
-  }
-  bool push(bool isObject) {
-    if (!levels_.empty() && !levels_.back().isObject) ++levels_.back().index;
-    levels_.push_back({isObject, {}, {}, 0});
-    return true;
-  }
-  bool pop() {
-    levels_.pop_back();
-    return true;
-  }
-  std::string pointer() const {
-    std::string result;
-    for (const Level& level : levels_)
-      result = level.isObject ? pointerTo(result, level.key)
-                              : result + "/" + std::to_string(level.index - 1);
-    return result;
-  }
-  std::vector<Level> levels_;
-};
 
 class Reader {
  public:
@@ -136,7 +69,7 @@ class Reader {
     // nlohmann refuses literals such as 1e999 itself; values beyond float range (or
     // close enough that arithmetic overflows) would turn into infinities later.
     if (!std::isfinite(result) || std::abs(result) > 1e30)
-      fail(pointer, "must be finite and within 1e30 in magnitude, got " + value.dump());
+      fail(pointer, "must be finite and within +-1e30, got " + value.dump());
     return result;
   }
 
@@ -157,9 +90,15 @@ class Reader {
 
   // A position: within the scene limit (app/scene/scene.h) every back end can represent.
   glm::vec3 point(const json& value, const std::string& pointer) const {
-    const glm::vec3 p = vec3(value, pointer);
-    for (int i = 0; i < 3; ++i) limited(p[i], pointer + "/" + std::to_string(i), kMaxCoordinate);
-    return p;
+    // The scene limit first, so that 1e308 is told the limit that applies (+-1e6).
+    if (value.is_array() && value.size() == 3)
+      for (size_t i = 0; i < 3; ++i)
+        if (value[i].is_number()) limited(value[i].get<double>(), pointer + "/" + std::to_string(i), kMaxCoordinate);
+    return vec3(value, pointer);
+  }
+  double bounded(const json& value, const std::string& pointer, double bound) const {
+    if (value.is_number()) limited(value.get<double>(), pointer, bound);
+    return number(value, pointer);
   }
   double limited(double v, const std::string& pointer, double bound) const {
     if (std::abs(v) > bound) {
@@ -228,12 +167,10 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     r.expectObject(object, pointer, {"ground", "name", "color", "receiver_only"});
     const std::string at = pointer + "/ground";
     r.expectObject(object["ground"], at, {"size", "y"});
-    const float size = static_cast<float>(r.limited(
-        r.positive(r.required(object["ground"], at, "size"), at + "/size"), at + "/size",
-        2 * kMaxCoordinate));
+    r.bounded(r.required(object["ground"], at, "size"), at + "/size", 2 * kMaxCoordinate);
+    const float size = static_cast<float>(r.positive(object["ground"]["size"], at + "/size"));
     const float y = object["ground"].contains("y")
-                        ? static_cast<float>(r.limited(r.number(object["ground"]["y"], at + "/y"),
-                                                       at + "/y", kMaxCoordinate))
+                        ? static_cast<float>(r.bounded(object["ground"]["y"], at + "/y", kMaxCoordinate))
                         : 0.0f;
     SceneObject ground;
     ground.name = name.empty() ? "ground" : name;
@@ -284,10 +221,10 @@ AreaLight readLight(const Reader& r, const json& root, std::vector<std::string>&
   // Directions in double: no overflow for any finite input.
   glm::dvec3 forward = r.vec3(r.required(light, at, "forward"), at + "/forward");
   glm::dvec3 up = r.vec3(r.required(light, at, "up"), at + "/up");
-  result.width = static_cast<float>(r.limited(
-      r.positive(r.required(light, at, "width"), at + "/width"), at + "/width", 2 * kMaxCoordinate));
-  result.height = static_cast<float>(r.limited(
-      r.positive(r.required(light, at, "height"), at + "/height"), at + "/height", 2 * kMaxCoordinate));
+  r.bounded(r.required(light, at, "width"), at + "/width", 2 * kMaxCoordinate);
+  r.bounded(r.required(light, at, "height"), at + "/height", 2 * kMaxCoordinate);
+  result.width = static_cast<float>(r.positive(light["width"], at + "/width"));
+  result.height = static_cast<float>(r.positive(light["height"], at + "/height"));
   if (glm::length(forward) < 1e-6) r.fail(at + "/forward", "must not be zero");
   if (glm::length(up) < 1e-6) r.fail(at + "/up", "must not be zero");
   forward = glm::normalize(forward);
@@ -329,31 +266,15 @@ Camera readCamera(const Reader& r, const json& root) {
 }  // namespace
 
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) throw InputError(path + ": not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseSceneFile(text.str(), path, warnings);
+  // A regular file of bounded size (a FIFO or a device is refused before reading).
+  return parseSceneFile(readInputFile(path), path, warnings);
 }
 
 Scene parseSceneFile(const std::string& text, const std::string& path,
                      std::vector<std::string>& warnings) {
   const Reader r(path);
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::exception& e) {
-    // Drop the "[json.exception.parse_error.101] " prefix; keep line and column.
-    std::string what = e.what();
-    const size_t bracket = what.find("] ");
-    throw InputError(path + ": not valid JSON: " +
-                     (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-  }
-  DuplicateKeys duplicates;
-  json::sax_parse(text, &duplicates);
-  if (!duplicates.duplicate.empty()) r.fail(duplicates.duplicate, "key given twice");
+  // The limits every JSON input shares: depth, size, string length, repeated keys.
+  const json root = parseJsonText(text, path);
   r.expectObject(root, "", {"name", "objects", "light", "camera"});
 
   Scene scene;

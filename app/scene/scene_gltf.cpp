@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
+#include "io/json_input.h"
 #include "scene/gltf_file_access.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -570,14 +571,21 @@ std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worl
                                   std::vector<std::string>& warnings, SceneBudget* budget) {
   auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) fail("no such file");
+  // A FIFO, directory, device or symlink loop says what it is (not "no such file").
+  if (std::string problem = regularFileProblem(path); !problem.empty()) fail(problem);
   // tinygltf passes sizes as 32 bits; larger files would be read truncated.
-  if (std::filesystem::file_size(path, error) >= kMaxFileBytes)
-    fail("files of 4 GiB or more are not supported");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (size >= kMaxFileBytes) fail("files of 4 GiB or more are not supported");
+  SceneBudget whole;
+  SceneBudget& shared = budget ? *budget : whole;
+  if (size > shared.fileBytes)
+    fail("reading it would pass the scene's limit of " + std::to_string(kMaxSceneFileBytes >> 20) +
+         " MiB of glTF files and buffers in all (not read)");
+  shared.fileBytes -= size;
   std::vector<unsigned char> bytes;
   std::string problem;
   if (!readRegularFile(&bytes, &problem, path, nullptr)) fail(oneLine(problem));
-  return loadGltfFromMemory(bytes, path, worldFromFile, warnings, budget);
+  return loadGltfFromMemory(bytes, path, worldFromFile, warnings, &shared);
 }
 
 std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& bytes,
@@ -598,7 +606,13 @@ std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& by
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skipImage, nullptr);
-  loader.SetFsCallbacks({regularFileExists, unexpandedPath, readRegularFile, refuseWrite, nullptr});
+  // Buffers are read only at their declared byteLength and within the scene's budget of
+  // bytes read (gltf_file_access.h): a 48-byte buffer naming a 2 GiB file is refused unread.
+  SceneBudget whole;
+  SceneBudget& shared = budget ? *budget : whole;
+  GltfFiles files = declaredFiles(bytes, ext == ".glb");
+  files.remaining = &shared.fileBytes;
+  loader.SetFsCallbacks({regularFileExists, unexpandedPath, readRegularFile, refuseWrite, &files});
   tinygltf::Model model;
   std::string err, warn;
   const std::string baseDir = std::filesystem::path(path).parent_path().string();
@@ -625,7 +639,6 @@ std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& by
   }
   if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + printable(oneLine(warn), 400));
 
-  SceneBudget whole;
-  Importer importer(path, model, warnings, budget ? *budget : whole);
+  Importer importer(path, model, warnings, shared);
   return importer.run(glm::dmat4(worldFromFile));
 }

@@ -31,6 +31,7 @@
 #include "window/panels/ui_scene_panel.h"
 #include "window/script/ui_script.h"
 #include "window/watchdog.h"
+#include "io/json_input.h"
 #include "window/script/ui_settings.h"
 #include "window/panels/ui_speed_error.h"
 #include "window/ui_graph.h"
@@ -337,11 +338,23 @@ int checkOptions(const WindowOptions& options, Scene& scene, std::vector<std::st
       std::fprintf(stderr, "penumbra: --set %s\n", problem.c_str());
       return 2;
     }
-  if (!options.script.empty())
-    if (std::string problem = parseScriptFile(options.script, script); !problem.empty()) {
-      std::fprintf(stderr, "penumbra: --script %s\n", problem.c_str());
+  // The readers' rule (io/json_input.h): a FIFO or device is refused here, never waited on.
+  if (!options.config.empty()) try {
+      readJsonFile(options.config);
+    } catch (const InputError& error) {
+      std::fprintf(stderr, "penumbra: --config %s\n", error.what());
       return 2;
     }
+  if (!options.script.empty()) {
+    const char* label = options.lessonCommand ? "penumbra lesson: " : "penumbra: --script ";
+    std::string problem = parseScriptFile(options.script, script);
+    if (problem.empty())
+      problem = checkScriptOutputs(script, {options.interactiveLesson, options.exportDirectory, options.script});
+    if (!problem.empty()) {
+      std::fprintf(stderr, "%s%s\n", label, problem.c_str());
+      return 2;
+    }
+  }
   return 0;
 }
 
@@ -408,7 +421,8 @@ struct FrameLoop {
       if (step == ScriptRunner::Step::Failed) {
         state.log.echo = false;  // said once, below, as scripts always have
         state.log.error("script", runner->error());
-        std::fprintf(stderr, "penumbra: %s\n", runner->error().c_str());
+        std::fprintf(stderr, "%s%s\n", options.lessonCommand ? "penumbra lesson: " : "penumbra: ",
+                     runner->error().c_str());
         result = 2;
         return false;
       }
@@ -534,7 +548,7 @@ int runWindow(const WindowOptions& options) {
   // Unattended runs end with a message rather than hang (tests, lesson exports).
   std::unique_ptr<Watchdog> watchdog;
   if (!options.interactiveLesson && (!options.script.empty() || !options.screenshot.empty()))
-    watchdog = std::make_unique<Watchdog>(options.script.empty() ? "--screenshot" : "--script " + options.script, 300);
+    watchdog = std::make_unique<Watchdog>(options.lessonCommand ? "lesson " + options.script : options.script.empty() ? "--screenshot " + options.screenshot : "--script " + options.script, 300);
   std::string error;
   std::unique_ptr<GlContext> context = GlContext::createWindow(options.width, options.height, "penumbra", error);
   if (!context) {

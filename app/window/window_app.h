@@ -14,6 +14,7 @@ struct WindowOptions {
   std::string script;  // JSON list of UI actions run in order, then exit (app/window/script/ui_script.h)
   std::string exportDirectory;  // --export: where a script's relative exports go
   bool interactiveLesson = false;  // `penumbra lesson FILE`: wait for "Next", stay open
+  bool lessonCommand = false;      // `penumbra lesson FILE` (messages say "lesson FILE")
 };
 
 // Returns the exit status: 0, 1 (no display / GL failure), 2 (bad scene, --set, --config,

@@ -167,3 +167,21 @@ TEST(CliReliability, MessagesAreShortAndSayWhy) {
   EXPECT_TRUE(contains(scenes.output, "names no scene")) << scenes.output;
   EXPECT_FALSE(fs::exists(never));
 }
+
+// A method selected but disabled: composite.shadow=raster4d without raster4d.enabled gave a
+// composite byte-identical to no shadow at all, exit 0, no word (so did error.method and
+// error.against naming it). Refused, naming the fix; enabled, it runs.
+TEST(CliReliability, ASelectedButDisabledMethodIsRefused) {
+  const TempDirectory dir("penumbra_cli_disabled");
+  for (const std::string& set : {std::string("composite.shadow=raster4d"), std::string("error.method=raster4d"),
+                                 std::string("error.against=raster4d")}) {
+    const auto result = runPenumbra("export --out " + (dir.path() / "x").string() + " --set " + set + kSmall);
+    EXPECT_EQ(result.exitCode, 2) << set << "\n" << result.output;
+    EXPECT_TRUE(contains(result.output, "which is disabled (raster4d.enabled=false)")) << result.output;
+    EXPECT_TRUE(contains(result.output, "--set raster4d.enabled=true")) << result.output;
+    EXPECT_FALSE(fs::exists(dir.path() / "x"));
+  }
+  const auto enabled = runPenumbra("export --out " + (dir.path() / "y").string() +
+                                   " --set composite.shadow=raster4d --set raster4d.enabled=true --set raster4d.samples=8" + kSmall);
+  EXPECT_EQ(enabled.exitCode, 0) << enabled.output;
+}

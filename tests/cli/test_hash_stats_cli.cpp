@@ -102,3 +102,19 @@ TEST(Dieharder, RunsOneTestAndCancels) {
   EXPECT_TRUE(longRun.cancelled());
   EXPECT_LT(longRun.testsDone(), 16);
 }
+
+// hash-stats --out under a file, a foreign directory, or a directory no one may create files
+// in (/proc, even as root) exited 1 after all the GPU work; now 2, before it.
+TEST(HashStatsCli, BadOutExitsTwoBeforeAnyWork) {
+  const TempDirectory scratch("penumbra-hash-stats-out");
+  const std::string file = scratch.write("afile", "x");
+  scratch.write("notes.txt", "mine");
+  for (const std::string& out : {file, file + "/sub", scratch.path().string(), std::string("/proc/penumbra_x")}) {
+    const auto result = runPenumbra("hash-stats --hash md5_16 --pattern linear --count 1024 --out " + out);
+    EXPECT_EQ(result.exitCode, 2) << out << "\n" << result.output;
+    EXPECT_NE(result.output.find("--out"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("| md5_16"), std::string::npos) << "worked before checking: " << result.output;
+  }
+  std::ifstream kept(scratch.path() / "notes.txt");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "mine");
+}

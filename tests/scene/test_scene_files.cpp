@@ -463,8 +463,13 @@ TEST_F(SceneFilesTemp, MalformedSceneFilesNameTheProblem) {
   huge.replace(huge.find("\"width\":1"), 9, "\"width\":1e999");
   // nlohmann refuses the literal itself; a representable but absurd value is ours to refuse.
   expectError("huge.json", huge, {"not valid JSON", "1e999"});
+  // A position is told the limit that applies to positions (the scene limit), not 1e30.
   expectError("large.json", edited([](json& d) { d["light"]["center"][1] = 1e35; }),
-              {"/light/center/1: must be finite and within 1e30"});
+              {"/light/center/1: must be within +-1e+06 (the scene limit"});
+  expectError("larger.json", edited([](json& d) { d["camera"]["position"][0] = 1e308; }),
+              {"/camera/position/0: must be within +-1e+06", "got 1e+308"});
+  expectError("large_up.json", edited([](json& d) { d["light"]["up"][0] = 1e35; }),
+              {"/light/up/0: must be finite and within +-1e30"});
   expectError("negative_width.json", edited([](json& d) { d["light"]["width"] = -1; }),
               {"/light/width: must be positive"});
   expectError("negative_ground.json",

@@ -3,6 +3,8 @@
 // parsing, lessons (interactive stepping, export directories), export file names.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -156,7 +158,7 @@ TEST(WindowUnits, ScriptParsingNamesTheActionAndWhatIsValid) {
   problem = parseScriptJson(json::parse(R"([{"pick": "middle"}])"), actions);
   EXPECT_NE(problem.find("(pick): expected [a, b]"), std::string::npos) << problem;
   problem = parseScriptJson(json::parse(R"([{"wait": -1}])"), actions);
-  EXPECT_NE(problem.find("integer >= 0"), std::string::npos) << problem;
+  EXPECT_NE(problem.find("integer in [0, 100000]"), std::string::npos) << problem;
   problem = parseScriptJson(json::parse(R"([{"wait": 1, "pick": [1, 2]}])"), actions);
   EXPECT_NE(problem.find("one key"), std::string::npos) << problem;
   EXPECT_NE(parseScriptJson(json::parse(R"({"wait": 1})"), actions), "");
@@ -189,6 +191,10 @@ TEST(WindowUnits, CaptionsNameTheChangedParametersTheOutputDependsOn) {
 }
 
 TEST(WindowUnits, NBufferHoverWindowSpansTwoToTheLevelInsideTheMap) {
+  // A view's level past the map's ("level": 40 from a script, UBSan: shift exponent 40)
+  // spans the whole map, as the top level does.
+  for (int level : {31, 40, 1000})
+    EXPECT_EQ(nbufferWindow1D(level, 100, 512), glm::ivec2(0, 511)) << level;
   for (int size : {5, 64, 100})
     for (int level = 0; (1 << level) <= 2 * size; ++level)
       for (int x = 0; x < size; ++x) {
@@ -333,9 +339,10 @@ TEST(WindowUnits, RelativeExportsGoIntoTheLessonsDirectoryOrTheOverride) {
         requested.push_back(state.script.screenshotRequest);
         state.script.screenshotRequest.clear();
       }
-    ASSERT_EQ(requested.size(), 2u) << override;
+    ASSERT_EQ(requested.size(), 1u) << override;
     EXPECT_EQ(requested[0], (override.empty() ? "penumbra_exports/from_script" : override) + "/a.png");
-    EXPECT_EQ(requested[1], "/abs/b.png");
+    // With an export folder, an absolute path would write outside it: refused.
+    EXPECT_NE(runner.error().find("absolute path"), std::string::npos) << runner.error();
   }
   std::vector<ScriptAction> actions;
   EXPECT_NE(parseScriptJson(json::parse(R"([{"say": 3}])"), actions).find("expected a string"),
@@ -353,8 +360,13 @@ TEST(WindowUnits, ALessonWithoutExportDirExportsUnderTheOutputFolderByItsName) {
     std::string requested;
     for (int i = 0; i < 12 && runner.step(state) == ScriptRunner::Step::Running; ++i)
       if (!state.script.screenshotRequest.empty()) requested = state.script.screenshotRequest;
-    EXPECT_EQ(requested, (override.empty() ? std::string(kDefaultExportDirectory) + "/fig_9_9"
-                                           : override) + "/a.png");
+    // A lesson's folder is one transaction: its files go into the folder's hidden temporary
+    // sibling first (io/output_path.h), renamed into place when the lesson ends.
+    const std::filesystem::path folder = std::filesystem::absolute(
+        override.empty() ? std::string(kDefaultExportDirectory) + "/fig_9_9" : override);
+    EXPECT_EQ(requested, (folder.parent_path() /
+                          ("." + folder.filename().string() + ".partial-" + std::to_string(::getpid())) /
+                          "a.png").string());
   }
   // export_dir names a folder under the output folder: no way out of it.
   std::vector<ScriptAction> actions;

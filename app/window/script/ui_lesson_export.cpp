@@ -185,18 +185,19 @@ std::string exportView(UiState& state, const json& a, ScriptContext& context) {
     if (!problem.empty()) return problem;
   }
   const std::string target = context.resolved(file);
-  state.status = exportViewFiles(state, view, target, ExportKind::Both, annotate, context.crop);
+  const std::string status = exportViewFiles(state, view, target, ExportKind::Both, annotate, context.crop);
+  state.status = context.shown(status);  // the final paths, not the transaction's temporary ones
   std::printf("penumbra: %s\n", state.status.c_str());
-  if (state.status.rfind("wrote ", 0) != 0) return state.status;
+  if (status.rfind("wrote ", 0) != 0) return state.status;
   // A PNG panel keeps its raw values beside it (x.exr): the numbers behind an annotated image.
   if (fs::path(target).extension() == ".png") {
     const std::string raw = exportViewFiles(state, view, fs::path(target).replace_extension(".exr").string(),
                                             ExportKind::Both, false, context.crop);
-    std::printf("penumbra: %s\n", raw.c_str());
-    if (raw.rfind("wrote ", 0) != 0) return raw;
+    std::printf("penumbra: %s\n", context.shown(raw).c_str());
+    if (raw.rfind("wrote ", 0) != 0) return context.shown(raw);
   }
   // "wrote /abs/x.png, /abs/x.exr": the PNG is the panel.
-  std::stringstream written(state.status.substr(6));
+  std::stringstream written(status.substr(6));
   for (std::string path; std::getline(written, path, ',');) {
     path.erase(0, path.find_first_not_of(' '));
     if (path.size() > 4 && path.compare(path.size() - 4, 4, ".png") == 0)
@@ -248,17 +249,23 @@ std::string screenshot(const UiState& state, const json& a, ScriptContext& conte
   return "";
 }
 
-// 4. The end of a lesson: the sheet and the text beside it.
+// 4. The end of a lesson: the sheet and the text beside it, then the folder's one rename
+// (a lesson's files are one transaction: ScriptContext::resolved). lesson.md, the manifest
+// that marks the folder as a lesson's, comes last.
 std::string finishLesson(const ScriptContext& context) {
-  if (context.lessonTitle.empty() || context.panels.empty() || context.exportDirectory.empty())
-    return "";
+  if (context.lessonTitle.empty() || context.exportDirectory.empty()) return "";
+  if (context.panels.empty() && !context.transaction) return "";
   try {
-    const fs::path directory = context.exportDirectory;
+    const fs::path directory = context.transaction ? context.transaction->path() : fs::path(context.exportDirectory);
+    const fs::path shown = context.transaction ? context.transaction->target() : fs::absolute(directory);
     fs::create_directories(directory);
-    for (const fs::path& path : writeFigureSheet(directory / "figure_sheet", context.lessonTitle,
-                                                 context.panels))
-      std::printf("penumbra: wrote %s\n", fs::absolute(path).c_str());
-    std::string text = "# " + context.lessonTitle + "\n\n![figure sheet](figure_sheet.png)\n\n";
+    std::vector<fs::path> files;
+    if (!context.panels.empty())
+      for (const fs::path& path : writeFigureSheet(directory / "figure_sheet", context.lessonTitle,
+                                                   context.panels))
+        files.push_back(path.filename());
+    std::string text = "# " + context.lessonTitle + "\n\n" +
+                       (context.panels.empty() ? "" : "![figure sheet](figure_sheet.png)\n\n");
     for (size_t i = 0; i < context.panels.size(); ++i)
       text += "- (" + std::string(1, char('a' + i % 26)) + ") `" +
               fs::path(context.panels[i].png).filename().string() + "`: " +
@@ -266,8 +273,10 @@ std::string finishLesson(const ScriptContext& context) {
     text += "\n## The lesson, as played\n\n";
     for (size_t i = 0; i < context.said.size(); ++i)
       text += std::to_string(i + 1) + ". " + context.said[i] + "\n";
-    writeTextFile(directory / "lesson.md", text);
-    std::printf("penumbra: wrote %s\n", fs::absolute(directory / "lesson.md").c_str());
+    writeTextFile(directory / kLessonManifest, text);
+    files.push_back(kLessonManifest);
+    if (context.transaction) context.transaction->commit();
+    for (const fs::path& name : files) std::printf("penumbra: wrote %s\n", (shown / name).c_str());
     std::fflush(stdout);
     return "";
   } catch (const std::exception& error) {

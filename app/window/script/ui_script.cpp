@@ -1,7 +1,10 @@
 #include "window/script/ui_script.h"
 
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
+
+#include "core/input_error.h"
+#include "io/json_input.h"
 
 #include "window/panels/ui_speed_error.h"
 #include "window/script/ui_lesson_export.h"
@@ -17,35 +20,37 @@ std::string describe(const ScriptAction& action) {
 
 }  // namespace
 
-// 1. Reading: every action is checked against its row of the table (ui_script_actions.h).
-// A list of one-key objects with arguments of the right shape.
+// 1. Reading: the file under the limits every JSON input shares (io/json_input.h: a
+// regular file, depth, size, string length, no repeated key), then every action checked
+// against its row of the table (ui_script_actions.h): a list of one-key objects with
+// arguments of the right shape and range. Messages: "<pointer>: script action N (name): ..."
+// with the names and values cut.
 std::string parseScriptJson(const json& root, std::vector<ScriptAction>& actions) {
   actions.clear();
-  if (!root.is_array()) return "a script is a JSON list of actions, e.g. [{\"wait\": 1}]";
+  if (!root.is_array()) return "/: a script is a JSON list of actions, e.g. [{\"wait\": 1}]";
   for (size_t i = 0; i < root.size(); ++i) {
     const json& item = root[i];
-    const std::string where = "script action " + std::to_string(i + 1);
+    const std::string where = "/" + std::to_string(i) + ": script action " + std::to_string(i + 1);
     if (!item.is_object() || item.size() != 1)
-      return where + ": expected an object with one key (the action), got " + item.dump();
+      return where + ": expected an object with one key (the action), got " + shortJson(item);
     const std::string name = item.begin().key();
     const ScriptActionSpec* spec = findScriptAction(name);
     if (!spec)
-      return where + ": unknown action '" + name + "'; valid actions: " + scriptActionNames();
+      return where + ": unknown action '" + printable(name) + "'; valid actions: " + scriptActionNames();
     if (std::string problem = spec->check(item.begin().value()); !problem.empty())
-      return where + " (" + name + "): " + problem + ", got " + item.begin().value().dump();
+      return jsonPointer("/" + std::to_string(i), name) + ": script action " + std::to_string(i + 1) +
+             " (" + name + "): " + problem + ", got " + shortJson(item.begin().value());
     actions.push_back({i + 1, name, item.begin().value()});
   }
   return "";
 }
 
 std::string parseScriptFile(const std::string& path, std::vector<ScriptAction>& actions) {
-  std::ifstream in(path);
-  if (!in) return "cannot read script " + path;
   try {
-    const std::string problem = parseScriptJson(json::parse(in), actions);
-    return problem.empty() ? "" : path + ": " + problem;
-  } catch (const json::parse_error& error) {
-    return path + ": not valid JSON: " + error.what();
+    const std::string problem = parseScriptJson(readJsonFile(path), actions);
+    return problem.empty() ? "" : printable(path, 200) + ": " + problem;
+  } catch (const InputError& error) {
+    return error.what();
   }
 }
 
@@ -61,6 +66,45 @@ ScriptRunner::ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions opti
     lesson = lesson || action.name == "lesson";
   }
   if (lesson && !context_.exportOverridden) context_.exportDirectory = defaultLessonDirectory(options.path);
+  context_.transactional = lesson;  // a lesson's folder is written as one transaction
+}
+
+// Where a script's files go, known before the window opens: every path action checked
+// against the output rule, and a lesson's folder (replaced as a whole) checked as a
+// directory we may replace.
+std::string checkScriptOutputs(const std::vector<ScriptAction>& actions, const ScriptOptions& options) {
+  bool lesson = false;
+  std::string directory = options.exportOverride;
+  for (const ScriptAction& action : actions) {
+    lesson = lesson || action.name == "lesson";
+    if (action.name == "export_dir" && options.exportOverride.empty())
+      directory = (std::filesystem::path(kDefaultExportDirectory) / action.argument.get<std::string>()).string();
+  }
+  if (lesson && directory.empty()) directory = defaultLessonDirectory(options.path);
+  for (const ScriptAction& action : actions) {
+    const bool writes = action.name == "export_view" || action.name == "export_all" ||
+                        action.name == "screenshot" || action.name == "save_settings";
+    if (!writes) continue;
+    const json& a = action.argument;
+    const std::string path = a.is_string() ? a.get<std::string>() : a.value("file", std::string());
+    if (std::string problem = checkScriptPath(path, !directory.empty()); !problem.empty())
+      return "/" + std::to_string(action.index - 1) + "/" + action.name + ": script action " +
+             std::to_string(action.index) + " (" + action.name + "): '" + printable(path, 200) + "': " + problem;
+  }
+  try {
+    if (lesson) checkOutputDirectory(directory, "the lesson's export folder", kLessonManifest);
+    else if (!directory.empty()) checkOutputDirectory(directory, "the export folder", "");
+    // Outside a lesson's fresh folder, an export_all target that exists now is checked now
+    // (it is checked again when the action runs).
+    if (!lesson)
+      for (const ScriptAction& action : actions)
+        if (action.name == "export_all")
+          checkOutputDirectory(std::filesystem::path(directory) / action.argument.get<std::string>(),
+                               "script action " + std::to_string(action.index) + " (export_all)", "run.json");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
 }
 
 ScriptRunner::Step ScriptRunner::step(UiState& state) {
@@ -85,9 +129,14 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
   while (next_ < actions_.size()) {
     const ScriptAction& action = actions_[next_++];
     const ScriptActionSpec* spec = findScriptAction(action.name);  // checked when parsed
-    if (std::string problem = spec ? spec->run(state, action.argument, context_) : "not implemented";
-        !problem.empty()) {
-      error_ = describe(action) + ": " + problem;
+    std::string problem;
+    try {
+      problem = spec ? spec->run(state, action.argument, context_) : "not implemented";
+    } catch (const std::exception& error) {  // a path refused, a folder that cannot be made
+      problem = error.what();
+    }
+    if (!problem.empty()) {
+      error_ = describe(action) + ": " + printable(problem, 1000);
       return Step::Failed;
     }
     if (context_.waitFrames > 0) {
@@ -101,7 +150,13 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
   }
   if (!finished_) {  // a lesson's figure sheet and text, once
     finished_ = true;
-    if (std::string problem = finishLesson(context_); !problem.empty()) {
+    std::string problem;
+    try {
+      problem = finishLesson(context_);
+    } catch (const std::exception& error) {
+      problem = error.what();
+    }
+    if (!problem.empty()) {
       error_ = problem;
       return Step::Failed;
     }

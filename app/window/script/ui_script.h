@@ -79,6 +79,12 @@ struct ScriptOptions {
   std::string path;            // the script's file: a lesson's default export folder
 };
 
+// 1b. The output rule for the script's files (README "Scripts and lessons"): "" or the
+// message. Paths never hold ".."; with an export folder (--export, export_dir, a lesson's
+// own) they are relative to it; a lesson's folder must be new, empty or an earlier export
+// of a lesson (lesson.md), as it is replaced as a whole.
+std::string checkScriptOutputs(const std::vector<ScriptAction>& actions, const ScriptOptions& options);
+
 // 2. Runs actions frame by frame.
 class ScriptRunner {
 public:

@@ -1,8 +1,14 @@
 #include "window/script/ui_script_actions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+
+#include "core/input_error.h"
+#include "io/headless_session.h"
+#include "io/json_input.h"
+#include "io/output_path.h"
 
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_reference_progress.h"
@@ -22,9 +28,28 @@
 
 using nlohmann::json;
 
-std::string ScriptContext::resolved(const std::string& path) const {
-  if (exportDirectory.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(exportDirectory) / path).string();
+// The output rule for scripts and lessons (io/output_path.h, README "Scripts and lessons"):
+// with an export directory, a path is relative, without "..", and lands under it; a
+// lesson's whole directory is one transaction, opened at its first file.
+std::string ScriptContext::resolved(const std::string& path) {
+  if (std::string problem = checkScriptPath(path, !exportDirectory.empty()); !problem.empty())
+    throw InputError("'" + printable(path, 200) + "': " + problem);
+  if (exportDirectory.empty()) return path;
+  if (!transactional) return (std::filesystem::path(exportDirectory) / path).string();
+  if (!transaction) {
+    checkOutputDirectory(exportDirectory, "the lesson's export folder", kLessonManifest);
+    transaction = std::make_shared<DirectoryTransaction>(exportDirectory, kLessonManifest);
+  }
+  return (transaction->path() / path).string();
+}
+
+std::string ScriptContext::shown(const std::string& text) const {
+  if (!transaction) return text;
+  std::string result = text;
+  const std::string from = transaction->path().string(), to = transaction->target().string();
+  for (size_t at = 0; (at = result.find(from, at)) != std::string::npos; at += to.size())
+    result.replace(at, from.size(), to);
+  return result;
 }
 
 namespace {
@@ -35,32 +60,113 @@ const ScriptCheck kObject = [](const json& v) { return v.is_object() ? "" : "exp
 const ScriptCheck kBool = [](const json& v) {
   return v.is_boolean() ? "" : "expected true or false";
 };
-const ScriptCheck kCount = [](const json& v) {
-  return v.is_number_integer() && v.get<long long>() >= 0 ? "" : "expected an integer >= 0";
-};
-const ScriptCheck kPair = [](const json& v) {
-  return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number() ? ""
-                                                                               : "expected [a, b]";
-};
-ScriptCheck pairOr(std::initializer_list<const char*> words) {
+// Every number is range-checked here, before the window opens: a handler may convert it
+// (to int, to float) without overflow.
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+bool inRange(const json& v, double lo, double hi) {
+  return v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= lo && v.get<double>() <= hi;
+}
+ScriptCheck integer(long long lo, long long hi) {
+  return [lo, hi](const json& v) -> std::string {
+    const bool fits = v.is_number_unsigned() ? v.get<unsigned long long>() <= (unsigned long long)hi && lo <= 0
+                      : v.is_number_integer() ? v.get<long long>() >= lo && v.get<long long>() <= hi
+                                              : false;
+    if (fits && (!v.is_number_unsigned() || v.get<unsigned long long>() >= (unsigned long long)std::max(lo, 0LL)))
+      return "";
+    return "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  };
+}
+ScriptCheck number(double lo, double hi, bool openLow = false) {
+  return [=](const json& v) -> std::string {
+    if (inRange(v, lo, hi) && !(openLow && v.get<double>() <= lo)) return "";
+    return std::string("expected a number in ") + (openLow ? "(" : "[") + shortNumber(lo) + ", " +
+           shortNumber(hi) + "]";
+  };
+}
+ScriptCheck pair(double lo, double hi) {
+  return [=](const json& v) -> std::string {
+    if (v.is_array() && v.size() == 2 && inRange(v[0], lo, hi) && inRange(v[1], lo, hi)) return "";
+    return "expected [a, b], numbers in [" + shortNumber(lo) + ", " + shortNumber(hi) + "]";
+  };
+}
+ScriptCheck pairOr(double lo, double hi, std::initializer_list<const char*> words) {
   std::vector<std::string> allowed(words.begin(), words.end());
-  return [allowed](const json& v) -> std::string {
-    if (kPair(v).empty()) return "";
+  const ScriptCheck numbers = pair(lo, hi);
+  return [allowed, numbers](const json& v) -> std::string {
+    const std::string problem = numbers(v);
+    if (problem.empty()) return "";
     for (const std::string& word : allowed)
       if (v == word) return "";
-    std::string text = "expected [a, b]";
+    std::string text = problem;
     for (const std::string& word : allowed) text += " or \"" + word + "\"";
     return text;
   };
 }
 const ScriptCheck kZoom = [](const json& v) -> std::string {
-  return (v.is_number() && v.get<double>() > 0) || v == "fit" || v == "1:1"
+  return (inRange(v, 0, 1e6) && v.get<double>() > 0) || v == "fit" || v == "1:1"
              ? ""
-             : "expected a zoom factor > 0, \"fit\" or \"1:1\"";
+             : "expected a zoom factor in (0, 1e6], \"fit\" or \"1:1\"";
 };
-const ScriptCheck kFactor = [](const json& v) -> std::string {
-  return v.is_number() && v.get<double>() > 0 ? "" : "expected a factor > 0";
+// A text the terminal and the lesson panel show (bounded by the reader: io/json_input.h).
+const ScriptCheck kText = kString;
+// A file or folder a script writes: checked again with the export folder when it runs.
+const ScriptCheck kOutput = [](const json& v) -> std::string {
+  if (!v.is_string()) return "expected a file or folder name";
+  return checkScriptPath(v.get<std::string>(), false);
 };
+const ScriptCheck kExportView = [](const json& v) -> std::string {
+  if (std::string problem = checkExportView(v); !problem.empty()) return problem;
+  return checkScriptPath(v.is_string() ? v.get<std::string>() : v["file"].get<std::string>(), false);
+};
+// A screenshot: its crop (ui_lesson_export.cpp) and its file, checked like export_view's.
+const ScriptCheck kScreenshot = [](const json& v) -> std::string {
+  if (std::string problem = checkScreenshot(v); !problem.empty()) return problem;
+  return checkScriptPath(v.is_string() ? v.get<std::string>() : v["file"].get<std::string>(), false);
+};
+// Coordinates (image or window pixels; may lie outside the image) and angles: within the
+// scene limit of +-1e6 (app/scene/scene.h), far beyond any image or useful angle.
+constexpr double kMaxScriptCoordinate = 1e6;
+
+// {"drag": {"from": [x, y], "to": [x, y], "button": ..., "keys": ..., "frames": n}}
+std::string checkInputObject(const json& v, std::initializer_list<const char*> keys,
+                             const char* shape) {
+  if (!v.is_object()) return std::string("expected ") + shape;
+  for (const auto& [key, unused] : v.items()) {
+    bool known = false;
+    for (const char* name : keys) known = known || key == name;
+    if (!known) return "unknown key '" + printable(key) + "'; expected " + shape;
+  }
+  if (v.contains("keys") && !v["keys"].is_string()) return "\"keys\": expected a string such as \"alt+shift\"";
+  return "";
+}
+const ScriptCheck checkDrag = [](const json& v) -> std::string {
+  const char* shape = "{\"from\": [x, y], \"to\": [x, y], \"button\": ..., \"keys\": ..., \"frames\": n}";
+  if (std::string problem = checkInputObject(v, {"from", "to", "button", "keys", "frames"}, shape); !problem.empty())
+    return problem;
+  for (const char* point : {"from", "to"})
+    if (!v.contains(point) || !pair(-kMaxScriptCoordinate, kMaxScriptCoordinate)(v[point]).empty())
+      return std::string("\"") + point + "\": " + pair(-kMaxScriptCoordinate, kMaxScriptCoordinate)(json());
+  if (v.contains("button") && !v["button"].is_string()) return "\"button\": expected left, right or middle";
+  if (v.contains("frames") && !integer(1, 240)(v["frames"]).empty())
+    return "\"frames\": " + integer(1, 240)(json());
+  return "";
+};
+const ScriptCheck checkWheel = [](const json& v) -> std::string {
+  const char* shape = "{\"at\": [x, y], \"amount\": n, \"keys\": ...}";
+  if (std::string problem = checkInputObject(v, {"at", "amount", "keys"}, shape); !problem.empty())
+    return problem;
+  if (!v.contains("at") || !pair(-kMaxScriptCoordinate, kMaxScriptCoordinate)(v["at"]).empty())
+    return "\"at\": " + pair(-kMaxScriptCoordinate, kMaxScriptCoordinate)(json());
+  if (!v.contains("amount") || !number(-100, 100)(v["amount"]).empty())
+    return "\"amount\": " + number(-100, 100)(json());
+  return "";
+};
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 ViewPanel& activeView(UiState& state) { return state.views.panels[state.views.activeView]; }
 const GlTexture* activeTexture(UiState& state) { return shownTexture(state, activeView(state)); }
@@ -78,6 +184,15 @@ std::string setParameters(UiState& state, const json& a) {
     // lesson's "against the Embree reference" numbers were against raster4d).
     if (key == truthKey) keepUserTruth(state);
   }
+  // A choice naming a disabled stage (composite.shadow = raster4d with raster4d off) is
+  // warned about: a later action may still enable it, so it is not refused here.
+  std::vector<std::string> assignments;
+  for (const auto& [key, value] : a.items())
+    assignments.push_back(key + "=" + (value.is_string() ? value.get<std::string>() : value.dump()));
+  if (std::string problem = disabledSelection(state.session.pipeline, assignments); !problem.empty()) {
+    std::fprintf(stderr, "penumbra: warning: %s\n", problem.c_str());
+    state.status = "warning: " + problem;
+  }
   return "";
 }
 
@@ -92,7 +207,9 @@ std::string pick(UiState& state, const json& a) {
 
 std::string exportAll(UiState& state, const json& a, ScriptContext& context) {
   const std::string target = context.resolved(a.get<std::string>());
-  state.status = exportAllStages(state, target);
+  // Refused before any work when the folder is not an earlier export (never emptied).
+  checkOutputDirectory(target, "export_all", "run.json");
+  state.status = context.shown(exportAllStages(state, target));
   std::printf("penumbra: %s\n", state.status.c_str());
   return state.status.rfind("wrote ", 0) == 0 ? "" : state.status;
 }
@@ -147,8 +264,8 @@ std::string loadSettings(UiState& state, const json& a) {
   return ok ? "" : state.status;
 }
 
-std::string saveSettings(UiState& state, const json& a) {
-  state.status = saveSettingsFile(state, a.get<std::string>());
+std::string saveSettings(UiState& state, const json& a, ScriptContext& context) {
+  state.status = context.shown(saveSettingsFile(state, context.resolved(a.get<std::string>())));
   return state.status.rfind("saved", 0) == 0 ? "" : state.status;
 }
 
@@ -158,24 +275,27 @@ std::vector<ScriptActionSpec> makeTable() {
   using S = UiState;
   using C = ScriptContext;
   const auto text = [](const json& a) { return a.get<std::string>(); };
+  // Labels reach the terminal: control characters removed, bounded.
+  const auto label = [](const json& a) { return plainText(a.get<std::string>(), 200); };
   std::vector<ScriptActionSpec> table = {
       {"select_stage", kString, [=](S& s, const json& a, C&) { return s.selectStage(text(a)); },
        true},
       {"select_output", kString, [=](S& s, const json& a, C&) { return s.selectOutput(text(a)); },
        true},
       {"set", kObject, [](S& s, const json& a, C&) { return setParameters(s, a); }},
-      {"pick", kPair, [](S& s, const json& a, C&) { return pick(s, a); }},
-      {"select_ray", kCount,
+      {"pick", pair(-kMaxScriptCoordinate, kMaxScriptCoordinate),
+       [](S& s, const json& a, C&) { return pick(s, a); }},
+      {"select_ray", integer(0, 65535),
        [](S& s, const json& a, C&) {
          s.views.selectedRay = a.get<int>();
          return std::string();
        }},
-      {"wait", kCount,
+      {"wait", integer(0, 100000),
        [](S&, const json& a, C& c) {
          c.waitFrames = a.get<int>();
          return std::string();
        }},
-      {"export_view", checkExportView,
+      {"export_view", kExportView,
        [](S& s, const json& a, C& c) { return exportView(s, a, c); }},
       {"keep", kObject, [](S& s, const json& a, C& c) { return keepNumbers(s, a, c); }},
       {"annotate", kBool,
@@ -188,10 +308,10 @@ std::vector<ScriptActionSpec> makeTable() {
          c.crop = cropFromJson(a);
          return std::string();
        }},
-      {"export_all", kString, [](S& s, const json& a, C& c) { return exportAll(s, a, c); }},
-      {"screenshot", checkScreenshot,
+      {"export_all", kOutput, [](S& s, const json& a, C& c) { return exportAll(s, a, c); }},
+      {"screenshot", kScreenshot,
        [](S& s, const json& a, C& c) { return screenshot(s, a, c); }},
-      {"view", kCount,
+      {"view", integer(0, kMaxViews - 1),
        [](S& s, const json& a, C&) -> std::string {
          if (a.get<int>() >= kMaxViews) return "views are 0 (A), 1 (B), 2 (C) and 3 (D)";
          if (a.get<int>() >= s.views.shownViews())
@@ -225,17 +345,17 @@ std::vector<ScriptActionSpec> makeTable() {
          activeView(s).locked = a.get<bool>();
          return std::string();
        }},
-      {"eye_size", pairOr({"fit"}), [](S& s, const json& a, C&) { return eyeSize(s, a); }},
+      {"eye_size", pairOr(16, 8192, {"fit"}), [](S& s, const json& a, C&) { return eyeSize(s, a); }},
       {"scene", kString, [=](S& s, const json& a, C&) { return s.loadScene(text(a)); }},
       {"frame_scene", kBool, [](S& s, const json&, C&) { return frameLoadedScene(s); }},
       {"colormap", kString, [](S& s, const json& a, C&) { return colormap(s, a); }},
       {"channels", kString, [](S& s, const json& a, C&) { return channels(s, a); }},
-      {"level", kCount,
+      {"level", integer(0, 31),
        [](S& s, const json& a, C&) {
          activeView(s).settings.layer = a.get<int>();
          return std::string();
        }},
-      {"range", pairOr({"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); },
+      {"range", pairOr(-1e30, 1e30, {"autofit", "reset"}), [](S& s, const json& a, C&) { return range(s, a); },
        true},  // autofit applies when the view draws: the next action sees it
       {"overlay", kBool,
        [](S& s, const json& a, C&) {
@@ -243,20 +363,24 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        }},
       {"zoom", kZoom, [](S& s, const json& a, C&) { return zoomActiveView(s, a); }},
-      {"camera_orbit", kPair,
-       [](S& s, const json& a, C&) {
-         orbitCamera(s.session.scene.camera, glm::radians(a[0].get<float>()),
-                     glm::radians(a[1].get<float>()));
-         return std::string();
+      {"camera_orbit", pair(-kMaxScriptCoordinate, kMaxScriptCoordinate),
+       [](S& s, const json& a, C&) -> std::string {
+         Camera camera = s.session.scene.camera;
+         // Degrees reduced first: radians of 1e6 degrees in float would lose the angle.
+         orbitCamera(camera, float(glm::radians(std::fmod(a[0].get<double>(), 360.0))),
+                     float(glm::radians(std::fmod(a[1].get<double>(), 360.0))));
+         if (!finite(camera.position)) return "the orbit gives a non-finite camera; the camera is unchanged";
+         s.session.scene.camera = camera;
+         return "";
        }},
-      {"camera_dolly", kFactor,
+      {"camera_dolly", number(1e-3, 1e3),
        [](S& s, const json& a, C&) {
          dollyCamera(s.session.scene.camera, a.get<float>());
          return std::string();
        }},
       {"settings", kObject, [](S& s, const json& a, C&) { return applySettingsJson(s, a); }},
       {"load_settings", kString, [](S& s, const json& a, C&) { return loadSettings(s, a); }},
-      {"save_settings", kString, [](S& s, const json& a, C&) { return saveSettings(s, a); }},
+      {"save_settings", kOutput, [](S& s, const json& a, C& c) { return saveSettings(s, a, c); }},
       {"reload_shaders", kBool,
        [](S& s, const json&, C&) {
          s.reloadShaders();
@@ -275,7 +399,7 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"print_timing", kString,
        [=](S& s, const json& a, C&) {
-         printTiming(s, text(a));
+         printTiming(s, label(a));
          return std::string();
        }},
       {"print_frames", kString,
@@ -292,10 +416,10 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"print_layout", kString,
        [=](S&, const json& a, C&) {
-         printLayout(text(a));
+         printLayout(label(a));
          return std::string();
        }},
-      {"ui_scale", kFactor,
+      {"ui_scale", number(0, 1e3, true),
        [](S& s, const json& a, C&) -> std::string {
          if (!validUiScale(a.get<float>()))
            return "expected a UI scale in [" + std::to_string(kMinUiScale) + ", " + std::to_string(kMaxUiScale) + "]";
@@ -326,7 +450,7 @@ std::vector<ScriptActionSpec> makeTable() {
        true},
       {"print_counters", kString,
        [=](S& s, const json& a, C&) {
-         std::printf("counters %s:\n", text(a).c_str());
+         std::printf("counters %s:\n", label(a).c_str());
          if (s.session.frame)
            for (const auto& [name, value] : s.session.frame->counters)
              std::printf("  %s %.9g\n", name.c_str(), value);
@@ -335,13 +459,13 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"print_truth", kString,
        [=](S& s, const json& a, C&) {
-         std::printf("truth %s: %s\n", text(a).c_str(), liveTruthLine(s).c_str());
+         std::printf("truth %s: %s\n", label(a).c_str(), liveTruthLine(s).c_str());
          std::fflush(stdout);
          return std::string();
        }},
       {"print_pick", kString,
        [=](S& s, const json& a, C&) {
-         printPick(s, text(a));
+         printPick(s, label(a));
          return std::string();
        }},
       {"camera_moving", kBool,
@@ -356,13 +480,13 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        },
        true},
-      {"mouse", kPair,
+      {"mouse", pair(-kMaxScriptCoordinate, kMaxScriptCoordinate),
        [](S& s, const json& a, C&) {
          s.script.cursorRequest = glm::vec2(a[0].get<float>(), a[1].get<float>());
          return std::string();
        }},
-      {"drag", kObject, [](S& s, const json& a, C&) { return queueDrag(s, a); }},
-      {"wheel", kObject, [](S& s, const json& a, C&) { return queueWheel(s, a); }},
+      {"drag", checkDrag, [](S& s, const json& a, C&) { return queueDrag(s, a); }},
+      {"wheel", checkWheel, [](S& s, const json& a, C&) { return queueWheel(s, a); }},
       {"difference", kString,
        [=](S& s, const json& a, C&) { return setViewDifference(s, activeView(s), text(a)); }, true},
       {"thickness", kBool,
@@ -381,10 +505,11 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        }},
       {"show_ray", kBool, [](S& s, const json& a, C&) { return showRay(s, a); }},
-      {"lesson", kString, [](S& s, const json& a, C& c) { return startLesson(s, a, c); }, true},
-      {"say", kString, [](S& s, const json& a, C& c) { return say(s, a, c); }, true},
+      {"lesson", kText, [](S& s, const json& a, C& c) { return startLesson(s, a, c); }, true},
+      {"say", kText, [](S& s, const json& a, C& c) { return say(s, a, c); }, true},
       {"export_dir", checkExportDirName,
        [=](S&, const json& a, C& c) {
+         if (c.transaction) return std::string("export_dir must come before the lesson's first file");
          if (!c.exportOverridden)
            c.exportDirectory = (std::filesystem::path(kDefaultExportDirectory) / text(a)).string();
          return std::string();

@@ -4,11 +4,13 @@
 #pragma once
 #include <functional>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "figures/figure_sheet.h"
+#include "io/output_path.h"
 #include "window/panels/ui_export.h"
 
 class UiState;
@@ -30,9 +32,19 @@ struct ScriptContext {
   std::vector<std::string> said;
   std::vector<FigurePanel> panels;
   std::map<std::string, std::string> kept;  // "keep": numbers under names, for later texts
-  // A relative export / screenshot path inside the export directory, if there is one.
-  std::string resolved(const std::string& path) const;
+  // The output rule (io/output_path.h): with an export directory, paths are relative to it
+  // (absolute and ".." refused, InputError); a lesson's directory is one transaction,
+  // opened at its first file and committed by finishLesson (ui_lesson_export.h).
+  bool transactional = false;  // a lesson: the export directory is replaced as a whole
+  std::shared_ptr<DirectoryTransaction> transaction;
+  std::string resolved(const std::string& path);
+  // `text` with the transaction's temporary directory named as its target (messages).
+  std::string shown(const std::string& text) const;
 };
+
+// A lesson's export folder is recognised as one by this file, written last.
+inline constexpr const char* kLessonManifest = "lesson.md";
+// A path a script writes: checkScriptPath (io/output_path.h).
 
 using ScriptCheck = std::function<std::string(const nlohmann::json&)>;  // "" or what was expected
 using ScriptHandler =

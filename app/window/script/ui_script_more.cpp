@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "scene/scene_frame.h"
+#include "io/json_input.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_script_actions.h"
 #include "window/ui_graph.h"
@@ -14,6 +15,10 @@
 using nlohmann::json;
 
 namespace {
+
+// The lesson panel draws a text as one ImGui item: Dear ImGui's 16-bit vertex indices hold
+// about 16,000 glyphs per draw call, so a text (numbers filled in) stays far below that.
+constexpr size_t kMaxLessonText = 6000;
 
 // 1. Arguments of drag and wheel.
 bool readPoint(const json& value, glm::vec2& point) {
@@ -143,7 +148,9 @@ std::string showRay(UiState& state, const json& a) {
 
 // 5. Lessons: the title and each "say" for the lesson panel and stdout.
 std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
-  state.lesson.title = context.lessonTitle = a.get<std::string>();
+  // Texts from the file reach the terminal and the lesson panel: no control characters
+  // (an ESC or BEL would act on the terminal), bounded (io/json_input.h).
+  state.lesson.title = context.lessonTitle = plainText(a.get<std::string>(), 200);
   state.lesson.steps = context.says;
   std::printf("lesson: %s\n", state.lesson.title.c_str());
   std::fflush(stdout);
@@ -152,7 +159,7 @@ std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
 
 std::string say(UiState& state, const json& a, ScriptContext& context) {
   std::string problem;
-  state.lesson.text = fillNumbers(state, context, a.get<std::string>(), problem);
+  state.lesson.text = plainText(fillNumbers(state, context, a.get<std::string>(), problem), kMaxLessonText);
   if (!problem.empty()) return problem;
   context.said.push_back(state.lesson.text);
   state.lesson.step = ++context.saysSeen;

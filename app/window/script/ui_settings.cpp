@@ -7,7 +7,10 @@
 #include <optional>
 #include <sstream>
 
+#include "core/input_error.h"
 #include "io/image_export.h"
+#include "io/json_input.h"
+#include "io/output_path.h"
 #include "scene/scene_builtin.h"
 #include "window/script/ui_settings_views.h"
 #include "window/ui_state.h"
@@ -47,7 +50,7 @@ void onlyKeys(const json& object, const std::string& pointer, std::initializer_l
       known = known || key == allowed;
       valid += (valid.empty() ? "" : ", ") + std::string(allowed);
     }
-    if (!known) fail(pointer + "/" + key, "unknown key; valid: " + valid);
+    if (!known) fail(jsonPointer(pointer, key), "unknown key; valid: " + valid);
   }
 }
 
@@ -109,7 +112,7 @@ std::string applySettingsJson(UiState& state, const json& root) {
     if (root.contains("parameters")) {
       if (!root["parameters"].is_object()) fail("/parameters", "expected an object");
       for (const auto& [key, value] : root["parameters"].items()) {
-        const std::string pointer = "/parameters/" + key;
+        const std::string pointer = jsonPointer("/parameters", key);
         Param* declared = nullptr;
         try {
           declared = &state.session.pipeline.param(key);
@@ -190,10 +193,25 @@ std::string applySettingsJson(UiState& state, const json& root) {
   }
 }
 
-// 3. Files (written atomically, like every export).
+// 3. Files (written atomically, like every export). An existing file is replaced only when
+// it is a settings file itself (it holds "penumbra_settings"): the output rule
+// (io/output_path.h) for a single file a user may have named by mistake.
 std::string saveSettingsFile(const UiState& state, const std::string& path) {
   try {
     const std::filesystem::path target(path);
+    checkOutputFile(target, "settings file");
+    std::error_code error;
+    if (std::filesystem::exists(target, error)) {
+      bool settings = false;
+      try {
+        settings = readJsonFile(path).contains("penumbra_settings");
+      } catch (const std::exception&) {
+      }
+      if (!settings)
+        return "saving settings refused: '" + printable(path, 200) +
+               "' exists and is not a penumbra settings file (no \"penumbra_settings\"); "
+               "it is left alone: choose another name";
+    }
     if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
     writeTextFile(target, settingsJson(state).dump(2) + "\n");
     return "saved settings to " + std::filesystem::absolute(target).string();
@@ -202,18 +220,18 @@ std::string saveSettingsFile(const UiState& state, const std::string& path) {
   }
 }
 
+// The reader rule every JSON input shares (io/json_input.h): a regular file (a FIFO is
+// refused, never waited on), bounded depth, size and strings, no repeated key.
 std::string loadSettingsFile(UiState& state, const std::string& path, bool& ok) {
   ok = false;
-  std::ifstream in(path);
-  if (!in) return "cannot read settings file " + path;
   json root;
   try {
-    root = json::parse(in);
-  } catch (const json::parse_error& error) {
-    return path + ": not valid JSON: " + error.what();
+    root = readJsonFile(path);
+  } catch (const InputError& error) {
+    return std::string("settings file ") + error.what();
   }
   if (std::string problem = applySettingsJson(state, root); !problem.empty())
-    return path + ": " + problem;
+    return printable(path, 200) + ": " + problem;
   ok = true;
   return "loaded settings from " + std::filesystem::absolute(path).string();
 }

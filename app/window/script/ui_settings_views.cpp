@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/input_error.h"
+#include "io/json_input.h"
 #include "window/ui_scale.h"
 #include "window/ui_state.h"
 
@@ -27,7 +29,7 @@ void onlyKeys(const json& object, const std::string& pointer, const std::vector<
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
       std::string valid;
       for (const std::string& allowed : keys) valid += (valid.empty() ? "" : ", ") + allowed;
-      fail(pointer + "/" + key, "unknown key; valid: " + valid);
+      fail(jsonPointer(pointer, key), "unknown key; valid: " + valid);
     }
 }
 
@@ -65,7 +67,7 @@ PanelSettings readPanel(const UiState& state, const json& p, const std::string& 
     if (!p[key].is_string()) fail(at + "/" + key, "expected \"stage.output\"");
     const std::string name = p[key].get<std::string>();
     if (!name.empty() && !state.session.outputOf(name))
-      fail(at + "/" + key, "unknown output '" + name + "'; valid: " + [&] {
+      fail(at + "/" + key, "unknown output '" + printable(name) + "'; valid: " + [&] {
         std::string all;
         for (const std::string& k : state.session.outputKeys()) all += (all.empty() ? "" : ", ") + k;
         return all;
