@@ -47,6 +47,7 @@ int runCommand(const std::string& command, const std::function<int()>& run) {
     return 2;
   } catch (const RunCancelled& error) {
     std::fprintf(stderr, "%sstopped: %s; nothing was written\n", prefix.c_str(), error.what());
+    return 1;
   } catch (const WriteError& error) {  // the file system said no (io/output_path.h)
     std::fprintf(stderr, "%s%s\n", prefix.c_str(), error.what());
     return 1;

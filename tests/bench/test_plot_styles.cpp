@@ -26,8 +26,9 @@ TEST(PlotStyles, FirstFortySeriesAreDistinctAndNoTwoLookAlike) {
   // two markers of one shape differ clearly in colour: orange and vermillion diamonds did not.
   for (int i = 0; i < 8; ++i)
     for (int j = i + 1; j < 8; ++j)
-      if (seriesStyle(i).shape == seriesStyle(j).shape)
+      if (seriesStyle(i).shape == seriesStyle(j).shape) {
         EXPECT_GT(colourDistance(seriesStyle(i), seriesStyle(j)), 0.45) << i << " and " << j;
+      }
   // Past eight, a repeated colour comes with another shape.
   for (int i = 0; i < 8; ++i) EXPECT_NE(seriesStyle(i).shape, seriesStyle(i + 8).shape) << i;
 }

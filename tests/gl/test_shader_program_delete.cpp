@@ -38,7 +38,9 @@ TEST(ShaderProgramDelete, CurrentProgramIsUnboundBeforeItIsDeleted) {
     }
     GLint current = -1;
     glGetIntegerv(GL_CURRENT_PROGRAM, &current);
-    if (!reload) EXPECT_EQ(current, 0);
+    if (!reload) {
+      EXPECT_EQ(current, 0);
+    }
     imgui.use();                    // ImGui's renderer: its own program for the draw lists,
     glUseProgram(GLuint(current));  // then the saved one back
   }
