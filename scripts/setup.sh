@@ -11,6 +11,7 @@ packages=(
   libcairo2-dev  # the bench report's charts as PNG, SVG and PDF (app/bench/plot.cpp)
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
   dieharder  # the real DIEHARD battery: penumbra hash-stats --dieharder (docs/hash_stats.md)
+  glslang-tools  # glslangValidator: every shader variant checked by a second compiler (tests/gl)
 )
 if [ "${1:-}" = fuzz ]; then packages+=(clang libfuzzer-14-dev llvm-14); fi
 missing=()

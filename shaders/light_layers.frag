@@ -3,7 +3,6 @@
 // farthest (far layer, GREATER) surface along each light ray. In the far pass the fragments
 // that pass the test write it as colour too (the far layer's target; issue 14), so the
 // colour target ends with the farthest depth as the depth buffer does.
-#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/frame.glsl"
 #include "shared/light_layers_layout.h"
 layout(location = 0) in vec3 wsPosition;

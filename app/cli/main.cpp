@@ -19,6 +19,7 @@
 #include "cli/hash_command.h"
 #include "cli/hash_stats_command.h"
 #include "gl/hash_kind.h"
+#include "gl/shader_dump.h"
 #include "cli/trace_command.h"
 #include "core/input_error.h"
 #include "core/pipeline.h"
@@ -235,6 +236,12 @@ int main(int argc, char** argv) {
       "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
                "penumbra graph | dot -Tsvg > graph.svg");
 
+  CLI::App* shadersCommand = app.add_subcommand(
+      "shaders", "write the final GLSL source of every program variant the pipeline can build "
+                 "(one file per shader stage, and programs.txt), for checking with any compiler");
+  std::string shaderDumpDirectory;
+  shadersCommand->add_option("--dump", shaderDumpDirectory, "directory to write to")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -250,6 +257,12 @@ int main(int argc, char** argv) {
   return runCommand(command, [&] {
     if (*graphCommand) {
       std::fputs(Pipeline().dot().c_str(), stdout);
+      return 0;
+    }
+    if (*shadersCommand) {
+      const int programs = dumpShaderSources(shaderDumpDirectory);
+      std::printf("%d programs written to %s (programs.txt lists them)\n", programs,
+                  shaderDumpDirectory.c_str());
       return 0;
     }
     if (*exportCommand) return runExport(exporting);

@@ -6,7 +6,9 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace {
@@ -152,6 +154,14 @@ bool GlContext::isCoreProfile() const {
   return (mask & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
 }
 
+namespace {
+long gErrorCount = 0;
+void (*gErrorHook)(const char*) = nullptr;
+}  // namespace
+
+long glErrorCount() { return gErrorCount; }
+void setGlErrorHook(void (*hook)(const char* message)) { gErrorHook = hook; }
+
 void installGlDebugLog() {
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
@@ -164,6 +174,15 @@ void installGlDebugLog() {
         std::fprintf(stderr, "[gl %s%s] %s\n",
                      severity == GL_DEBUG_SEVERITY_HIGH ? "high" : "medium",
                      type == GL_DEBUG_TYPE_ERROR ? " error" : "", message);
+        if (type != GL_DEBUG_TYPE_ERROR) return;
+        ++gErrorCount;
+        if (gErrorHook) gErrorHook(message);
+        const char* fatal = std::getenv("PENUMBRA_GL_ERRORS_FATAL");
+        if (fatal && std::string(fatal) == "1") {
+          std::fprintf(stderr, "penumbra: GL error with PENUMBRA_GL_ERRORS_FATAL=1: exiting\n");
+          std::fflush(stderr);
+          std::_Exit(3);
+        }
       },
       nullptr);
 }

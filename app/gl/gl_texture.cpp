@@ -49,9 +49,8 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
   glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void bindImageForReading(GLuint unit, const GlTexture& texture) {
-  glBindImageTexture(unit, texture.id(), 0, texture.isArray() ? GL_TRUE : GL_FALSE, 0,
-                     GL_READ_ONLY, texture.internalFormat());
+void bindTextureForReading(GLuint unit, const GlTexture& texture) {
+  glBindTextureUnit(unit, texture.id());
 }
 
 // Appends only: `"x" + std::to_string(...)` (a literal plus a temporary string) makes GCC 12

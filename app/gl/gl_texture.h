@@ -48,10 +48,9 @@ private:
   int width_ = 0, height_ = 0, layers_ = 0;
 };
 
-// Binds level 0 of `texture` (all its layers) to image unit `unit` for imageLoad, in its own
-// format. Hot passes read through images where they can: on llvmpipe an imageLoad costs a
-// third of a texelFetch (bench/llvmpipe-reads). Depth textures have no image format.
-void bindImageForReading(GLuint unit, const GlTexture& texture);
+// Binds `texture` to texture unit `unit`, where a shader reads it with texelFetch (every
+// texture is NEAREST and has one level, so it is complete and a fetch returns the texel).
+void bindTextureForReading(GLuint unit, const GlTexture& texture);
 
 // Framebuffers and buffers are created on first use, so stages can be declared (for --set,
 // help, tests of parameters) before a GL context exists.

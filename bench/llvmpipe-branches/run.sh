@@ -10,7 +10,7 @@
 #   sh bench/llvmpipe-branches/run.sh && python3 bench/trace-records/summary.py bench/llvmpipe-branches
 BEFORE=${BEFORE:-e6644b0} AFTER=${AFTER:-HEAD}
 OUT=${OUT:-bench/llvmpipe-branches}
-. bench/ab_shaders.sh
+. scripts/ab_shaders.sh
 cube() {  # ab_shaders.sh's, with the min-max mipmap at map 512 as a third side
   PENUMBRA_SHADER_DIR="$TMP/$1" $P bench-compare --scene cube --width 640 --height 480 --frames 8 --warmup 1 \
     --set trace.search=hierarchical --set trace.rays=2 --set trace.deferred=true --set light.layers=two \

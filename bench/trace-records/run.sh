@@ -10,7 +10,7 @@
 #   sh bench/trace-records/run.sh
 BEFORE=f53a80a AFTER=cf71058
 OUT=${OUT:-bench/trace-records}
-. bench/ab_shaders.sh
+. scripts/ab_shaders.sh
 # Ablations of the `after` shaders (timing only; their images are wrong on purpose):
 #  no_search: every searched ray gets a constant answer instead of its search;
 #  no_early_outs: as no_search, and the inside and region early outs are skipped too;

@@ -11,5 +11,5 @@
 #   sh bench/trace-variants/run.sh && python3 bench/trace-records/summary.py bench/trace-variants
 BEFORE=cf71058 AFTER=203c9b2
 OUT=${OUT:-bench/trace-variants}
-. bench/ab_shaders.sh
+. scripts/ab_shaders.sh
 before_after_rounds

@@ -316,9 +316,8 @@ uvec4 xxhash32Rand(uvec4 seed, uint key) {
 
 // The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h). A program compiled with
 // HASH_KIND defined (the trace, PCSS, the hash view: hashSpecialization() in
-// app/gl/hash_kind.h) has a constant kind, so the compiler keeps its case alone: with the
-// kind a uniform, llvmpipe ran every case of the switch for every ray (cube 640x480, map 512:
-// the trace took 0.81-0.88x as long without them; bench/llvmpipe-reads/README.md).
+// app/gl/hash_kind.h) has a constant kind, so the compiler keeps its case alone and the
+// program holds the one hash it uses.
 uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
 #ifdef HASH_KIND
   hashKind = HASH_KIND;

@@ -217,10 +217,10 @@ public:
     glBindTextureUnit(TRACE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(TRACE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
     glBindTextureUnit(TRACE_NEAR_UNIT, nearLayer.id());
-    bindImageForReading(TRACE_FAR_IMAGE, frame.input(*this, "far"));
-    bindImageForReading(minmax ? TRACE_MINMAX_IMAGE : TRACE_LEVELS_IMAGE, levels);
-    bindImageForReading(TRACE_MASK_IMAGE, frame.input(*this, "mask"));
-    bindImageForReading(TRACE_ZRANGE_IMAGE, frame.input(*this, "zRange"));
+    bindTextureForReading(TRACE_FAR_UNIT, frame.input(*this, "far"));
+    bindTextureForReading(minmax ? TRACE_MINMAX_UNIT : TRACE_LEVELS_UNIT, levels);
+    bindTextureForReading(TRACE_MASK_UNIT, frame.input(*this, "mask"));
+    bindTextureForReading(TRACE_ZRANGE_UNIT, frame.input(*this, "zRange"));
 
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
@@ -242,6 +242,17 @@ public:
       frame.counters["trace." + std::string(names[i])] = totals[i];
     frame.counters["trace.fetchesPerRay"] =
         totals[TOTAL_RAYS] ? double(totals[TOTAL_FETCHES]) / totals[TOTAL_RAYS] : 0.0;
+    // The fetches split (thesis §3.7): those of the early-out tests (the end point inside a
+    // solid, the ray's region empty), per ray set up; those of the searches, per ray
+    // searched; the two add up to trace.fetches.
+    const std::uint32_t earlyOutFetches = totals[TOTAL_EARLY_OUT_FETCHES];
+    const std::uint32_t searchFetches = totals[TOTAL_FETCHES] - earlyOutFetches;
+    frame.counters["trace.fetchesEarlyOuts"] = earlyOutFetches;
+    frame.counters["trace.fetchesSearches"] = searchFetches;
+    frame.counters["trace.earlyOutFetchesPerRay"] =
+        totals[TOTAL_RAYS] ? double(earlyOutFetches) / totals[TOTAL_RAYS] : 0.0;
+    frame.counters["trace.searchFetchesPerSearchedRay"] =
+        totals[TOTAL_RAYS_SEARCHED] ? double(searchFetches) / totals[TOTAL_RAYS_SEARCHED] : 0.0;
     readRecords(frame);
   }
 
@@ -256,7 +267,7 @@ private:
   // cost: null where nobody asked for it (the pass is compiled without its store).
   void runDeferred(Frame& frame, GlTexture& visibility, GlTexture* cost, ShaderProgram& pass,
                    ShaderProgram* recordingPass) {
-    const size_t recordBytes = 4 * sizeof(std::uint32_t);  // a uvec4 per pixel
+    const size_t recordBytes = TRACE_RECORD_UVEC4S * 4 * sizeof(std::uint32_t);
     const size_t partialsBytes = size_t(frame.eyeWidth) * frame.eyeHeight * recordBytes;
     if (partialsBytes != partialsBytes_) partialsBuffer_.upload(nullptr, partialsBytes);
     partialsBytes_ = partialsBytes;
@@ -271,7 +282,7 @@ private:
       records = dispatchListed(frame, visibility, cost);
     } else {
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_ALL);
-      dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
+      dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults | kBufferResults, kRowsPerBand);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       records = std::uint32_t(frame.eyeWidth) * std::uint32_t(frame.eyeHeight);
     }
@@ -279,12 +290,12 @@ private:
     glUniform1ui(TRACE_TOTALS_RECORDS_LOCATION, records);
     const std::uint32_t perGroup = 64 * TRACE_TOTALS_RECORDS_PER_INVOCATION;
     if (records > 0) glDispatchCompute((records + perGroup - 1) / perGroup, 1, 1);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kBufferResults);
     if (recordingPass) {
       recordingPass->use();
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
       glDispatchCompute(1, 1, 1);
-      glMemoryBarrier(GL_ALL_BARRIER_BITS);
+      glMemoryBarrier(kImageResults | kBufferResults);
     }
   }
 
@@ -304,7 +315,7 @@ private:
       glUniform1i(ROW_OFFSET_LOCATION, first);
       glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
     }
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kImageResults | kBufferResults);
     return listed;
   }
 
@@ -331,7 +342,7 @@ private:
     pass.use();
     frame.gpuScene.draw(/*includeReceivers=*/true);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kBufferResults);  // the totals and records; the images are framebuffer writes
   }
 
   void readRecords(Frame& frame) {
@@ -358,10 +369,25 @@ private:
            "\n#define TRACE_COST " + (cost ? "1" : "0") + "\n" +
            hashSpecialization(frame.light.hashKind);
   }
-  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
+  // Every text specialization() can return.
+  static std::vector<std::string> specializations() {
+    auto values = [](const char* name, std::vector<int> values) {
+      std::vector<std::string> lines;
+      for (int value : values)
+        lines.push_back(std::string(name) + " " + std::to_string(value) + "\n");
+      return lines;
+    };
+    return defineCombinations(
+        {values("#define TRACE_HIERARCHY", {HIERARCHY_NBUFFER, HIERARCHY_MINMAX}),
+         values("#define TRACE_SEARCH", {SEARCH_LINEAR, SEARCH_LINEAR_BINARY, SEARCH_HIERARCHICAL}),
+         values("#define TRACE_LAYERS", {1, 2, 3}), values("#define TRACE_RECORDING", {0, 1}),
+         values("#define TRACE_COST", {0, 1}), hashSpecializations()});
+  }
+  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}, specializations()};
   ShaderProgram totalsProgram_{{{GL_COMPUTE_SHADER, "trace_totals.comp"}}};
   ShaderVariants forward_{
-      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
+      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
+      specializations()};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   GlBuffer partialsBuffer_;  // the deferred pass's per-pixel counts (trace_layout.h)
   size_t partialsBytes_ = 0;

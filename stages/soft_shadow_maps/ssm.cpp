@@ -155,7 +155,7 @@ public:
     glBindTextureUnit(SSM_PROJECT_SOFT_SHADOW_MAP_UNIT, softShadowMap.id());
     glBindImageTexture(SSM_PROJECT_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0,
                        GL_WRITE_ONLY, GL_R32F);
-    dispatchRows(frame.eyeWidth, frame.eyeHeight);
+    dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults | kBufferResults);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glGetNamedBufferSubData(counterBuffer_.id(), 0, sizeof counters, &counters);
     frame.counters["ssm.clampedPixels"] = counters.clampedPixels;
