@@ -12,8 +12,8 @@ layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;
 };
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
-  uint listCount;  // = penumbra + umbra
-  uint listPadding[3];
+  uint listCount;      // = penumbra + umbra
+  uint traceGroups[3];  // the trace's dispatch: groups covering the list, 1, 1
   uint tracedPixels[];
 };
 shared uint groupCounts[CLASSIFY_CLASS_COUNT];  // this workgroup's pixels per class
@@ -40,6 +40,9 @@ void main() {
     uint traced = groupCounts[CLASS_PENUMBRA] + groupCounts[CLASS_UMBRA];
     nextSlot[0] = traced != 0u ? atomicAdd(listCount, traced) : 0u;
     nextSlot[1] = nextSlot[0] + groupCounts[CLASS_PENUMBRA];
+    // The trace's groups reach at least past this group's last slot.
+    uint groupSize = uint(CLASSIFY_TRACE_GROUP);
+    if (traced != 0u) atomicMax(traceGroups[0], (nextSlot[0] + traced + groupSize - 1u) / groupSize);
   }
   memoryBarrierShared();
   barrier();

@@ -10,14 +10,15 @@ layout(binding = TRACE_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibil
 layout(binding = TRACE_COST_IMAGE, rgba32f) uniform writeonly image2D costImage;
 layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
   uint listCount;
-  uint listPadding[3];
+  uint traceGroups[3];
   uint tracedPixels[];
 };
 layout(std430, binding = TRACE_PARTIALS_BINDING) writeonly buffer TracePartials {
   uvec4 partials[];  // TRACE_RECORD_UVEC4S per pixel (trace_layout.h)
 };
 // TRACE_PIXELS_ALL: every pixel (rows from uRowOffset); _LISTED: the pixels classify listed
-// (penumbra, umbra; uRowOffset = the band's first group), everything else was cleared to
+// (penumbra, umbra; one invocation per listed pixel, in the groups classify counted for the
+// indirect dispatch), everything else was cleared to
 // visibility 1 beforehand; _RECORDED: the recorded pixel alone, with its steps (the
 // variant compiled with TRACE_RECORDING 1; the others compile the records out).
 layout(location = TRACE_PIXELS_LOCATION) uniform int uPixels;
@@ -34,7 +35,7 @@ ivec2 tracedPixel(out uint record) {
     bool inImage = all(lessThan(uvec2(trace.record.xy), frame.sizes.xy));
     return gl_LocalInvocationIndex == 0u && inImage ? trace.record.xy : ivec2(-1);
   }
-  record = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
+  record = gl_WorkGroupID.x * uint(CLASSIFY_TRACE_GROUP) + gl_LocalInvocationIndex;
   if (record >= listCount) return ivec2(-1);
   uint xy = tracedPixels[record];
   return ivec2(int(xy & 0xFFFFu), int(xy >> 16));

@@ -2,16 +2,22 @@
 // per-pixel records trace.comp wrote. Each invocation adds up
 // TRACE_TOTALS_RECORDS_PER_INVOCATION records and makes one atomicAdd per total.
 #include "shared/trace_layout.h"
+#include "shared/classify_layout.h"
 layout(local_size_x = 64) in;
 layout(std430, binding = TRACE_PARTIALS_BINDING) readonly buffer TracePartials {
   uvec4 partials[];  // TRACE_RECORD_UVEC4S per pixel
 };
 layout(std430, binding = TRACE_TOTALS_BINDING) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
+layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
+  uint listCount;  // the records the listed pixels wrote (classify_layout.h)
+};
 layout(location = TRACE_TOTALS_RECORDS_LOCATION) uniform uint uRecords;
+layout(location = TRACE_TOTALS_FROM_LIST_LOCATION) uniform bool uFromList;
 
 void main() {
   uint first = gl_GlobalInvocationID.x * uint(TRACE_TOTALS_RECORDS_PER_INVOCATION);
-  uint end = min(first + uint(TRACE_TOTALS_RECORDS_PER_INVOCATION), uRecords);
+  uint records = uFromList ? min(uRecords, listCount) : uRecords;
+  uint end = min(first + uint(TRACE_TOTALS_RECORDS_PER_INVOCATION), records);
   if (first >= end) return;
   // rays, searched, early backface, early inside, early region; fetches (all, early outs'),
   // iterations.

@@ -21,9 +21,13 @@ struct ClassifyCounts {
   uint pixels[8];  // indexed by CLASS_*; 5..7 unused (padding to 32 bytes)
 };
 
-// The pixels that still need rays (penumbra and umbra): a std430 buffer of uint count, 3
-// uints of padding, then uint pixels[] packed x | y << 16; written by classify, read by
-// trace, so the trace pass runs over them alone (thesis Fig 3.8: "full calculations are
-// only performed in blue areas"). Frame buffer name "classify.tracedPixels".
+// The pixels that still need rays (penumbra and umbra): a std430 buffer of uint count, the
+// trace's indirect dispatch command (3 uints: groups of CLASSIFY_TRACE_GROUP pixels, 1, 1,
+// at byte CLASSIFY_LIST_DISPATCH_OFFSET), then uint pixels[] packed x | y << 16; written by
+// classify, read by trace, so the trace pass runs over them alone (thesis Fig 3.8: "full
+// calculations are only performed in blue areas"), dispatched by the GPU's own count.
+// Frame buffer name "classify.tracedPixels".
 #define CLASSIFY_LIST_BINDING 3
 #define CLASSIFY_LIST_HEADER_BYTES 16
+#define CLASSIFY_LIST_DISPATCH_OFFSET 4
+#define CLASSIFY_TRACE_GROUP 64  // trace.comp's invocations per group

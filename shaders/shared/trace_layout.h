@@ -16,7 +16,8 @@
 #define TRACE_PARTIALS_BINDING 2  // storage: TRACE_RECORD_UVEC4S uvec4 per pixel
 #define TRACE_RECORD_UVEC4S 2
 #define TRACE_COUNT_BITS 10       // > 2 log2(the most rays per side)
-#define TRACE_TOTALS_RECORDS_LOCATION 0      // trace_totals.comp: records to add up
+#define TRACE_TOTALS_RECORDS_LOCATION 0      // trace_totals.comp: records to add up at most
+#define TRACE_TOTALS_FROM_LIST_LOCATION 1    // 1: as many as classify listed
 #define TRACE_TOTALS_RECORDS_PER_INVOCATION 64
 // (storage CLASSIFY_LIST_BINDING: the pixel list of classify_layout.h)
 // Texture units (read with texelFetch) and image units (written) of the trace:

@@ -5,6 +5,7 @@
 // classify.minmax_cells aligned cells per axis covering it, 4 by default: conservative,
 // issue 14), so a frame builds only one. The
 // bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
+#include <cstring>
 #include <cstddef>
 
 #include "core/frame.h"
@@ -130,20 +131,25 @@ public:
     GLint64 currentBytes = 0;
     glGetNamedBufferParameteri64v(tracedPixels.id(), GL_BUFFER_SIZE, &currentBytes);
     if (size_t(currentBytes) != listBytes) tracedPixels.upload(nullptr, listBytes);
-    const std::uint32_t zeroCount = 0;
-    glNamedBufferSubData(tracedPixels.id(), 0, sizeof zeroCount, &zeroCount);
+    // The header: no pixels yet, and the trace's dispatch (0, 1, 1) groups.
+    const std::uint32_t header[4] = {0, 0, 1, 1};
+    static_assert(sizeof header == CLASSIFY_LIST_HEADER_BYTES && CLASSIFY_LIST_DISPATCH_OFFSET == 4);
+    glNamedBufferSubData(tracedPixels.id(), 0, sizeof header, header);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
     listProgram_.use();
     bindTextureForReading(CLASSIFY_MASK_UNIT, mask);
     dispatchRows(w, h, kBufferResults | kCommandResults);
 
-    gpu::ClassifyCounts counts{};
-    glGetNamedBufferSubData(counts_.id(), 0, sizeof counts, &counts);
-    frame.counters["classify.lit"] = counts.pixels[CLASS_LIT];
-    frame.counters["classify.penumbra"] = counts.pixels[CLASS_PENUMBRA];
-    frame.counters["classify.umbra"] = counts.pixels[CLASS_UMBRA];
-    frame.counters["classify.outside"] = counts.pixels[CLASS_OUTSIDE];
-    frame.counters["classify.background"] = counts.pixels[CLASS_BACKGROUND];
+    frame.readAfterFrame(counts_, 0, sizeof(gpu::ClassifyCounts),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::ClassifyCounts counts{};
+                           std::memcpy(&counts, bytes.data(), sizeof counts);
+                           frame.counters["classify.lit"] = counts.pixels[CLASS_LIT];
+                           frame.counters["classify.penumbra"] = counts.pixels[CLASS_PENUMBRA];
+                           frame.counters["classify.umbra"] = counts.pixels[CLASS_UMBRA];
+                           frame.counters["classify.outside"] = counts.pixels[CLASS_OUTSIDE];
+                           frame.counters["classify.background"] = counts.pixels[CLASS_BACKGROUND];
+                         });
   }
 
 private:

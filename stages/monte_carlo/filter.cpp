@@ -2,6 +2,7 @@
 // trace's unfiltered visibility, horizontal then vertical; by default only over the tiles
 // where it can change a value (issue 14; shaders/filter_tiles.comp says why that is exact,
 // whatever the weights: a window of equal values averages to that value).
+#include <cstring>
 #include <cmath>
 #include <cstddef>
 
@@ -142,10 +143,13 @@ public:
       frame.counters["filter.pixels"] = double(w) * h;
       return;
     }
-    gpu::FilterTilesHeader listed{};
-    glGetNamedBufferSubData(frame.outputBuffer(*this, "tiles").id(), 0, sizeof listed, &listed);
-    frame.counters["filter.tiles"] = listed.groups[0];
-    frame.counters["filter.pixels"] = listed.pixels;
+    frame.readAfterFrame(frame.outputBuffer(*this, "tiles"), 0, sizeof(gpu::FilterTilesHeader),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::FilterTilesHeader listed{};
+                           std::memcpy(&listed, bytes.data(), sizeof listed);
+                           frame.counters["filter.tiles"] = listed.groups[0];
+                           frame.counters["filter.pixels"] = listed.pixels;
+                         });
   }
 
 private:

@@ -1,6 +1,7 @@
 // Stage `trace` (thesis §3-3.7, Algorithms 1 and 2): n x n rays per receiver through the
 // light's depth layers, in the deferred form (a compute pass over the G-buffer) or the
 // forward form (every rasterized fragment traces; thesis Table 4.1).
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 
@@ -232,10 +233,18 @@ public:
                  forward_[specialization(params, frame, recording, cost)]);
     }
 
-    // 5. Totals and the recorded steps.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::uint32_t totals[TOTAL_COUNT];
-    glGetNamedBufferSubData(totalsBuffer_.id(), 0, sizeof totals, totals);
+    // 5. Totals and the recorded steps, read after the frame (Frame::readAfterFrame).
+    frame.readAfterFrame(totalsBuffer_, 0, TOTAL_COUNT * sizeof(std::uint32_t),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           std::uint32_t totals[TOTAL_COUNT];
+                           std::memcpy(totals, bytes.data(), sizeof totals);
+                           addTotals(totals, frame);
+                         });
+    readRecords(frame);
+  }
+
+private:
+  static void addTotals(const std::uint32_t* totals, Frame& frame) {
     const char* names[] = {"rays", "raysSearched", "fetches", "iterations", "earlyOutBackface",
                            "earlyOutInside", "earlyOutRegion", "iterationCapReached"};
     for (int i = 0; i <= TOTAL_ITERATION_CAP; ++i)
@@ -253,8 +262,8 @@ public:
         totals[TOTAL_RAYS] ? double(earlyOutFetches) / totals[TOTAL_RAYS] : 0.0;
     frame.counters["trace.searchFetchesPerSearchedRay"] =
         totals[TOTAL_RAYS_SEARCHED] ? double(searchFetches) / totals[TOTAL_RAYS_SEARCHED] : 0.0;
-    readRecords(frame);
   }
+
 
 private:
   static constexpr int kRecordCapacity = 8192;
@@ -288,6 +297,7 @@ private:
     }
     totalsProgram_.use();
     glUniform1ui(TRACE_TOTALS_RECORDS_LOCATION, records);
+    glUniform1i(TRACE_TOTALS_FROM_LIST_LOCATION, param("use_classification").asBool() ? 1 : 0);
     const std::uint32_t perGroup = 64 * TRACE_TOTALS_RECORDS_PER_INVOCATION;
     if (records > 0) glDispatchCompute((records + perGroup - 1) / perGroup, 1, 1);
     glMemoryBarrier(kBufferResults);
@@ -299,7 +309,8 @@ private:
     }
   }
 
-  // Returns the number of listed pixels.
+  // One invocation per listed pixel, in as many groups as classify counted (an indirect
+  // dispatch: the CPU never waits for the count). Returns the most records it can write.
   std::uint32_t dispatchListed(Frame& frame, GlTexture& visibility, GlTexture* cost) {
     const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
     glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
@@ -307,16 +318,14 @@ private:
     // The list's header holds its length (penumbra + umbra pixels; classify_layout.h).
     const GlBuffer& tracedPixels = frame.inputBuffer(*this, "tracedPixels");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
-    std::uint32_t listed = 0;
-    glGetNamedBufferSubData(tracedPixels.id(), 0, sizeof listed, &listed);
     glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_LISTED);
-    const int groups = int((listed + 63) / 64), groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
-    for (int first = 0; first < groups; first += groupsPerBand) {
-      glUniform1i(ROW_OFFSET_LOCATION, first);
-      glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
-    }
+    glUniform1i(ROW_OFFSET_LOCATION, 0);
+    static_assert(CLASSIFY_TRACE_GROUP == 64);  // trace.comp's 8 x 8 groups
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, tracedPixels.id());
+    glDispatchComputeIndirect(CLASSIFY_LIST_DISPATCH_OFFSET);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(kImageResults | kBufferResults);
-    return listed;
+    return std::uint32_t(frame.eyeWidth) * std::uint32_t(frame.eyeHeight);
   }
 
   // Every fragment traces its rays; with a recorded pixel, `pass` is the variant with step
@@ -348,13 +357,17 @@ private:
   void readRecords(Frame& frame) {
     frame.traceSteps.clear();
     if (param("record_x").asInt() < 0 || param("record_y").asInt() < 0) return;
-    std::uint32_t header[4];
-    glGetNamedBufferSubData(recordsBuffer_.id(), 0, sizeof header, header);
-    const std::uint32_t count = std::min<std::uint32_t>(header[0], kRecordCapacity);
-    frame.traceSteps.resize(count);
-    glGetNamedBufferSubData(recordsBuffer_.id(), 16, GLsizeiptr(count * sizeof(gpu::TraceStep)),
-                            frame.traceSteps.data());
-    frame.counters["trace.recordedSteps"] = header[0];
+    frame.readAfterFrame(recordsBuffer_, 0, 16 + kRecordCapacity * sizeof(gpu::TraceStep),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           std::uint32_t header[4];
+                           std::memcpy(header, bytes.data(), sizeof header);
+                           const std::uint32_t count =
+                               std::min<std::uint32_t>(header[0], kRecordCapacity);
+                           frame.traceSteps.resize(count);
+                           std::memcpy(frame.traceSteps.data(), bytes.data() + 16,
+                                       count * sizeof(gpu::TraceStep));
+                           frame.counters["trace.recordedSteps"] = header[0];
+                         });
   }
 
   // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy,

@@ -10,6 +10,7 @@
 //   6. the soft shadow map projected onto the scene: visibility = 1 - occlusion, clamped.
 // The maps share the light's frustum (Eq 3.1 of the thesis): aligned with the rectangular
 // light and of its aspect ratio, seen from the projection point behind the light centre.
+#include <cstring>
 #include <cmath>
 
 #include "core/frame.h"
@@ -156,10 +157,13 @@ public:
     glBindImageTexture(SSM_PROJECT_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0,
                        GL_WRITE_ONLY, GL_R32F);
     dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults | kBufferResults);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    glGetNamedBufferSubData(counterBuffer_.id(), 0, sizeof counters, &counters);
-    frame.counters["ssm.clampedPixels"] = counters.clampedPixels;
-    frame.counters["ssm.occluderPixels"] = counters.occluderPixels;
+    frame.readAfterFrame(counterBuffer_, 0, sizeof counters,
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::SsmCounters read{};
+                           std::memcpy(&read, bytes.data(), sizeof read);
+                           frame.counters["ssm.clampedPixels"] = read.clampedPixels;
+                           frame.counters["ssm.occluderPixels"] = read.occluderPixels;
+                         });
 
     // The picked views.
     GlTexture& pickedLight = frame.output(*this, "pickedLight", kPickedLightSize, kPickedLightSize);
