@@ -1,7 +1,7 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): per eye pixel, bounds on the
 // occluder depths that any ray from the light to the receiver can meet, refined by
 // iterating Eq 3.3 over the N-buffer (exact bounds) or the min-max mipmap (conservative
-// bounds, issue 14), and the class they imply:
+// bounds), and the class they imply:
 //   lit      receiver depth <= zNearMin: nothing can block any ray. No bias is subtracted:
 //            a ray's end moves towards the light by the trace's bias along the *ray*, which
 //            may be almost parallel to the map, so the receiver's own depth is the only
@@ -111,7 +111,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   zRange.w = endLsDepth;
   // Lit also needs the whole light in front of the tangent plane: a sample behind it is
   // blocked (the trace's backface early out, the reference), so a pixel that sees only part
-  // of the light (a box's side face) is penumbra, not lit (issue 12's oracle: side faces of
+  // of the light (a box's side face) is penumbra, not lit (the oracle: side faces of
   // a box were 0.8 too bright).
   if (endLsDepth <= bounds.x && wholeLightInFront(wsPosition, wsNormal)) return CLASS_LIT;
   if (uUmbraTest && shallowestEnd >= bounds.y) return CLASS_UMBRA;

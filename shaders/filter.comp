@@ -4,12 +4,12 @@
 // sample (plus 1 to prevent division by zero)"); the depth is the distance from the eye,
 // scaled by uDepthScale. Optionally normal-sensitive ("a robust implementation would also
 // include normal sensitivity", §3): times max(n_c . n_s, 0)^uNormalPower.
-// Geometry (issue 12): times exp(-0.5 (plane distance / (uPlaneSigma x footprint))^2), the
+// Geometry: times exp(-0.5 (plane distance / (uPlaneSigma x footprint))^2), the
 // plane distance being |n_c . (p_s - p_c)|, the sample's distance from the centre's tangent
 // plane, and the footprint the world size of one pixel at the centre. Depth differences
 // alone let a plate's lit top 0.06 above the ground bleed into the dark strip under its edge
 // (the eye sees both at nearly the same distance); the tangent plane separates them.
-// Penumbra width (issue 12): a screen-space blur wider than the penumbra smears a sharp
+// Penumbra width: a screen-space blur wider than the penumbra smears a sharp
 // shadow (contact, a tiny light). Each shadowed pixel estimates its penumbra's width from
 // classify's bounds as PCSS does (Fernando 2005): w = light size x (d_r - d_b) / d_b, with d
 // the distance from the light plane of the receiver and of the nearest occluder its rays can
@@ -18,7 +18,7 @@
 // Gaussian is cut at 2 sigma (the radius, without that limit). A tap farther than the
 // penumbra is wide lies on its lit or umbra side: a penumbra narrower than a pixel (a contact
 // plate at auto's 2048^2) is not blurred at all, where the tail of a 0.4-pixel Gaussian
-// still added 4% of each lit neighbour per pass to the umbra (issue 12: filtered 0.034
+// still added 4% of each lit neighbour per pass to the umbra (filtered 0.034
 // against 0.014 unfiltered).
 // One pixel per invocation; the 8 x 8 workgroup filters one tile (filter_tiles.glsl). A
 // separable pass is bound by its reads: every pixel of a row needs the same taps along the

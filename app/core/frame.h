@@ -58,6 +58,9 @@ struct Frame {
                       std::function<void(const std::vector<unsigned char>&, Frame&)> use) {
     readbacks.push_back({buffer.id(), offset, bytes, std::move(use)});
   }
+  // Does the queued read-backs (the one wait for the GPU) and empties the queue: the end of
+  // Pipeline::run, or a test that runs one stage alone.
+  void finishReadbacks();
 
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}

@@ -490,15 +490,7 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
   }
   // 5. After the last stage, the one wait for the GPU: the stages' read-backs (counters,
   //    recorded steps; Frame::readAfterFrame) and the timer queries.
-  if (!frame.readbacks.empty()) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<unsigned char> bytes;
-  for (const Frame::Readback& readback : frame.readbacks) {
-    bytes.resize(size_t(readback.bytes));
-    if (readback.bytes > 0)
-      glGetNamedBufferSubData(readback.buffer, readback.offset, readback.bytes, bytes.data());
-    readback.use(bytes, frame);
-  }
-  frame.readbacks.clear();
+  frame.finishReadbacks();
   for (size_t i : timed) {
     GLuint64 nanoseconds = 0;
     glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &nanoseconds);

@@ -169,12 +169,14 @@ void installGlDebugLog() {
   glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DEBUG_SEVERITY_NOTIFICATION, 0, nullptr,
                         GL_FALSE);
   glDebugMessageCallback(
-      [](GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
+      [](GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
          const void*) {
         std::fprintf(stderr, "[gl %s%s] %s\n",
                      severity == GL_DEBUG_SEVERITY_HIGH ? "high" : "medium",
                      type == GL_DEBUG_TYPE_ERROR ? " error" : "", message);
-        if (type != GL_DEBUG_TYPE_ERROR) return;
+        // A shader that does not compile is reported with its log (ShaderProgram::reload),
+        // and kept running on its last good build: not a GL error.
+        if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
         ++gErrorCount;
         if (gErrorHook) gErrorHook(message);
         const char* fatal = std::getenv("PENUMBRA_GL_ERRORS_FATAL");

@@ -24,7 +24,7 @@ public:
 };
 
 // Routes KHR_debug messages (medium and high severity) to stderr. Every GL_DEBUG_TYPE_ERROR
-// is also counted (glErrorCount), passed to the hook (tests: fail the running test), and,
+// of the API (not the shader compiler's, which reach their log) is also counted (glErrorCount), passed to the hook (tests: fail the running test), and,
 // with PENUMBRA_GL_ERRORS_FATAL=1 in the environment (the tests that run the binary set it),
 // ends the process with status 3 after printing it, so no GL error passes unnoticed.
 void installGlDebugLog();

@@ -54,7 +54,7 @@ vec3 nbufferWholeMap(sampler2DArray levels) {
   return texelFetch(levels, ivec3(nbufferWholeMapTexel(size.z - 1, size.xy), size.z - 1), 0).xyz;
 }
 
-// The same bounds from the min-max mipmap (issue 14): conservative, not exact. At the finest
+// The same bounds from the min-max mipmap: conservative, not exact. At the finest
 // level whose aligned cells cover [lo, hi] with at most `cells` of them per axis, min/max
 // over those cells: they hold the rectangle, so zNearMin can only be lower and the maxima
 // higher than over the rectangle itself; a pixel can move from lit or umbra to penumbra,

@@ -225,7 +225,7 @@ uvec4 pcg3dRand(uvec4 seed, uint key) {
   return uvec4(h, pcg3d(h).x);
 }
 
-// ---- Hashes that teach by failing (issue 11) ----------------------------------------------
+// ---- Hashes that teach by failing ----------------------------------------------
 
 // The Appendix A listing cut to its first `steps` steps (4 or 8; 16 would be md5rand16): the
 // same message words, constants as printed, shifts, digest start and `digest += tD` after

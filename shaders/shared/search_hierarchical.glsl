@@ -75,7 +75,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
         // enters (at the near surface or the texel's edge) and where it leaves (at the far
         // surface or the edge). Testing the entry alone let a ray that entered in free space
         // the eye sees (between two stacked plates) skip the far surface it meets in the
-        // same texel (issue 12).
+        // same texel.
         float sIn = depthIn < bounds.x ? raySAtLsDepth(ray, bounds.x) : s;
         float sOut = depthOut > bounds.z ? raySAtLsDepth(ray, bounds.z) : sExit;
         hit = hiddenFromEye(rayWorldPoint(ray, clamp(sIn, s, sExit))) ||

@@ -43,7 +43,7 @@
 
 // The hierarchy the searches and the region early out read (trace.limits.z).
 #define HIERARCHY_NBUFFER 0       // thesis §3.5: windows of 2^n around each texel
-#define HIERARCHY_MINMAX 1        // issue 14: quadtree-aligned cells (min-max mipmap)
+#define HIERARCHY_MINMAX 1        // quadtree-aligned cells (min-max mipmap)
 
 #define SAMPLING_JITTERED 0
 #define SAMPLING_RANDOM 1
