@@ -157,9 +157,11 @@ bool GlContext::isCoreProfile() const {
 namespace {
 long gErrorCount = 0;
 void (*gErrorHook)(const char*) = nullptr;
+bool gErrorsHandled = false;
 }  // namespace
 
 long glErrorCount() { return gErrorCount; }
+void setGlErrorsHandled(bool handled) { gErrorsHandled = handled; }
 void setGlErrorHook(void (*hook)(const char* message)) { gErrorHook = hook; }
 
 void installGlDebugLog() {
@@ -177,6 +179,7 @@ void installGlDebugLog() {
         // A shader that does not compile is reported with its log (ShaderProgram::reload),
         // and kept running on its last good build: not a GL error.
         if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
+        if (gErrorsHandled) return;  // an allocation's refusal, reported by its check
         ++gErrorCount;
         if (gErrorHook) gErrorHook(message);
         const char* fatal = std::getenv("PENUMBRA_GL_ERRORS_FATAL");

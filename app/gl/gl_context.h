@@ -29,4 +29,7 @@ public:
 // ends the process with status 3 after printing it, so no GL error passes unnoticed.
 void installGlDebugLog();
 long glErrorCount();
+// While set (between clearGlErrors and checkGlAllocation, gl_texture.h), GL errors are an
+// allocation's refusal, which that check reports: printed, not counted, never fatal.
+void setGlErrorsHandled(bool handled);
 void setGlErrorHook(void (*hook)(const char* message));

@@ -1,18 +1,28 @@
 #include "gl/gl_texture.h"
 
+#include "gl/gl_context.h"
+
 #include <cstdio>
 #include <algorithm>
 #include <stdexcept>
 
-void clearGlErrors() {
+namespace {
+void drainGlErrors() {
   for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
   }
 }
+}  // namespace
+
+void clearGlErrors() {
+  drainGlErrors();
+  setGlErrorsHandled(true);  // until checkGlAllocation, which reports them
+}
 
 void checkGlAllocation(const std::string& what, size_t bytes) {
+  setGlErrorsHandled(false);
   const GLenum error = glGetError();
   if (error == GL_NO_ERROR) return;
-  clearGlErrors();
+  drainGlErrors();
   char size[64];
   std::snprintf(size, sizeof size, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
   if (error == GL_OUT_OF_MEMORY)

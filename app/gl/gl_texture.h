@@ -9,7 +9,8 @@
 // Every GL allocation is followed by this check: GL_OUT_OF_MEMORY (or a size the driver
 // refuses) throws, naming what was allocated and its size, instead of leaving an object
 // without storage that later renders, reads back or exports as garbage. Errors pending
-// from earlier calls are cleared first by clearGlErrors().
+// from earlier calls are cleared first by clearGlErrors(), and the errors between the two
+// calls are the check's to report (not failures of the debug callback, gl_context.h).
 void clearGlErrors();
 void checkGlAllocation(const std::string& what, size_t bytes);
 
