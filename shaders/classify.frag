@@ -1,7 +1,7 @@
 // Stage `classify` (thesis §3.6, Eq 3.3, Fig 3.7-3.8): per eye pixel, bounds on the
 // occluder depths that any ray from the light to the receiver can meet, refined by
 // iterating Eq 3.3 over the N-buffer (exact bounds) or the min-max mipmap (conservative
-// bounds, issue 14), and the class they imply:
+// bounds), and the class they imply:
 //   lit      receiver depth <= zNearMin: nothing can block any ray. No bias is subtracted:
 //            a ray's end moves towards the light by the trace's bias along the *ray*, which
 //            may be almost parallel to the map, so the receiver's own depth is the only
@@ -13,7 +13,6 @@
 // Step 1 of 2: a fragment shader over the image writing the class and the bounds
 // (app/gl/screen_triangle.h: why not a compute pass); classify_list.comp then counts the
 // classes and lists the pixels that need rays.
-#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/frame.glsl"
 #include "shared/bias.glsl"
 #include "shared/nbuffer.glsl"
@@ -21,20 +20,19 @@
 #include "shared/classify.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = CLASSIFY_WS_POSITION_IMAGE, rgba32f) uniform readonly image2D wsPositionImage;
-layout(binding = CLASSIFY_WS_NORMAL_IMAGE, rgba32f) uniform readonly image2D wsNormalImage;
-layout(binding = CLASSIFY_LEVELS_IMAGE, rgba32f) uniform readonly image2DArray nbufferLevels;
-layout(binding = CLASSIFY_MINMAX_IMAGE, rgba32f) uniform readonly image2D minmaxAtlas;
+layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
+layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
+layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
+layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
 layout(binding = CLASSIFY_NEAR_UNIT) uniform sampler2D nearLayer;
-layout(binding = CLASSIFY_FAR_IMAGE, r32f) uniform readonly image2D farLayer;
+layout(binding = CLASSIFY_FAR_UNIT) uniform sampler2D farLayer;
 layout(location = 0) out float maskOut;   // the class
 layout(location = 1) out vec4 zRangeOut;  // zNearMin, zNearMax, zFarMax, receiver lsDepth
 layout(location = CLASSIFY_ITERATIONS_LOCATION) uniform int uIterations;
 layout(location = CLASSIFY_UMBRA_TEST_LOCATION) uniform bool uUmbraTest;
 layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;
-// The stage compiles one program per hierarchy, CLASSIFY_OVER_MINMAX 0 (N-buffer) or 1 (min-
-// max mipmap), so neither carries the other's code: on llvmpipe the min-max loops cost the
-// N-buffer's classification time although they never ran (bench/trace-variants).
+// The stage compiles one program per hierarchy, CLASSIFY_OVER_MINMAX 0 (N-buffer, §3.5) or
+// 1 (min-max mipmap), so each reads as the one hierarchy it walks.
 #if !defined(CLASSIFY_OVER_MINMAX)
 #error "classify.frag is compiled with CLASSIFY_OVER_MINMAX 0 or 1 (stages/monte_carlo/classify.cpp)"
 #endif
@@ -56,26 +54,20 @@ vec3 boundsOverRect(ivec2 lo, ivec2 hi, ivec2 mapSize) {
 // Eq 3.3 iterated over the region any ray to point a or point b (map coordinates, light
 // depth) can cross: the union of the two squares. For the points between a and b the
 // squares' corners move monotonically, so the union holds them too (within the 0.01-texel
-// margin of reachableTexels).
-// The loop tests at its bottom (docs/issue14.md section 17): llvmpipe runs a loop's body
-// once more, masked, after the last lane has left by a test at the top.
+// margin of reachableTexels). Each iteration is one application of Eq 3.3: the nearest
+// occluder depth found so far shrinks the region, whose bounds are then read again; it
+// stops after uIterations, or once no ray can end deeper than zNearMin (lit for sure).
 vec3 boundsForRays(vec3 a, vec3 b, vec3 bounds, ivec2 mapSize) {
   float deepestEnd = zToLsDepth(max(a.z, b.z));  // the deepest any ray can end
-  bool refine = uIterations > 0 && deepestEnd > bounds.x;
-  int i = 0;
-  do {
-    if (refine) {
-      float occluderZ = lsDepthToZ(bounds.x);
-      ivec4 ra = reachableTexels(a.xy, a.z, occluderZ, mapSize);
-      ivec4 rb = reachableTexels(b.xy, b.z, occluderZ, mapSize);
-      vec3 refined = boundsOverRect(min(ra.xy, rb.xy), max(ra.zw, rb.zw), mapSize);
-      // Each region lies inside the previous one, so every bound found so far still holds:
-      // keep the tightest (zNearMin monotone up, the maxima monotone down).
-      bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
-    }
-    ++i;
-    refine = refine && i < uIterations && deepestEnd > bounds.x;
-  } while (refine);
+  for (int i = 0; i < uIterations && deepestEnd > bounds.x; ++i) {
+    float occluderZ = lsDepthToZ(bounds.x);
+    ivec4 ra = reachableTexels(a.xy, a.z, occluderZ, mapSize);
+    ivec4 rb = reachableTexels(b.xy, b.z, occluderZ, mapSize);
+    vec3 refined = boundsOverRect(min(ra.xy, rb.xy), max(ra.zw, rb.zw), mapSize);
+    // Each region lies inside the previous one, so every bound found so far still holds:
+    // keep the tightest (zNearMin monotone up, the maxima monotone down).
+    bounds = vec3(max(bounds.x, refined.x), min(bounds.yz, refined.yz));
+  }
   return bounds;
 }
 
@@ -103,16 +95,11 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
     zRange.w = isinf(zRange.w) || isnan(zRange.w) ? 0.0 : zRange.w;
     return CLASS_OUTSIDE;
   }
-  // A loop, not an if: llvmpipe runs the body of an if that no lane of the 8 enters, but
-  // leaves a loop once no lane is left in it, so the second pass costs only where needed;
-  // tested at the bottom, as boundsForRays's.
-  vec3 bounds, secondEnd = map;
-  bool secondPass = false;
-  do {
-    bounds = boundsForRays(map, secondEnd, whole, size);
-    secondPass = !secondPass && normalOffsetDistance(pointMap.z, wsNormal, bounds.x) < fullOffset;
-    secondEnd = pointMap;
-  } while (secondPass);
+  vec3 bounds = boundsForRays(map, map, whole, size);
+  // The bounds cap the offset: then bound the rays from every point between the original
+  // and the fully offset one instead.
+  if (normalOffsetDistance(pointMap.z, wsNormal, bounds.x) < fullOffset)
+    bounds = boundsForRays(map, pointMap, whole, size);
   zRange.xyz = bounds;
   // The capped point (the trace starts its rays there too).
   wsPosition = normalOffsetPoint(wsPosition, pointMap.z, wsNormal, bounds.x);
@@ -124,7 +111,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   zRange.w = endLsDepth;
   // Lit also needs the whole light in front of the tangent plane: a sample behind it is
   // blocked (the trace's backface early out, the reference), so a pixel that sees only part
-  // of the light (a box's side face) is penumbra, not lit (issue 12's oracle: side faces of
+  // of the light (a box's side face) is penumbra, not lit (the oracle: side faces of
   // a box were 0.8 too bright).
   if (endLsDepth <= bounds.x && wholeLightInFront(wsPosition, wsNormal)) return CLASS_LIT;
   if (uUmbraTest && shallowestEnd >= bounds.y) return CLASS_UMBRA;
@@ -133,12 +120,11 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 wsPosition = imageLoad(wsPositionImage, pixel);
-  // Background: the targets were cleared to its class and bounds (all 0) before the draw,
-  // and a discarded fragment writes nothing. A discard, not an if around the rest: llvmpipe
-  // runs an if's body for every lane, but leaves the shader once all lanes have discarded.
+  vec4 wsPosition = texelFetch(wsPositionTexture, pixel, 0);
+  // Background: the targets were cleared to its class and bounds (all 0) in the draw, and a
+  // discarded fragment writes nothing.
   if (wsPosition.w == 0.0) discard;
   vec4 zRange;
-  maskOut = float(classify(wsPosition.xyz, imageLoad(wsNormalImage, pixel).xyz, zRange));
+  maskOut = float(classify(wsPosition.xyz, texelFetch(wsNormalTexture, pixel, 0).xyz, zRange));
   zRangeOut = zRange;
 }

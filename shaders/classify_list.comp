@@ -1,65 +1,52 @@
 // Stage `classify`, step 2 of 2 (classify.frag is step 1): the class counts, and the list of
-// pixels that need rays (penumbra and umbra), so the trace dispatches only those (thesis Fig
+// pixels that need rays (penumbra and umbra), so the trace runs over those alone (thesis Fig
 // 3.8: "full calculations are only performed in blue areas").
-// One invocation per CLASSIFY_LIST_TILE^2 tile of pixels (tile_pass.glsl), counting in
-// registers and listing its penumbra pixels, then its umbra pixels, in scan order.
-#include "shared/tile_pass.glsl"
+// One pixel per invocation; an 8 x 8 workgroup (screen_pass.glsl) counts its pixels per
+// class in shared memory and adds them to the totals once per class, and reserves one run
+// of slots in the list for its penumbra pixels and then its umbra pixels.
+#include "shared/screen_pass.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = CLASSIFY_MASK_IMAGE, r32f) uniform readonly image2D classMask;
+layout(binding = CLASSIFY_MASK_UNIT) uniform sampler2D classMask;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;
 };
 layout(std430, binding = CLASSIFY_LIST_BINDING) buffer TracedPixels {
-  uint listCount;  // = penumbra + umbra
-  uint listPadding[3];
+  uint listCount;      // = penumbra + umbra
+  uint traceGroups[3];  // the trace's dispatch: groups covering the list, 1, 1
   uint tracedPixels[];
 };
+shared uint groupCounts[CLASSIFY_CLASS_COUNT];  // this workgroup's pixels per class
+shared uint nextSlot[2];                        // its next penumbra slot, umbra slot
 
 void main() {
-  // 1. This invocation's tile.
-  ivec2 origin = invocationTile(CLASSIFY_LIST_TILE);
-  if (origin.x < 0) return;
-  ivec2 end = min(origin + CLASSIFY_LIST_TILE, ivec2(frame.sizes.xy));
-  // 2. The pixels of each class (separate counters, not an array: llvmpipe would index a
-  //    private array lane by lane).
-  //    The loops test at their bottom (a tile holds at least one pixel): llvmpipe runs a
-  //    loop's body once more, masked, after the last lane leaves by a test at the top
-  //    (docs/issue14.md section 17).
-  uint background = 0u, lit = 0u, penumbra = 0u, umbra = 0u, outside = 0u;
-  int y = origin.y;
-  do {
-    int x = origin.x;
-    do {
-      int pixelClass = int(imageLoad(classMask, ivec2(x, y)).r);
-      background += pixelClass == CLASS_BACKGROUND ? 1u : 0u;
-      lit += pixelClass == CLASS_LIT ? 1u : 0u;
-      penumbra += pixelClass == CLASS_PENUMBRA ? 1u : 0u;
-      umbra += pixelClass == CLASS_UMBRA ? 1u : 0u;
-      outside += pixelClass == CLASS_OUTSIDE ? 1u : 0u;
-    } while (++x < end.x);
-  } while (++y < end.y);
-  if (background != 0u) atomicAdd(counts.pixels[CLASS_BACKGROUND], background);
-  if (lit != 0u) atomicAdd(counts.pixels[CLASS_LIT], lit);
-  if (penumbra != 0u) atomicAdd(counts.pixels[CLASS_PENUMBRA], penumbra);
-  if (umbra != 0u) atomicAdd(counts.pixels[CLASS_UMBRA], umbra);
-  if (outside != 0u) atomicAdd(counts.pixels[CLASS_OUTSIDE], outside);
-  // 3. The tile's slots in the list (penumbra first, then umbra; the order of the tiles is
-  //    not deterministic, the trace's result does not depend on it), and its pixels there.
-  //    Tiles without such pixels leave after one pass of the loops' bodies, which lists
-  //    nothing there (a loop, not an if: llvmpipe leaves a loop once no lane is in it, but
-  //    runs an if's body for all 8 lanes).
-  uint traced = penumbra + umbra;
-  uint nextPenumbra = traced != 0u ? atomicAdd(listCount, traced) : 0u;
-  uint nextUmbra = nextPenumbra + penumbra;
-  y = origin.y;
-  do {
-    int x = origin.x;
-    do {
-      int pixelClass = int(imageLoad(classMask, ivec2(x, y)).r);
-      uint xy = uint(x) | (uint(y) << 16);
-      if (pixelClass == CLASS_PENUMBRA) tracedPixels[nextPenumbra++] = xy;
-      if (pixelClass == CLASS_UMBRA) tracedPixels[nextUmbra++] = xy;
-    } while (++x < end.x && traced != 0u);
-  } while (++y < end.y && traced != 0u);
+  // 1. This invocation's pixel and its class (none past the image's edge).
+  ivec2 pixel = screenPixel();
+  int pixelClass = pixel.x < 0 ? -1 : int(texelFetch(classMask, pixel, 0).r);
+  uint index = gl_LocalInvocationIndex;
+  if (index < uint(CLASSIFY_CLASS_COUNT)) groupCounts[index] = 0u;
+  memoryBarrierShared();
+  barrier();
+  // 2. The group's pixels per class, then one addition per class to the totals.
+  if (pixelClass >= 0) atomicAdd(groupCounts[pixelClass], 1u);
+  memoryBarrierShared();
+  barrier();
+  if (index < uint(CLASSIFY_CLASS_COUNT) && groupCounts[index] != 0u)
+    atomicAdd(counts.pixels[index], groupCounts[index]);
+  // 3. The group's slots in the list (penumbra first, then umbra; the order of the groups,
+  //    and of the pixels within one, is not deterministic: the trace's result does not
+  //    depend on it), and each listed pixel in one of them.
+  if (index == 0u) {
+    uint traced = groupCounts[CLASS_PENUMBRA] + groupCounts[CLASS_UMBRA];
+    nextSlot[0] = traced != 0u ? atomicAdd(listCount, traced) : 0u;
+    nextSlot[1] = nextSlot[0] + groupCounts[CLASS_PENUMBRA];
+    // The trace's groups reach at least past this group's last slot.
+    uint groupSize = uint(CLASSIFY_TRACE_GROUP);
+    if (traced != 0u) atomicMax(traceGroups[0], (nextSlot[0] + traced + groupSize - 1u) / groupSize);
+  }
+  memoryBarrierShared();
+  barrier();
+  uint xy = uint(pixel.x) | (uint(pixel.y) << 16);
+  if (pixelClass == CLASS_PENUMBRA) tracedPixels[atomicAdd(nextSlot[0], 1u)] = xy;
+  if (pixelClass == CLASS_UMBRA) tracedPixels[atomicAdd(nextSlot[1], 1u)] = xy;
 }

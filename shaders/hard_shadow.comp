@@ -4,16 +4,16 @@
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/hard_shadow_layout.h"
-layout(binding = HARD_SHADOW_WS_POSITION_IMAGE, rgba32f) uniform readonly image2D wsPositionImage;
+layout(binding = HARD_SHADOW_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;
 layout(binding = HARD_SHADOW_NEAR_UNIT) uniform sampler2D nearLayer;
-layout(binding = HARD_SHADOW_WS_NORMAL_IMAGE, rgba32f) uniform readonly image2D wsNormalImage;
+layout(binding = HARD_SHADOW_WS_NORMAL_UNIT) uniform sampler2D wsNormalImage;
 layout(binding = HARD_SHADOW_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(location = HARD_SHADOW_OFFSET_LOCATION) uniform float uOffset;  // hard_shadow.offset: extra constant bias (world)
 
 void main() {
   ivec2 pixel = screenPixel();
   if (pixel.x < 0) return;
-  vec4 wsPosition = imageLoad(wsPositionImage, pixel);
+  vec4 wsPosition = texelFetch(wsPositionImage, pixel, 0);
   float visibility = 1.0;
   vec3 map = lightMapCoords(wsPosition.xyz);
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
@@ -23,7 +23,7 @@ void main() {
     float nearDepth = texelFetch(nearLayer, texel, 0).r;
     float bias = light.bias.x + uOffset;
     if (light.bias.y != 0.0) {
-      vec3 wsNormal = imageLoad(wsNormalImage, pixel).xyz;
+      vec3 wsNormal = texelFetch(wsNormalImage, pixel, 0).xyz;
       bias += adaptiveBias(map.z, wsNormal, -light.wsLightForward.xyz, light.bias.z);
     }
     visibility = zToLsDepth(map.z - bias) <= nearDepth ? 1.0 : 0.0;

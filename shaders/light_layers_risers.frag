@@ -1,4 +1,4 @@
-// Stage `light_layers`, last step (issue 12): the far layer of a zero-thickness sheet
+// Stage `light_layers`, last step: the far layer of a zero-thickness sheet
 // reaches down to its neighbours' depths. A tilted sheet stored at texel centres is a
 // staircase with near == far on every step; a ray that crosses the sheet between two steps'
 // depths at their common edge met neither step and passed through (1-4% of the rays, +0.011
@@ -9,10 +9,8 @@
 // step of each pair now spans the gap. Texels of closed or thick occluders (far > near), and
 // texels with no occluder, keep what the far pass wrote.
 // A fragment shader over the rectangle of the map the occluders can cover
-// (app/gl/screen_triangle.h), discarding every texel but a sheet's (issue 14): llvmpipe
-// leaves the shader once all lanes have discarded, and a discarded fragment writes nothing
-// (a compute pass that rewrote every texel was 43 of the stage's 50 ms at 2048^2 on cube).
-#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
+// (app/gl/screen_triangle.h), discarding every texel but a sheet's: a discarded fragment
+// writes nothing, so every other texel keeps what the far pass wrote without a copy.
 #include "shared/frame.glsl"
 #include "shared/light_layers_layout.h"
 layout(binding = RISERS_NEAR_UNIT) uniform sampler2D nearLayer;

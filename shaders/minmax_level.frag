@@ -1,9 +1,9 @@
 // Min-max mipmap level n >= 1 (layout in shared/minmax.glsl): level n takes min/max over
 // the (up to) 2 x 2 children in level n-1. Level 1 reads its children from the layers as
-// (near, near, far): level 0 is the layers, never stored (issue 14: storing it was a full
-// RGBA32F copy, half the build).
-// Two programs (MINMAX_FROM_LAYERS 1: level 1; 0: the coarser levels), not one branch on
-// the level: llvmpipe runs both sides of a branch for every texel, also of one on a uniform.
+// (near, near, far): level 0 is the layers, never stored (storing it would be a full RGBA32F
+// copy of them).
+// Two programs (MINMAX_FROM_LAYERS 1: level 1; 0: the coarser levels), each reading one
+// source.
 // A fragment shader drawn over the level's rectangle of the atlas (app/gl/screen_triangle.h:
 // why not a compute pass); the coarser levels read level n-1 of the same atlas through an
 // image unit, a rectangle this draw does not write (no rendering feedback loop: GL 4.5
@@ -25,8 +25,8 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy) - minmaxLevelOrigin(uLevel, uSize);
 #if MINMAX_FROM_LAYERS
   // Level 1: the 2 x 2 children from the layers as (near, near, far), each layer in one
-  // gather around the children's common corner 2 * texel + 1 (gathers cost about what one
-  // fetch does on llvmpipe); past an odd map's last row or column the texel clamped to the
+  // gather around the children's common corner 2 * texel + 1 (one fetch of four texels);
+  // past an odd map's last row or column the texel clamped to the
   // edge (gl_texture.cpp) repeats a child, which leaves minimum and maximum unchanged.
   vec2 corner = vec2(2 * texel + 1) / vec2(uSize);
   vec4 nearDepths = textureGather(nearLayer, corner), farDepths = textureGather(farLayer, corner);

@@ -12,15 +12,14 @@
 // tangent plane (receiver-plane depth bias): a tap compared with the receiver's own depth
 // finds the receiver's surface itself in front wherever that surface slopes away from the
 // light, and the region then collapses onto the receiver's texel (acne, self-shadow noise).
-#define UNIFORM_BLOCKS_LOADED_AT_START  // frame.glsl: why
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/hash.glsl"
 #include "shared/pcss_layout.h"
 layout(std140, binding = PCSS_PARAMS_BINDING) uniform PcssBlock { PcssParams pcss; };
 layout(std430, binding = PCSS_TAPS_BINDING) readonly buffer Taps { vec2 taps[]; };
-layout(binding = PCSS_WS_POSITION_IMAGE, rgba32f) uniform readonly image2D wsPositionImage;
-layout(binding = PCSS_WS_NORMAL_IMAGE, rgba32f) uniform readonly image2D wsNormalImage;
+layout(binding = PCSS_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;
+layout(binding = PCSS_WS_NORMAL_UNIT) uniform sampler2D wsNormalImage;
 layout(binding = PCSS_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = PCSS_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(binding = PCSS_SEARCH_RADIUS_IMAGE, r32f) uniform writeonly image2D searchRadiusImage;  // texels
@@ -68,17 +67,16 @@ bool blocks(Receiver receiver, ivec2 texel, float lsDepth) {
 }
 
 void main() {
-  loadFrameBlocks();
   ivec2 pixel = screenPixel();
   if (pixel.x < 0) return;
-  vec4 wsPosition = imageLoad(wsPositionImage, pixel);
+  vec4 wsPosition = texelFetch(wsPositionImage, pixel, 0);
   vec3 map = lightMapCoords(wsPosition.xyz);
   bool insideMap = all(greaterThanEqual(map.xy, vec2(0.0))) && all(lessThan(map.xy, vec2(1.0)))
                    && map.z > light.lightDepthRange.x;
   float visibility = 1.0, searchHalf = 0.0, blockerDepth = 0.0, filterHalf = 0.0;
   if (wsPosition.w > 0.0 && insideMap) {
     vec2 size = vec2(light.mapSize.xy);
-    vec3 wsNormal = imageLoad(wsNormalImage, pixel).xyz;
+    vec3 wsNormal = texelFetch(wsNormalImage, pixel, 0).xyz;
     vec3 wsToLight = normalize(light.wsLightCenter.xyz - wsPosition.xyz);
     float bias = light.bias.x;  // the light's Eq 3.2 group, as every shadow-map test
     if (light.bias.y != 0.0)

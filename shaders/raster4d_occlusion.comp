@@ -88,7 +88,8 @@ void main() {
   vec3 q = receivers[sampleEntry.x].xyz;
   vec4 qBox = proj4(q);
   // This dispatch's chunk of the pixel's triangle list (dispatch.zw: first, count): the
-  // stage splits long lists over dispatches to stay under llvmpipe's loop limit.
+  // stage splits long lists over dispatches to stay under a driver's per-invocation loop
+  // limit (raster4d.glsl).
   uint listFirst = triangleStarts[sampleEntry.y] - uint(r4d.band.w);
   uint listEnd = triangleStarts[sampleEntry.y + 1u] - uint(r4d.band.w);
   uint first = min(listFirst + uint(r4d.dispatch.z), listEnd);

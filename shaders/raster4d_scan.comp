@@ -8,23 +8,23 @@ layout(std430, binding = R4D_SCAN_STARTS) writeonly buffer Starts { uint starts[
 shared uint runTotals[RASTER4D_SCAN_GROUP];
 
 void main() {
-  uint n = uint(r4d.dispatch.y), lane = gl_LocalInvocationID.x;
+  uint n = uint(r4d.dispatch.y), invocation = gl_LocalInvocationID.x;
   uint run = (n + RASTER4D_SCAN_GROUP - 1u) / RASTER4D_SCAN_GROUP;
-  uint first = min(lane * run, n), end = min(first + run, n);
+  uint first = min(invocation * run, n), end = min(first + run, n);
   uint total = 0u;
   for (uint i = first; i < end; ++i) total += counts[i];
-  runTotals[lane] = total;
+  runTotals[invocation] = total;
   barrier();
   for (uint offset = 1u; offset < RASTER4D_SCAN_GROUP; offset <<= 1u) {  // Hillis-Steele
-    uint add = lane >= offset ? runTotals[lane - offset] : 0u;
+    uint add = invocation >= offset ? runTotals[invocation - offset] : 0u;
     barrier();
-    runTotals[lane] += add;
+    runTotals[invocation] += add;
     barrier();
   }
-  uint running = runTotals[lane] - total;  // exclusive
+  uint running = runTotals[invocation] - total;  // exclusive
   for (uint i = first; i < end; ++i) {
     starts[i] = running;
     running += counts[i];
   }
-  if (lane == RASTER4D_SCAN_GROUP - 1u) starts[n] = runTotals[lane];
+  if (invocation == RASTER4D_SCAN_GROUP - 1u) starts[n] = runTotals[invocation];
 }

@@ -53,8 +53,8 @@ void main() {
   ivec4 range = fbPixelRange(box);
   if (range.x > range.z || range.y > range.w) return;
   if (firstWindow) atomicAdd(state.counts.z, 1u);
-  // Only the rows of the current window (the stage keeps rows x columns under llvmpipe's
-  // loop limit).
+  // Only the rows of the current window (the stage keeps rows x columns under a driver's
+  // per-invocation loop limit; raster4d.glsl).
   for (int row = max(range.y, r4d.band.x); row < min(range.w + 1, r4d.band.y); ++row)
     for (int column = range.x; column <= range.z; ++column) {
       uint cell = uint(row * r4d.sizes.x + column);

@@ -1,24 +1,24 @@
 // Stage `trace`, deferred form (thesis Algorithm 1, step 3): per G-buffer pixel, n x n rays
 // through the light's depth layers.
-#define UNIFORM_BLOCKS_LOADED_AT_START  // frame.glsl: why
 #include "shared/screen_pass.glsl"
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
 #include "shared/classify_layout.h"
-layout(binding = TRACE_MASK_IMAGE, r32f) uniform readonly image2D classMask;
-layout(binding = TRACE_ZRANGE_IMAGE, rgba32f) uniform readonly image2D zRangeImage;
+layout(binding = TRACE_MASK_UNIT) uniform sampler2D classMask;    // classify's class
+layout(binding = TRACE_ZRANGE_UNIT) uniform sampler2D zRangeImage;  // and its bounds
 layout(binding = TRACE_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(binding = TRACE_COST_IMAGE, rgba32f) uniform writeonly image2D costImage;
 layout(std430, binding = CLASSIFY_LIST_BINDING) readonly buffer TracedPixels {
   uint listCount;
-  uint listPadding[3];
+  uint traceGroups[3];
   uint tracedPixels[];
 };
 layout(std430, binding = TRACE_PARTIALS_BINDING) writeonly buffer TracePartials {
-  uvec4 partials[];  // one per pixel (trace_layout.h)
+  uvec4 partials[];  // TRACE_RECORD_UVEC4S per pixel (trace_layout.h)
 };
 // TRACE_PIXELS_ALL: every pixel (rows from uRowOffset); _LISTED: the pixels classify listed
-// (penumbra, umbra; uRowOffset = the band's first group), everything else was cleared to
+// (penumbra, umbra; one invocation per listed pixel, in the groups classify counted for the
+// indirect dispatch), everything else was cleared to
 // visibility 1 beforehand; _RECORDED: the recorded pixel alone, with its steps (the
 // variant compiled with TRACE_RECORDING 1; the others compile the records out).
 layout(location = TRACE_PIXELS_LOCATION) uniform int uPixels;
@@ -35,15 +35,13 @@ ivec2 tracedPixel(out uint record) {
     bool inImage = all(lessThan(uvec2(trace.record.xy), frame.sizes.xy));
     return gl_LocalInvocationIndex == 0u && inImage ? trace.record.xy : ivec2(-1);
   }
-  record = (gl_WorkGroupID.x + uint(uRowOffset)) * 64u + gl_LocalInvocationIndex;
+  record = gl_WorkGroupID.x * uint(CLASSIFY_TRACE_GROUP) + gl_LocalInvocationIndex;
   if (record >= listCount) return ivec2(-1);
   uint xy = tracedPixels[record];
   return ivec2(int(xy & 0xFFFFu), int(xy >> 16));
 }
 
 void main() {
-  loadFrameBlocks();
-  loadTraceBlock();
   uint record;
   ivec2 pixel = tracedPixel(record);
   if (pixel.x < 0) return;
@@ -52,7 +50,7 @@ void main() {
   float visibility = 1.0;
   RayCounts counts = RayCounts(0u, 0u, 0u, 0u);
   uint rays = 0u;
-  int pixelClass = int(imageLoad(classMask, pixel).r);
+  int pixelClass = int(texelFetch(classMask, pixel, 0).r);
   if (wsPosition.w == 0.0 || pixelClass == CLASS_OUTSIDE) {
     visibility = 1.0;  // background, or outside the light's frustum: nothing known blocks it
   } else if (trace.limits.w != 0 && (pixelClass == CLASS_LIT || pixelClass == CLASS_UMBRA)) {
@@ -60,7 +58,7 @@ void main() {
     recordStep(-1, STEP_CLASSIFIED, 0, ivec4(-1), vec4(visibility), vec4(0.0));
   } else {
     vec3 wsNormal = texelFetch(wsNormalTexture, pixel, 0).xyz;
-    vec4 zRange = imageLoad(zRangeImage, pixel);  // zNearMin, zNearMax, zFarMax, lsDepth
+    vec4 zRange = texelFetch(zRangeImage, pixel, 0);  // zNearMin, zNearMax, zFarMax, lsDepth
     visibility = traceVisibility(wsPosition.xyz, wsNormal, pixel, zRange.xz, counts);
     rays = uint(trace.config.x * trace.config.x);
   }
@@ -69,9 +67,11 @@ void main() {
   // listed ones, counted it).
   if (uPixels != TRACE_PIXELS_RECORDED) {
     uint early = counts.backface << (2 * TRACE_COUNT_BITS);
-    partials[record] = uvec4(rays | (counts.searched << TRACE_COUNT_BITS) | early,
-                             counts.inside | (counts.region << TRACE_COUNT_BITS), gFetches,
-                             gIterations);
+    uint slot = record * uint(TRACE_RECORD_UVEC4S);
+    partials[slot] = uvec4(rays | (counts.searched << TRACE_COUNT_BITS) | early,
+                           counts.inside | (counts.region << TRACE_COUNT_BITS), gFetches,
+                           gIterations);
+    partials[slot + 1u] = uvec4(gEarlyOutFetches, 0u, 0u, 0u);
   }
   imageStore(visibilityImage, pixel, vec4(visibility));
 #if TRACE_COST  // 0 where nobody shows or exports the cost (stages/monte_carlo/trace.cpp)

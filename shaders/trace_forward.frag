@@ -2,7 +2,6 @@
 // every rasterized fragment traces its rays, also those later hidden by nearer ones.
 // Without a G-buffer there is no classification and no eye layer (three layers act as
 // two); rays are shortened with the bounds of the whole map (the hierarchy's top level).
-#define FRAME_BLOCKS_FROM_VERTEX_STAGE  // frame.glsl: why
 #include "shared/trace_pixel.glsl"
 layout(location = 0) in vec3 wsPosition;
 layout(location = 1) in vec3 wsNormal;
@@ -10,7 +9,6 @@ layout(location = 0) out float outVisibility;
 layout(location = 1) out vec4 outCost;
 
 void main() {
-  loadTraceBlock();
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   gRecording = all(equal(pixel, trace.record.xy));
   vec3 n = normalize(wsNormal);

@@ -19,6 +19,7 @@
 #include "cli/hash_command.h"
 #include "cli/hash_stats_command.h"
 #include "gl/hash_kind.h"
+#include "gl/shader_dump.h"
 #include "cli/trace_command.h"
 #include "core/input_error.h"
 #include "core/pipeline.h"
@@ -243,6 +244,11 @@ int main(int argc, char** argv) {
       "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
                "penumbra graph | dot -Tsvg > graph.svg");
 
+  CLI::App* shadersCommand = app.add_subcommand(
+      "shaders", "write the final GLSL source of every program variant the pipeline can build "
+                 "(one file per shader stage, and programs.txt), for checking with any compiler");
+  std::string shaderDumpDirectory;
+  shadersCommand->add_option("--dump", shaderDumpDirectory, "directory to write to")->required();
   // --time-limit on every command but bench (whose --time-limit bounds its reference tracing,
   // estimated before it starts): the run is cancelled at the next check after that many
   // seconds (between stages, SSM passes, reference rows) and the command exits 1 with
@@ -272,6 +278,12 @@ int main(int argc, char** argv) {
     const RunTimeLimit limit(timeLimit.empty() ? 0.0 : std::strtod(timeLimit.c_str(), nullptr));
     if (*graphCommand) {
       std::fputs(Pipeline().dot().c_str(), stdout);
+      return 0;
+    }
+    if (*shadersCommand) {
+      const int programs = dumpShaderSources(shaderDumpDirectory);
+      std::printf("%d programs written to %s (programs.txt lists them)\n", programs,
+                  shaderDumpDirectory.c_str());
       return 0;
     }
     if (*exportCommand) return runExport(exporting);

@@ -82,3 +82,17 @@ const GlTexture& Frame::texture(const std::string& stageDotOutput) const {
                              "stages after it read it this run (not requested)");
   return found->second;
 }
+
+void Frame::finishReadbacks() {
+  if (readbacks.empty()) return;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<Readback> queued = std::move(readbacks);
+  readbacks.clear();
+  std::vector<unsigned char> bytes;
+  for (const Readback& readback : queued) {
+    bytes.resize(size_t(readback.bytes));
+    if (readback.bytes > 0)
+      glGetNamedBufferSubData(readback.buffer, readback.offset, readback.bytes, bytes.data());
+    readback.use(bytes, *this);
+  }
+}

@@ -4,6 +4,7 @@
 // name (texture()).
 #pragma once
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -41,6 +42,25 @@ struct Frame {
   // the stages after, not outputs to show or export: has() and texture() treat them as not written.
   std::set<std::string> requested;
   std::set<std::string> partial;
+
+  // Counts the GPU wrote into buffers, read back after the last stage of the run
+  // (Pipeline::run, all at once), so no stage waits for the GPU inside the frame: a stage
+  // asks for `bytes` at `offset` of `buffer` and gets them in `use`, which fills counters
+  // (or traceSteps). The buffer must outlive the run (a stage's own member, or an output).
+  struct Readback {
+    GLuint buffer;
+    GLintptr offset;
+    GLsizeiptr bytes;
+    std::function<void(const std::vector<unsigned char>& bytes, Frame& frame)> use;
+  };
+  std::vector<Readback> readbacks;
+  void readAfterFrame(const GlBuffer& buffer, GLintptr offset, GLsizeiptr bytes,
+                      std::function<void(const std::vector<unsigned char>&, Frame&)> use) {
+    readbacks.push_back({buffer.id(), offset, bytes, std::move(use)});
+  }
+  // Does the queued read-backs (the one wait for the GPU) and empties the queue: the end of
+  // Pipeline::run, or a test that runs one stage alone.
+  void finishReadbacks();
 
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}

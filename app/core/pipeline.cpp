@@ -434,36 +434,41 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
 
   prepareCamera(frame);
   frame.counters.clear();
+  frame.readbacks.clear();
   const bool queries = timingMethod() == "GL_TIME_ELAPSED";
   if (queries && queries_.empty()) {
     queries_.resize(stages_.size());
     glCreateQueries(GL_TIME_ELAPSED, GLsizei(queries_.size()), queries_.data());
   }
   glFinish();
-  // 3. One stage, timed.
+  // 3. One stage, timed: with timer queries, their results are read after the last stage
+  //    (5.), so no stage waits for the GPU; otherwise glFinish and the clock.
+  std::vector<size_t> timed;
+  auto record = [&](size_t i, double milliseconds) {
+    StageTime& time = times_[i];
+    std::vector<double>& runs = series_[stages_[i]->name()];
+    runs.push_back(milliseconds);
+    std::vector<double> sorted = runs;
+    std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+    time.ran = true, time.milliseconds = milliseconds;
+    time.median = sorted[sorted.size() / 2], time.runs = int(runs.size());
+  };
   auto runStage = [&](size_t i) {
     Stage& stage = *stages_[i];
     throwIfRunCancelled("before stage " + stage.name());  // core/run_control.h
-    StageTime& time = times_[i];
     const auto start = std::chrono::steady_clock::now();
     if (queries) glBeginQuery(GL_TIME_ELAPSED, queries_[i]);
     stage.run(frame);
-    std::chrono::duration<double, std::milli> elapsed{};
     if (queries) {
       glEndQuery(GL_TIME_ELAPSED);
-      GLuint64 nanoseconds = 0;
-      glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &nanoseconds);
-      elapsed = std::chrono::nanoseconds(nanoseconds);
-    } else {
-      glFinish();
-      elapsed = std::chrono::steady_clock::now() - start;
+      timed.erase(std::remove(timed.begin(), timed.end(), i), timed.end());
+      timed.push_back(i);
+      times_[i].ran = true;
+      return;
     }
-    std::vector<double>& runs = series_[stage.name()];
-    runs.push_back(elapsed.count());
-    std::vector<double> sorted = runs;
-    std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-    time.ran = true, time.milliseconds = elapsed.count();
-    time.median = sorted[sorted.size() / 2], time.runs = int(runs.size());
+    glFinish();
+    record(i, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count());
   };
   // 4. In order; a stage not needed loses its old outputs, so nothing downstream or on
   //    screen is stale. After a stage that decides `auto` choices, what is needed is worked
@@ -486,6 +491,14 @@ void Pipeline::run(Frame& frame, const std::vector<std::string>& requested) {
       if (willRun.count(stages_[j]->name()) && !times_[j].ran) runStage(j);
   }
   throwIfRunCancelled("after the last stage");  // one that stopped early left partial data
+  // 5. After the last stage, the one wait for the GPU: the stages' read-backs (counters,
+  //    recorded steps; Frame::readAfterFrame) and the timer queries.
+  frame.finishReadbacks();
+  for (size_t i : timed) {
+    GLuint64 nanoseconds = 0;
+    glGetQueryObjectui64v(queries_[i], GL_QUERY_RESULT, &nanoseconds);
+    record(i, double(nanoseconds) * 1e-6);
+  }
 }
 
 // The `auto` choices decided after stage `after`: each parameter takes the option its

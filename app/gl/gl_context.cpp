@@ -6,7 +6,9 @@
 #include <GLFW/glfw3.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace {
@@ -152,6 +154,16 @@ bool GlContext::isCoreProfile() const {
   return (mask & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
 }
 
+namespace {
+long gErrorCount = 0;
+void (*gErrorHook)(const char*) = nullptr;
+bool gErrorsHandled = false;
+}  // namespace
+
+long glErrorCount() { return gErrorCount; }
+void setGlErrorsHandled(bool handled) { gErrorsHandled = handled; }
+void setGlErrorHook(void (*hook)(const char* message)) { gErrorHook = hook; }
+
 void installGlDebugLog() {
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
@@ -159,11 +171,23 @@ void installGlDebugLog() {
   glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DEBUG_SEVERITY_NOTIFICATION, 0, nullptr,
                         GL_FALSE);
   glDebugMessageCallback(
-      [](GLenum, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
+      [](GLenum source, GLenum type, GLuint, GLenum severity, GLsizei, const GLchar* message,
          const void*) {
         std::fprintf(stderr, "[gl %s%s] %s\n",
                      severity == GL_DEBUG_SEVERITY_HIGH ? "high" : "medium",
                      type == GL_DEBUG_TYPE_ERROR ? " error" : "", message);
+        // A shader that does not compile is reported with its log (ShaderProgram::reload),
+        // and kept running on its last good build: not a GL error.
+        if (type != GL_DEBUG_TYPE_ERROR || source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
+        if (gErrorsHandled) return;  // an allocation's refusal, reported by its check
+        ++gErrorCount;
+        if (gErrorHook) gErrorHook(message);
+        const char* fatal = std::getenv("PENUMBRA_GL_ERRORS_FATAL");
+        if (fatal && std::string(fatal) == "1") {
+          std::fprintf(stderr, "penumbra: GL error with PENUMBRA_GL_ERRORS_FATAL=1: exiting\n");
+          std::fflush(stderr);
+          std::_Exit(3);
+        }
       },
       nullptr);
 }

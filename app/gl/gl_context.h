@@ -23,5 +23,13 @@ public:
   bool isCoreProfile() const;
 };
 
-// Routes KHR_debug messages (medium and high severity) to stderr.
+// Routes KHR_debug messages (medium and high severity) to stderr. Every GL_DEBUG_TYPE_ERROR
+// of the API (not the shader compiler's, which reach their log) is also counted (glErrorCount), passed to the hook (tests: fail the running test), and,
+// with PENUMBRA_GL_ERRORS_FATAL=1 in the environment (the tests that run the binary set it),
+// ends the process with status 3 after printing it, so no GL error passes unnoticed.
 void installGlDebugLog();
+long glErrorCount();
+// While set (between clearGlErrors and checkGlAllocation, gl_texture.h), GL errors are an
+// allocation's refusal, which that check reports: printed, not counted, never fatal.
+void setGlErrorsHandled(bool handled);
+void setGlErrorHook(void (*hook)(const char* message));

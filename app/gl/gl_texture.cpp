@@ -1,18 +1,28 @@
 #include "gl/gl_texture.h"
 
+#include "gl/gl_context.h"
+
 #include <cstdio>
 #include <algorithm>
 #include <stdexcept>
 
-void clearGlErrors() {
+namespace {
+void drainGlErrors() {
   for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
   }
 }
+}  // namespace
+
+void clearGlErrors() {
+  drainGlErrors();
+  setGlErrorsHandled(true);  // until checkGlAllocation, which reports them
+}
 
 void checkGlAllocation(const std::string& what, size_t bytes) {
+  setGlErrorsHandled(false);
   const GLenum error = glGetError();
   if (error == GL_NO_ERROR) return;
-  clearGlErrors();
+  drainGlErrors();
   char size[64];
   std::snprintf(size, sizeof size, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
   if (error == GL_OUT_OF_MEMORY)
@@ -49,9 +59,8 @@ GlTexture::GlTexture(GLenum internalFormat, int width, int height, int layers)
   glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void bindImageForReading(GLuint unit, const GlTexture& texture) {
-  glBindImageTexture(unit, texture.id(), 0, texture.isArray() ? GL_TRUE : GL_FALSE, 0,
-                     GL_READ_ONLY, texture.internalFormat());
+void bindTextureForReading(GLuint unit, const GlTexture& texture) {
+  glBindTextureUnit(unit, texture.id());
 }
 
 // Appends only: `"x" + std::to_string(...)` (a literal plus a temporary string) makes GCC 12

@@ -9,7 +9,8 @@
 // Every GL allocation is followed by this check: GL_OUT_OF_MEMORY (or a size the driver
 // refuses) throws, naming what was allocated and its size, instead of leaving an object
 // without storage that later renders, reads back or exports as garbage. Errors pending
-// from earlier calls are cleared first by clearGlErrors().
+// from earlier calls are cleared first by clearGlErrors(), and the errors between the two
+// calls are the check's to report (not failures of the debug callback, gl_context.h).
 void clearGlErrors();
 void checkGlAllocation(const std::string& what, size_t bytes);
 
@@ -48,11 +49,9 @@ private:
   int width_ = 0, height_ = 0, layers_ = 0;
 };
 
-// Binds level 0 of `texture` (all its layers) to image unit `unit` for imageLoad, in its own
-// format. Hot passes read through images where they can: on llvmpipe an imageLoad costs a
-// third of a texelFetch (docs/decisions/039-llvmpipe-lane-tuning-rejected.md). Depth
-// textures have no image format.
-void bindImageForReading(GLuint unit, const GlTexture& texture);
+// Binds `texture` to texture unit `unit`, where a shader reads it with texelFetch (every
+// texture is NEAREST and has one level, so it is complete and a fetch returns the texel).
+void bindTextureForReading(GLuint unit, const GlTexture& texture);
 
 // Framebuffers and buffers are created on first use, so stages can be declared (for --set,
 // help, tests of parameters) before a GL context exists.

@@ -19,11 +19,11 @@ static_assert(offsetof(gpu::TraceStep, depths) == 32);
 static_assert(offsetof(gpu::TraceStep, stepping) == 48);
 static_assert(sizeof(gpu::TraceStep) == 64);
 
-static_assert(gpu::distinctBelow({TRACE_WS_POSITION_UNIT, TRACE_WS_NORMAL_UNIT, TRACE_NEAR_UNIT},
+static_assert(gpu::distinctBelow({TRACE_WS_POSITION_UNIT, TRACE_WS_NORMAL_UNIT, TRACE_NEAR_UNIT,
+                                  TRACE_FAR_UNIT, TRACE_LEVELS_UNIT, TRACE_MINMAX_UNIT,
+                                  TRACE_MASK_UNIT, TRACE_ZRANGE_UNIT},
                                  gpu::kTextureUnits));
-static_assert(gpu::distinctBelow({TRACE_VISIBILITY_IMAGE, TRACE_COST_IMAGE, TRACE_FAR_IMAGE,
-                                  TRACE_LEVELS_IMAGE, TRACE_MINMAX_IMAGE, TRACE_MASK_IMAGE,
-                                  TRACE_ZRANGE_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({TRACE_VISIBILITY_IMAGE, TRACE_COST_IMAGE}, gpu::kImageUnits));
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, TRACE_PARAMS_BINDING},
                                  gpu::kUniformBindings));
 static_assert(gpu::distinctBelow({TRACE_RECORDS_BINDING, TRACE_TOTALS_BINDING,

@@ -31,6 +31,7 @@ void GpuScene::upload(const Scene& scene) {
     glNamedBufferStorage(item.vertexBuffer, GLsizeiptr(vertices.size() * sizeof(float)),
                          vertices.data(), 0);
     checkGlAllocation("the vertices of '" + object.name + "'", vertices.size() * sizeof(float));
+    clearGlErrors();
     glNamedBufferStorage(item.indexBuffer,
                          GLsizeiptr(object.mesh.indices.size() * sizeof(std::uint32_t)),
                          object.mesh.indices.data(), 0);

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "shared/hash_kinds.h"
 
@@ -34,6 +35,13 @@ inline std::optional<HashKind> hashKindFromName(const std::string& name) {
 // for ShaderVariants: `kind` is frame.light.hashKind.
 inline std::string hashSpecialization(int kind) {
   return "#define HASH_KIND " + std::to_string(kind) + "\n";
+}
+
+// hashSpecialization() of every kind: the variants of a program compiled per hash.
+inline std::vector<std::string> hashSpecializations() {
+  std::vector<std::string> all;
+  for (int kind = 0; kind < HASH_KIND_COUNT; ++kind) all.push_back(hashSpecialization(kind));
+  return all;
 }
 
 inline std::string hashKindList() {  // "md5_16, md5_64, pcg3d, ..."

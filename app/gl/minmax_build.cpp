@@ -71,7 +71,7 @@ void MinMaxBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer,
     screen_.drawRect(atlas, minmaxLevelOrigin(level, width, height),
                      minmaxLevelSize(level, width, height));
   }
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  // Framebuffer writes only: later commands see them without a memory barrier.
 }
 
 void buildMinMax(const GlTexture& nearLayer, const GlTexture& farLayer, GlTexture& atlas) {

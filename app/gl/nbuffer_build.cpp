@@ -60,7 +60,7 @@ void NBufferBuilder::build(const GlTexture& nearLayer, const GlTexture& farLayer
       screen_.drawRect(levels, level, {x.first, y.first}, {x.count, y.count});
     }
   }
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  // Framebuffer writes only: later commands see them without a memory barrier.
 }
 
 void buildNBuffer(const GlTexture& nearLayer, const GlTexture& farLayer, GlTexture& levels) {

@@ -20,6 +20,10 @@ std::vector<ShaderProgram*>& livePrograms() {
   static std::vector<ShaderProgram*> programs;
   return programs;
 }
+std::vector<ShaderVariants*>& liveVariants() {
+  static std::vector<ShaderVariants*> variants;
+  return variants;
+}
 
 void expandIncludes(const std::filesystem::path& path, int fileIndex, std::set<std::string>& seen,
                     std::ostringstream& out, std::vector<std::string>& files) {
@@ -198,24 +202,61 @@ bool ShaderProgram::reloadAll(std::string& log) {
   return ok;
 }
 
+ShaderVariants::ShaderVariants(std::vector<ShaderProgram::Source> sources,
+                               std::vector<std::string> variants)
+    : sources_(std::move(sources)), variants_(std::move(variants)) {
+  liveVariants().push_back(this);
+}
+
+ShaderVariants::~ShaderVariants() {
+  auto& all = liveVariants();
+  all.erase(std::remove(all.begin(), all.end(), this), all.end());
+}
+
 ShaderProgram& ShaderVariants::operator[](const std::string& defines) {
+  if (!variants_.empty() && std::find(variants_.begin(), variants_.end(), defines) == variants_.end())
+    throw std::logic_error("shader variant not declared for " + sources_.back().file + ": " +
+                           defines);
   std::unique_ptr<ShaderProgram>& program = programs_[defines];
-  if (!program) program = std::make_unique<ShaderProgram>(sources_, defines);
+  if (!program) {
+    program = std::make_unique<ShaderProgram>(sources_, defines);
+    program->fromVariants_ = true;
+  }
   return *program;
 }
 
-void dispatchRows(int width, int height, int rowsPerBand) {
+void dispatchRows(int width, int height, GLbitfield barriers, int rowsPerBand) {
   rowsPerBand = std::max(8, rowsPerBand / 8 * 8);
   for (int row = 0; row < height; row += rowsPerBand) {
     const int rows = std::min(rowsPerBand, height - row);
     glUniform1i(ROW_OFFSET_LOCATION, row);
     glDispatchCompute((width + 7) / 8, (rows + 7) / 8, 1);
   }
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  glMemoryBarrier(barriers);
 }
 
-void dispatchTiles(int width, int height, int tile) {
-  const int tiles = ((width + tile - 1) / tile) * ((height + tile - 1) / tile);
-  glDispatchCompute(GLuint((tiles + TILE_PASS_GROUP_SIZE - 1) / TILE_PASS_GROUP_SIZE), 1, 1);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+std::vector<std::string> defineCombinations(const std::vector<std::vector<std::string>>& axes) {
+  std::vector<std::string> result{""};
+  for (const std::vector<std::string>& axis : axes) {
+    std::vector<std::string> next;
+    for (const std::string& prefix : result)
+      for (const std::string& choice : axis) next.push_back(prefix + choice);
+    result = std::move(next);
+  }
+  return result;
+}
+
+std::vector<ProgramVariant> buildablePrograms() {
+  std::vector<ProgramVariant> result;
+  std::set<std::string> seen;
+  auto add = [&](const std::vector<ShaderProgram::Source>& sources, const std::string& defines) {
+    std::string key = defines;
+    for (const ShaderProgram::Source& source : sources) key += "|" + source.file;
+    if (seen.insert(key).second) result.push_back({sources, defines});
+  };
+  for (const ShaderProgram* program : livePrograms())
+    if (!program->fromVariants()) add(program->sources(), program->defines());
+  for (const ShaderVariants* variants : liveVariants())
+    for (const std::string& defines : variants->variants()) add(variants->sources(), defines);
+  return result;
 }

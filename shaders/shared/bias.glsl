@@ -7,7 +7,7 @@ float adaptiveBias(float z, vec3 wsNormal, vec3 wsToLight, float minCosine) {
   return sqrt(2.0) * z * tanHalfFov / (float(light.mapSize.x) * cosine);
 }
 
-// Normal offset (issue 12; light.normal_offset): the receiver point moved along its normal,
+// Normal offset (light.normal_offset): the receiver point moved along its normal,
 // before classify bounds its rays and the trace starts them. The bias of Eq 3.2 shortens a
 // ray along itself, which barely moves it off a face the ray runs almost parallel to (a
 // box's side face towards the part of the light in front of it): such rays stayed inside

@@ -26,8 +26,8 @@ ivec4 reachableTexels(vec2 receiverUv, float receiverZ, float occluderZ, ivec2 m
 // N-buffer fetches: at the level whose window is just under the rectangle's longer side,
 // two windows per axis, one starting at lo and one ending at hi, cover it exactly (for a
 // square map and square rectangle; a superset otherwise, still conservative).
-vec3 nbufferBoundsOverRect(readonly image2DArray levels, ivec2 lo, ivec2 hi) {
-  ivec3 size = imageSize(levels);
+vec3 nbufferBoundsOverRect(sampler2DArray levels, ivec2 lo, ivec2 hi) {
+  ivec3 size = textureSize(levels, 0);
   int extent = max(hi.x - lo.x, hi.y - lo.y) + 1;
   // Smallest level with 2^(level+1) >= extent; level 0 for a single texel.
   int level = extent <= 1 ? 0 : findMSB(extent - 1);
@@ -40,28 +40,28 @@ vec3 nbufferBoundsOverRect(readonly image2DArray levels, ivec2 lo, ivec2 hi) {
                           nbufferTexelForWindow(level, lo.y, size.y)), size.xy - 1);
   ivec2 second = min(ivec2(nbufferTexelForWindow(level, secondLo.x, size.x),
                            nbufferTexelForWindow(level, secondLo.y, size.y)), size.xy - 1);
-  vec4 a = imageLoad(levels, ivec3(first, level));
-  vec4 b = imageLoad(levels, ivec3(second.x, first.y, level));
-  vec4 c = imageLoad(levels, ivec3(first.x, second.y, level));
-  vec4 d = imageLoad(levels, ivec3(second, level));
+  vec4 a = texelFetch(levels, ivec3(first, level), 0);
+  vec4 b = texelFetch(levels, ivec3(second.x, first.y, level), 0);
+  vec4 c = texelFetch(levels, ivec3(first.x, second.y, level), 0);
+  vec4 d = texelFetch(levels, ivec3(second, level), 0);
   return vec3(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)),
               max(max(a.z, b.z), max(c.z, d.z)));
 }
 
 // The bounds over the whole map: the coarsest level's one window.
-vec3 nbufferWholeMap(readonly image2DArray levels) {
-  ivec3 size = imageSize(levels);
-  return imageLoad(levels, ivec3(nbufferWholeMapTexel(size.z - 1, size.xy), size.z - 1)).xyz;
+vec3 nbufferWholeMap(sampler2DArray levels) {
+  ivec3 size = textureSize(levels, 0);
+  return texelFetch(levels, ivec3(nbufferWholeMapTexel(size.z - 1, size.xy), size.z - 1), 0).xyz;
 }
 
-// The same bounds from the min-max mipmap (issue 14): conservative, not exact. At the finest
+// The same bounds from the min-max mipmap: conservative, not exact. At the finest
 // level whose aligned cells cover [lo, hi] with at most `cells` of them per axis, min/max
 // over those cells: they hold the rectangle, so zNearMin can only be lower and the maxima
 // higher than over the rectangle itself; a pixel can move from lit or umbra to penumbra,
 // never back (tests/stages/test_classify.cpp counts how many). More cells per axis: a
 // finer level, a cover closer to the rectangle, more fetches (up to cells^2). Level 0 is the
 // layers (near, near, far), not stored in the atlas (minmax.glsl).
-vec3 minmaxBoundsOverRect(readonly image2D atlas, sampler2D nearLayer, readonly image2D farLayer, ivec2 lo,
+vec3 minmaxBoundsOverRect(sampler2D atlas, sampler2D nearLayer, sampler2D farLayer, ivec2 lo,
                           ivec2 hi, ivec2 mapSize, int cells) {
   int top = levelSpanning(max(mapSize.x, mapSize.y));
   // (hi >> L) - (lo >> L) >= (hi - lo) >> L, so no level below the smallest with
@@ -71,32 +71,20 @@ vec3 minmaxBoundsOverRect(readonly image2D atlas, sampler2D nearLayer, readonly 
   while (level < top && any(greaterThan((hi >> level) - (lo >> level), ivec2(cells - 1)))) ++level;
   ivec2 first = lo >> level, last = hi >> level;
   vec3 bounds = vec3(1.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
-  // Two loops, not one with the level test inside: llvmpipe runs both sides of a branch in
-  // every iteration (8 lanes in lockstep), so the test inside cost each cell three fetches.
-  // A loop none of whose lanes enters runs one masked pass. Both loops test at the bottom
-  // (classify.frag's boundsForRays says why), the one of no rows guarded.
-  bool levelZero = level == 0;
-  int y = first.y;
-  do {
-    int x = first.x;
-    do {
-      if (levelZero) {
+  if (level == 0) {  // single texels: the layers themselves, (near, near, far)
+    for (int y = first.y; y <= last.y; ++y)
+      for (int x = first.x; x <= last.x; ++x) {
         float nearDepth = texelFetch(nearLayer, ivec2(x, y), 0).r;
         bounds = vec3(min(bounds.x, nearDepth), max(bounds.y, nearDepth),
-                      max(bounds.z, imageLoad(farLayer, ivec2(x, y)).r));
+                      max(bounds.z, texelFetch(farLayer, ivec2(x, y), 0).r));
       }
-    } while (levelZero && ++x <= last.x);
-  } while (levelZero && ++y <= last.y);
-  ivec2 origin = minmaxLevelOrigin(max(level, 1), mapSize);
-  y = first.y;
-  do {
-    int x = first.x;
-    do {
-      if (!levelZero) {
-        vec3 cell = imageLoad(atlas, origin + ivec2(x, y)).xyz;
-        bounds = vec3(min(bounds.x, cell.x), max(bounds.yz, cell.yz));
-      }
-    } while (!levelZero && ++x <= last.x);
-  } while (!levelZero && ++y <= last.y);
+    return bounds;
+  }
+  ivec2 origin = minmaxLevelOrigin(level, mapSize);
+  for (int y = first.y; y <= last.y; ++y)
+    for (int x = first.x; x <= last.x; ++x) {
+      vec3 cell = texelFetch(atlas, origin + ivec2(x, y), 0).xyz;
+      bounds = vec3(min(bounds.x, cell.x), max(bounds.yz, cell.yz));
+    }
   return bounds;
 }

@@ -4,7 +4,7 @@
 // surface itself (a sheet, the face the eye sees) stays solid. Outside the eye's view
 // nothing is known, and the point stays solid, as with two layers.
 //
-// Silhouettes (issue 12): a point on an occluder within a pixel of its outline in the eye's
+// Silhouettes: a point on an occluder within a pixel of its outline in the eye's
 // image may fall in a pixel that shows what lies behind the occluder (the ground, or the
 // background); one fetch then called the occluder's own point "seen in front of the
 // surface", i.e. free, and light leaked around every silhouette (a 0.05-wide light over a
@@ -13,7 +13,7 @@
 // every covered pixel of the 3x3 block around its projection: within a pixel of an outline
 // the occluder's own pixels keep it solid.
 //
-// Oblique surfaces (session 4): seen at a grazing angle a surface's distance from the eye
+// Oblique surfaces: seen at a grazing angle a surface's distance from the eye
 // changes across one pixel by more than the tolerance (the built-in plate's top at 128x96:
 // about 0.03 against 0.02), so a point on the visible surface but in the near half of its
 // pixel lay "in front" of the pixel centre's sample; inside the surface a nearer neighbour

@@ -1,4 +1,4 @@
-// The tile of a filter group (issue 14): with uTiled, the tile its group was given
+// The tile of a filter group: with uTiled, the tile its group was given
 // (filter_tiles.comp listed it); otherwise the groups cover the image in row bands
 // (dispatchRows: one group per 8 x 8 pixels, the band's first row in uRowOffset).
 #include "filter_layout.h"

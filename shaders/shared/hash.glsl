@@ -225,7 +225,7 @@ uvec4 pcg3dRand(uvec4 seed, uint key) {
   return uvec4(h, pcg3d(h).x);
 }
 
-// ---- Hashes that teach by failing (issue 11) ----------------------------------------------
+// ---- Hashes that teach by failing ----------------------------------------------
 
 // The Appendix A listing cut to its first `steps` steps (4 or 8; 16 would be md5rand16): the
 // same message words, constants as printed, shifts, digest start and `digest += tD` after
@@ -316,9 +316,8 @@ uvec4 xxhash32Rand(uvec4 seed, uint key) {
 
 // The hash selected by `light.hash` (HASH_* of shared/hash_kinds.h). A program compiled with
 // HASH_KIND defined (the trace, PCSS, the hash view: hashSpecialization() in
-// app/gl/hash_kind.h) has a constant kind, so the compiler keeps its case alone: with the
-// kind a uniform, llvmpipe ran every case of the switch for every ray (cube 640x480, map 512:
-// the trace took 0.81-0.88x as long without them; bench/llvmpipe-reads/README.md).
+// app/gl/hash_kind.h) has a constant kind, so the compiler keeps its case alone and the
+// program holds the one hash it uses.
 uvec4 hashRand(uvec4 seed, uint key, int hashKind) {
 #ifdef HASH_KIND
   hashKind = HASH_KIND;

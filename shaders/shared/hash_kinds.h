@@ -5,7 +5,7 @@
 #define HASH_MD5_16 0     // reduced 16-round MD5, exactly as printed in thesis Appendix A
 #define HASH_MD5_64 1     // full 64-round MD5 compression of the same 16-byte message
 #define HASH_PCG3D 2      // pcg3d (Jarzynski & Olano 2020), a cheap modern baseline
-// Hashes that teach by failing (issue 11; thesis §3.1: "versions using even fewer rounds ...
+// Hashes that teach by failing (thesis §3.1: "versions using even fewer rounds ...
 // resulted in visible patterns"), and one cheap integer hash in common use:
 #define HASH_MD5_4 3      // the first 4 steps of the Appendix A listing
 #define HASH_MD5_8 4      // the first 8 steps of the Appendix A listing

@@ -1,4 +1,4 @@
-// Input patterns of the hash statistics (issue 11; Jarzynski & Olano 2020 test every hash on
+// Input patterns of the hash statistics (Jarzynski & Olano 2020 test every hash on
 // several): input number i -> (seed, key) for hashRand. C++ twin in
 // tests/support/hash_stats_oracle.cpp.
 #include "hash_stats_layout.h"

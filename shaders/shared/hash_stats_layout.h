@@ -1,4 +1,4 @@
-// The `hash_stats` stage's GPU passes (shaders/hash_stats_*.comp; issue 11, thesis §3.1,
+// The `hash_stats` stage's GPU passes (shaders/hash_stats_*.comp; thesis §3.1,
 // §4.3, Appendix A): numbers shared by C++ (app/stats/hash_stats_gpu.cpp, with
 // static_asserts) and GLSL. The GPU generates the hash outputs and reduces them to integer
 // counts and per-invocation float partial sums; the CPU adds the partials in double and

@@ -1,4 +1,4 @@
-// The min-max mipmap (issue 14; thesis §5.1's "more conventional image pyramids", the
+// The min-max mipmap (thesis §5.1's "more conventional image pyramids", the
 // "maximum mipmaps" of Tevs et al. 2008): a quadtree over the light layers.
 //
 // Level n has ceil(W / 2^n) x ceil(H / 2^n) texels; texel c of level n holds

@@ -18,7 +18,7 @@
 // the texel lo + a_n: nbufferTexelForWindow below. Texels outside the map are empty: the
 // layers were cleared to near = 1, far = 0 (§3.3).
 //
-// Distinct windows (issue 14). Per axis, level n has max(W - 2^n, 0) + 1 different windows,
+// Distinct windows. Per axis, level n has max(W - 2^n, 0) + 1 different windows,
 // held by the texels nbufferTexelForWindow returns, [a_n, a_n + max(W - 2^n, 0)] (clamped to
 // the map); the bands of a_n texels at the borders repeat the border windows. Every read of
 // the hierarchy (searches, classification, the next level's build) goes through

@@ -1,15 +1,14 @@
 // PCSS (stages/baselines/pcss.cpp), read by C++ (app/gl/gpu_layout_pcss.h) and GLSL.
 #define PCSS_PARAMS_BINDING 4  // uniform: PcssParams
 #define PCSS_TAPS_BINDING 7    // storage: vec2 taps[]: blocker-search taps, then filter taps
-// The G-buffer is read through image units (a third of a texelFetch on llvmpipe,
-// bench/llvmpipe-reads), the near layer, a depth texture, through a texture unit.
+// The G-buffer and the near layer are read with texelFetch; the outputs written as images.
 #define PCSS_NEAR_UNIT 2
+#define PCSS_WS_POSITION_UNIT 0
+#define PCSS_WS_NORMAL_UNIT 1
 #define PCSS_VISIBILITY_IMAGE 0
 #define PCSS_SEARCH_RADIUS_IMAGE 1
 #define PCSS_BLOCKER_DEPTH_IMAGE 2
 #define PCSS_FILTER_RADIUS_IMAGE 3
-#define PCSS_WS_POSITION_IMAGE 4
-#define PCSS_WS_NORMAL_IMAGE 5
 
 struct PcssParams {
   ivec4 taps;    // x = blocker-search taps, y = filter taps, z = per-pixel shift (0/1), w unused

@@ -60,8 +60,8 @@ uvec2 prefixBits(int k) {
 // in j, so they are a prefix or a suffix; the split column k comes from the intersection of
 // the row with the plane (k = -A/S) and is then checked against the samples on either side,
 // so round-off in the division cannot move a bit (it is far below one column: two checked
-// steps each way are plenty). No loops here: llvmpipe stops a shader after 65535 loop
-// iterations in all (gallivm's loop limiter, NOTES.md), so the passes count their loops.
+// steps each way are plenty). No loops here: a driver may stop a shader after a fixed number
+// of loop iterations in all (65535 on Mesa's CPU drivers), so the passes bound their loops.
 uvec2 rowInside(float rowStart, float step, int m, bool strict) {
   if (step == 0.0) return planeInside(rowStart, step, 0, strict) ? prefixBits(m) : uvec2(0u);
   float crossing = clamp(-rowStart / step, -1.0, float(m) + 1.0);

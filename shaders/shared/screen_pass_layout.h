@@ -3,6 +3,3 @@
 // uniform at this location. Stages' own uniforms start after it.
 #define ROW_OFFSET_LOCATION 0
 
-// Every per-tile compute pass (tile_pass.glsl; C++: dispatchTiles): one invocation per
-// square tile of the eye image, this many invocations per group, tiles in row-major order.
-#define TILE_PASS_GROUP_SIZE 64

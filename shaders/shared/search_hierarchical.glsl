@@ -1,5 +1,5 @@
 // Hierarchical search through the N-buffer: thesis Algorithm 2 (§3.5); or through the
-// min-max mipmap (issue 14), the same ascent and descent on quadtree-aligned cells.
+// min-max mipmap, the same ascent and descent on quadtree-aligned cells.
 // State: the stepping s (the searched part of the ray is [sStart, s]), the texel `cell`
 // that contains P(s), and a level. Each iteration looks at the level's window that holds
 // `cell` and as much of the forward ray as possible, and asks whether the ray's depth over
@@ -33,10 +33,9 @@ ivec4 forwardWindow(ivec2 cell, int level, vec2 direction, out ivec2 texel) {
   return window;
 }
 
-// The s where the ray leaves `window` forwards, and which axes it leaves through. Per axis
-// the edge it moves towards, chosen before the one division: llvmpipe runs both sides of a
-// branch for all 8 lanes, so an if/else per direction cost four divisions (section 17 of
-// docs/issue14.md). An axis the ray does not move along is never left (1e30).
+// The s where the ray leaves `window` forwards, and which axes it leaves through (a slab
+// test): per axis, the edge the ray moves towards, then one division; the nearer of the
+// two axes' exits is the window's. An axis the ray does not move along is never left (1e30).
 float windowExit(Ray ray, ivec4 window, out bvec2 exitAxes) {
   vec2 edge = mix(vec2(window.xy), vec2(window.zw + 1), greaterThan(ray.d, vec2(0.0)));
   vec2 tAxis = mix(vec2(1e30), (edge - ray.a) / ray.d, notEqual(ray.d, vec2(0.0)));
@@ -76,7 +75,7 @@ bool searchHierarchical(Ray ray, float sStart, float sEnd, int layers) {
         // enters (at the near surface or the texel's edge) and where it leaves (at the far
         // surface or the edge). Testing the entry alone let a ray that entered in free space
         // the eye sees (between two stacked plates) skip the far surface it meets in the
-        // same texel (issue 12).
+        // same texel.
         float sIn = depthIn < bounds.x ? raySAtLsDepth(ray, bounds.x) : s;
         float sOut = depthOut > bounds.z ? raySAtLsDepth(ray, bounds.z) : sExit;
         hit = hiddenFromEye(rayWorldPoint(ray, clamp(sIn, s, sExit))) ||

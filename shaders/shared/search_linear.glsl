@@ -49,8 +49,7 @@ bool searchLinear(Ray ray, float sStart, float sEnd, int layers, bool refine) {
   LayerState previous;
   float sPrevious = sStart;
   bool blocked = sampleBlocks(ray, sStart, layers, previous);
-  int k = 0;
-  do {  // tested at the bottom, as the loops of classify.frag (steps >= 1)
+  for (int k = 0; k <= steps; ++k) {
     gIterations += 1u;
     float s = k == 0 ? sStart : sStart + float(k) * ds;
     LayerState current;
@@ -62,9 +61,7 @@ bool searchLinear(Ray ray, float sStart, float sEnd, int layers, bool refine) {
     if (refine && k > 0 && layers >= 2 && isSuspicious(previous, current)) {
       float lo = sPrevious, hi = s;
       LayerState loState = previous, hiState = current;
-      int i = 0;
-      do {  // tested at the bottom, as the loop above; no bisection at binary_steps = 0
-        if (trace.limits.y == 0) break;
+      for (int i = 0; i < trace.limits.y; ++i) {
         float mid = 0.5 * (lo + hi);
         LayerState midState;
         bool midBlocks = sampleBlocks(ray, mid, layers, midState) ||
@@ -76,11 +73,11 @@ bool searchLinear(Ray ray, float sStart, float sEnd, int layers, bool refine) {
         // Keep the half that still holds the suspicious transition.
         if (isSuspicious(loState, midState)) { hi = mid; hiState = midState; }
         else { lo = mid; loState = midState; }
-      } while (++i < trace.limits.y);
+      }
     }
     previous = current;
     sPrevious = s;
-  } while (++k <= steps);
+  }
   recordStep(-1, STEP_MISS, steps, ivec4(-1), vec4(0.0), vec4(sEnd, sEnd, rayPoint(ray, sEnd)));
   return false;
 }

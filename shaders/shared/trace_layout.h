@@ -6,31 +6,31 @@
 #define TRACE_PARAMS_BINDING 1    // uniform: TraceParams
 #define TRACE_RECORDS_BINDING 0   // storage: uvec4 header (x = count), TraceStep[]
 #define TRACE_TOTALS_BINDING 1    // storage: uint[TOTAL_COUNT]
-// trace.comp writes each pixel's counts as one uvec4 record where an atomicAdd per total
-// and pixel cost 2.2 of the deferred trace's 11.9 ms on llvmpipe (issue 14; it runs atomics
-// lane by lane); trace_totals.comp adds the records up into the totals, a few records per
-// invocation. Record: x = rays | searched << 10 | early backface << 20, y = early inside |
-// early region << 10 (each at most the pixel's rays, TRACE_COUNT_BITS wide), z = fetches,
-// w = iterations. Record index: the pixel's place in classify's list, or y * width + x where
-// every pixel is traced. (trace_forward.frag keeps the atomics.)
-#define TRACE_PARTIALS_BINDING 2  // storage: uvec4 per pixel
+// trace.comp writes each pixel's counts as one record of two uvec4 (per-pixel records,
+// reduced by trace_totals.comp, rather than an atomicAdd per total and pixel).
+// Record: [0].x = rays | searched << 10 | early backface << 20, [0].y = early inside |
+// early region << 10 (each at most the pixel's rays, TRACE_COUNT_BITS wide), [0].z = fetches,
+// [0].w = iterations, [1].x = the early-out tests' fetches, [1].yzw = 0. Record index: the
+// pixel's place in classify's list, or y * width + x where every pixel is traced.
+// (trace_forward.frag adds to the totals directly.)
+#define TRACE_PARTIALS_BINDING 2  // storage: TRACE_RECORD_UVEC4S uvec4 per pixel
+#define TRACE_RECORD_UVEC4S 2
 #define TRACE_COUNT_BITS 10       // > 2 log2(the most rays per side)
-#define TRACE_TOTALS_RECORDS_LOCATION 0      // trace_totals.comp: records to add up
+#define TRACE_TOTALS_RECORDS_LOCATION 0      // trace_totals.comp: records to add up at most
+#define TRACE_TOTALS_FROM_LIST_LOCATION 1    // 1: as many as classify listed
 #define TRACE_TOTALS_RECORDS_PER_INVOCATION 64
 // (storage CLASSIFY_LIST_BINDING: the pixel list of classify_layout.h)
-// What the rays read is read through image units where it can: on llvmpipe an imageLoad
-// costs a third of a texelFetch (bench/llvmpipe-reads). The near layer is a depth texture,
-// which no image format reads; the G-buffer is read once per pixel (and by eye_layer.glsl).
-#define TRACE_WS_POSITION_UNIT 0  // eye_layer.glsl
+// Texture units (read with texelFetch) and image units (written) of the trace:
+#define TRACE_WS_POSITION_UNIT 0  // eye_layer.glsl, trace.comp
 #define TRACE_WS_NORMAL_UNIT 1
-#define TRACE_NEAR_UNIT 2         // trace_ray.glsl
+#define TRACE_NEAR_UNIT 2         // trace_ray.glsl: the layers and the hierarchy
+#define TRACE_FAR_UNIT 3
+#define TRACE_LEVELS_UNIT 4       // the N-buffer (2D array texture)
+#define TRACE_MINMAX_UNIT 5       // the min-max mipmap atlas (minmax.glsl)
+#define TRACE_MASK_UNIT 6         // trace.comp: classify's class and bounds
+#define TRACE_ZRANGE_UNIT 7
 #define TRACE_VISIBILITY_IMAGE 0  // trace.comp (written)
 #define TRACE_COST_IMAGE 1
-#define TRACE_FAR_IMAGE 2         // trace_ray.glsl
-#define TRACE_LEVELS_IMAGE 3      // the N-buffer (image2DArray)
-#define TRACE_MINMAX_IMAGE 4      // the min-max mipmap atlas (minmax.glsl)
-#define TRACE_MASK_IMAGE 5        // trace.comp
-#define TRACE_ZRANGE_IMAGE 6
 #define TRACE_PIXELS_LOCATION 1   // which pixels (TRACE_PIXELS_*); ROW_OFFSET_LOCATION = 0
                                   // holds the first row, or the band's first group
 #define TRACE_PIXELS_ALL 0        // every pixel, rows from the row offset
@@ -43,7 +43,7 @@
 
 // The hierarchy the searches and the region early out read (trace.limits.z).
 #define HIERARCHY_NBUFFER 0       // thesis §3.5: windows of 2^n around each texel
-#define HIERARCHY_MINMAX 1        // issue 14: quadtree-aligned cells (min-max mipmap)
+#define HIERARCHY_MINMAX 1        // quadtree-aligned cells (min-max mipmap)
 
 #define SAMPLING_JITTERED 0
 #define SAMPLING_RANDOM 1
@@ -65,12 +65,14 @@
 // Totals (binding 1), indices:
 #define TOTAL_RAYS 0          // rays set up (n x n per traced pixel)
 #define TOTAL_RAYS_SEARCHED 1 // rays that reached a search loop
-#define TOTAL_FETCHES 2       // texel fetches in early outs and searches
+#define TOTAL_FETCHES 2       // texel fetches in early outs and searches (all of them)
 #define TOTAL_ITERATIONS 3    // search loop iterations
 #define TOTAL_EARLY_BACKFACE 4
 #define TOTAL_EARLY_INSIDE 5
 #define TOTAL_EARLY_REGION 6
 #define TOTAL_ITERATION_CAP 7      // rays stopped by the iteration cap (should stay 0)
+#define TOTAL_EARLY_OUT_FETCHES 8  // the fetches of the early-out tests (inside, region; §3.7);
+                                   // TOTAL_FETCHES minus these are the searches' fetches
 #define TOTAL_COUNT 12
 
 struct TraceParams {

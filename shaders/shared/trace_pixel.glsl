@@ -36,14 +36,11 @@ bool regionIsEmpty(Ray ray, float sStart, float sEnd, int layers) {
   if (traceHierarchy() == HIERARCHY_MINMAX) {
     ivec2 first = lo >> level, last = hi >> level;
     bounds = vec4(1.0, 0.0, 0.0, 0.0);  // empty: near = 1, far = 0 (§3.3)
-    int y = first.y;
-    do {  // tested at the bottom, as the loops of classify.frag (at least one cell)
-      int x = first.x;
-      do {
+    for (int y = first.y; y <= last.y; ++y)
+      for (int x = first.x; x <= last.x; ++x) {
         vec4 b = fetchHierarchy(ivec2(x, y), level);
         bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
-      } while (++x <= last.x);
-    } while (++y <= last.y);
+      }
   } else {
     bounds = fetchHierarchy(ivec2(nbufferTexelForWindow(level, lo.x, size.x),
                                   nbufferTexelForWindow(level, lo.y, size.y)), level);
@@ -82,8 +79,7 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
   // Capped by zNearMin.
   wsPosition = normalOffsetPoint(wsPosition, lightMapCoords(wsPosition).z, wsNormal, zBounds.x);
   float receiverZ = lightMapCoords(wsPosition).z;
-  int i = 0;
-  do {  // tested at the bottom, as the loops of classify.frag (rayCount >= 1)
+  for (int i = 0; i < rayCount; ++i) {
     gRayIndex = i;
     // 1. The ray: light sample -> receiver, shortened at the receiver by the bias (Eq 3.2).
     vec3 wsLightSample = lightSampleWorld(lightSampleUnit(pixel, i, raysPerSide));
@@ -118,8 +114,9 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
     }
     // 4. Early outs (§3.7): the end point inside a solid (blocked; one level-0 fetch) and
     //    nothing in the ray's region can block it (lit; one hierarchy fetch, min-max up to
-    //    4). The region test decides first where that cannot change a decision, since it
-    //    ends far more rays (cube 640x480: 59,630 against none):
+    //    4). Their fetches are counted apart from the search's (gEarlyOutFetches). The
+    //    region test runs first, for every ray, since it ends far more rays (cube 640x480:
+    //    59,630 against none), and decides first where that cannot change a decision:
     //    - shortening kept the end point: the region test's rectangle covers the end texel,
     //      and inside means near <= its depth <= far there, so the ray's last depth is not
     //      above zNearMin nor its first below zFarMax: the region test cannot pass it;
@@ -129,18 +126,16 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
     //      depth, which is at most zNearMin), whose far layer is at most zFarMax: it cannot
     //      be inside, and the inside test is not needed at all.
     //    Elsewhere (the end cut above zNearMin: a receiver within the bias of an occluder,
-    //    whose end texel may lie outside the region) the inside test decides first.
-    //    Each test has one call site: llvmpipe runs the body of an `if` for all 8 lanes
-    //    whether any lane enters it or not (docs/issue14.md section 12), and a second call
-    //    of the inside test cost its fetches again for every ray. So the region test runs
-    //    first for every ray (counted as a fetch also for a ray then found inside, which the
-    //    inside test decides).
+    //    whose end texel may lie outside the region) the inside test decides first, so its
+    //    ray's region fetch is counted though the inside test then ends the ray.
+    uint fetchesBefore = gFetches;
     bool endKept = sStart <= sEndPoint && sEndPoint <= sEnd;
     bool insideDecidesFirst = !endKept && !(sEnd < sEndPoint && zBounds.y >= zBounds.x);
     bool regionEmpty = sStart > sEnd || (trace.switches.z != 0 && regionIsEmpty(ray, sStart, sEnd, layers));
-    if (trace.switches.y != 0 && (insideDecidesFirst || (endKept && !regionEmpty)) &&
-        endPointInside(ray, sEndPoint, wsEnd, layers, counts))
-      continue;
+    bool inside = trace.switches.y != 0 && (insideDecidesFirst || (endKept && !regionEmpty)) &&
+                  endPointInside(ray, sEndPoint, wsEnd, layers, counts);
+    gEarlyOutFetches += gFetches - fetchesBefore;
+    if (inside) continue;
     if (regionEmpty) {
       counts.region += 1u;
       ++unblocked;
@@ -153,7 +148,7 @@ float traceVisibility(vec3 wsPosition, vec3 wsNormal, ivec2 pixel, vec2 zBounds,
                        ? searchHierarchical(ray, sStart, sEnd, layers)
                        : searchLinear(ray, sStart, sEnd, layers, search == SEARCH_LINEAR_BINARY);
     if (!blocked) ++unblocked;
-  } while (++i < rayCount);
+  }
   return float(unblocked) / float(rayCount);
 }
 
@@ -161,6 +156,7 @@ void addTotals(RayCounts counts, uint rays) {
   atomicAdd(totals[TOTAL_RAYS], rays);
   atomicAdd(totals[TOTAL_RAYS_SEARCHED], counts.searched);
   atomicAdd(totals[TOTAL_FETCHES], gFetches);
+  atomicAdd(totals[TOTAL_EARLY_OUT_FETCHES], gEarlyOutFetches);
   atomicAdd(totals[TOTAL_ITERATIONS], gIterations);
   atomicAdd(totals[TOTAL_EARLY_BACKFACE], counts.backface);
   atomicAdd(totals[TOTAL_EARLY_INSIDE], counts.inside);

@@ -9,22 +9,17 @@
 #include "minmax.glsl"
 #include "trace_layout.h"
 
-// The trace's parameters, loaded by main() first thing (loadTraceBlock): the searches read
-// them inside loops, where a uniform block costs a lane-by-lane read per use on llvmpipe
-// (frame.glsl, UNIFORM_BLOCKS_LOADED_AT_START).
-layout(std140, binding = TRACE_PARAMS_BINDING) uniform TraceBlock { TraceParams traceBlock; };
-TraceParams trace;
-void loadTraceBlock() {
-  trace = TraceParams(traceBlock.config, traceBlock.switches, traceBlock.limits,
-                      traceBlock.stepping, traceBlock.record, traceBlock.eye);
-}
+// The trace's parameters (trace_layout.h), read where they are used.
+layout(std140, binding = TRACE_PARAMS_BINDING) uniform TraceBlock { TraceParams trace; };
 layout(std430, binding = TRACE_RECORDS_BINDING) buffer TraceRecords { uvec4 recordHeader; TraceStep records[]; };
 layout(std430, binding = TRACE_TOTALS_BINDING) buffer TraceTotals { uint totals[TOTAL_COUNT]; };
 
 layout(binding = TRACE_NEAR_UNIT) uniform sampler2D nearLayer;
-layout(binding = TRACE_FAR_IMAGE, r32f) uniform readonly image2D farLayer;
-layout(binding = TRACE_LEVELS_IMAGE, rgba32f) uniform readonly image2DArray nbufferLevels;
-layout(binding = TRACE_MINMAX_IMAGE, rgba32f) uniform readonly image2D minmaxAtlas;
+// The light's depth layers (§3.3) and the hierarchy over them (§3.5), all read with
+// texelFetch: every read is of one whole texel.
+layout(binding = TRACE_FAR_UNIT) uniform sampler2D farLayer;
+layout(binding = TRACE_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
+layout(binding = TRACE_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
 
 struct Ray {
   vec2 a, d;            // texel space start and direction (B - A)
@@ -32,17 +27,18 @@ struct Ray {
   vec3 wsA, wsB;        // world end points (three layers need world points)
 };
 
-// Statistics and recording state of the current invocation.
-uint gFetches = 0u, gIterations = 0u;
+// Statistics and recording state of the current invocation: texel fetches (all of them, and
+// those of the early-out tests of §3.7 among them; the rest are the searches'), search
+// iterations.
+uint gFetches = 0u, gEarlyOutFetches = 0u, gIterations = 0u;
 bool gRecording = false;
 int gRayIndex = 0;
 
-// Specializations (issue 14). The pipeline compiles one trace program per hierarchy,
-// search and layer count (TRACE_HIERARCHY, TRACE_SEARCH, TRACE_LAYERS), so that no program
-// carries the code of the ones not chosen: on llvmpipe that code cost time although no ray
-// ran it (bench/trace-variants, bench/llvmpipe-branches).
-// Undefined (the test shaders): chosen at run time from the parameter block, which the
-// pipeline fills with the same values.
+// Specializations. The pipeline compiles one trace program per hierarchy, search and
+// layer count (TRACE_HIERARCHY, TRACE_SEARCH, TRACE_LAYERS), each holding the one path of
+// the thesis's algorithm that the run takes (§3.2-3.5), so a student reads, and a driver
+// compiles, no code a ray never runs. Undefined (the test shaders): chosen at run time from
+// the parameter block, which the pipeline fills with the same values.
 #ifdef TRACE_HIERARCHY
 #define traceHierarchy() TRACE_HIERARCHY
 #else
@@ -62,9 +58,8 @@ int gRayIndex = 0;
 // TRACE_RECORDING 0 compiles the step records out. The deferred pass over many pixels uses
 // that variant and traces the recorded pixel again, alone, with recording on (the forward
 // pass cannot trace one pixel alone: with a recorded pixel it runs the recording variant
-// throughout): compiled in, the records' branches cost time even where no invocation
-// records (on llvmpipe the trace takes 0.78-0.92 of its time without them;
-// bench/trace-records). Undefined: on.
+// throughout), so the pass that draws the image carries no code for the trace window.
+// Undefined: on.
 #ifndef TRACE_RECORDING
 #define TRACE_RECORDING 1
 #endif
@@ -130,16 +125,16 @@ ivec2 texelAt(vec2 p) { return clamp(ivec2(floor(p)), ivec2(0), ivec2(light.mapS
 
 vec2 fetchLayers(ivec2 texel) {
   gFetches += 2u;
-  return vec2(texelFetch(nearLayer, texel, 0).r, imageLoad(farLayer, texel).r);
+  return vec2(texelFetch(nearLayer, texel, 0).r, texelFetch(farLayer, texel, 0).r);
 }
 // One texel of the hierarchy (traceHierarchy()): an N-buffer texel (nbuffer.glsl), or a
 // min-max mipmap texel in level coordinates (minmax.glsl; level 0 is the layers).
 vec4 hierarchyTexel(ivec2 texel, int level) {
-  if (traceHierarchy() != HIERARCHY_MINMAX) return imageLoad(nbufferLevels, ivec3(texel, level));
+  if (traceHierarchy() != HIERARCHY_MINMAX) return texelFetch(nbufferLevels, ivec3(texel, level), 0);
   if (level > 0)
-    return imageLoad(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel);
+    return texelFetch(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel, 0);
   float nearDepth = texelFetch(nearLayer, texel, 0).r;
-  return vec4(nearDepth, nearDepth, imageLoad(farLayer, texel).r, 0.0);
+  return vec4(nearDepth, nearDepth, texelFetch(farLayer, texel, 0).r, 0.0);
 }
 vec4 fetchHierarchy(ivec2 texel, int level) {  // counted: level 0 of the min-max mipmap is 2
   gFetches += traceHierarchy() == HIERARCHY_MINMAX && level == 0 ? 2u : 1u;

@@ -1,5 +1,4 @@
 // Runs the trace stage's searches on rays given by the test (see ray_query_layout.h).
-#define UNIFORM_BLOCKS_LOADED_AT_START  // as the trace (frame.glsl)
 #include "../shared/trace_ray.glsl"
 #include "../shared/eye_layer.glsl"
 #include "../shared/search_hierarchical.glsl"
@@ -11,8 +10,6 @@ layout(std430, binding = 3) writeonly buffer Results { RayQueryResult results[];
 layout(location = 0) uniform int uCount;
 
 void main() {
-  loadFrameBlocks();
-  loadTraceBlock();
   int index = int(gl_GlobalInvocationID.x);
   if (index >= uCount) return;
   RayQuery query = queries[index];

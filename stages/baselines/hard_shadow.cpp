@@ -5,9 +5,9 @@
 #include "shared/hard_shadow_layout.h"
 #include "shared/screen_pass_layout.h"
 
-static_assert(HARD_SHADOW_NEAR_UNIT < gpu::kTextureUnits);
-static_assert(gpu::distinctBelow({HARD_SHADOW_VISIBILITY_IMAGE, HARD_SHADOW_WS_POSITION_IMAGE,
-                                  HARD_SHADOW_WS_NORMAL_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({HARD_SHADOW_NEAR_UNIT, HARD_SHADOW_WS_POSITION_UNIT,
+                                  HARD_SHADOW_WS_NORMAL_UNIT}, gpu::kTextureUnits));
+static_assert(HARD_SHADOW_VISIBILITY_IMAGE < gpu::kImageUnits);
 static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, HARD_SHADOW_OFFSET_LOCATION},
                                  gpu::kUniformLocations));
 
@@ -41,14 +41,14 @@ public:
   void run(Frame& frame) override {
     program_.use();
     bindLightInput(frame, *this);
-    bindImageForReading(HARD_SHADOW_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
+    bindTextureForReading(HARD_SHADOW_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));
     glBindTextureUnit(HARD_SHADOW_NEAR_UNIT, frame.input(*this, "near").id());
     GlTexture& visibility = frame.output(*this, "visibility", frame.eyeWidth, frame.eyeHeight);
     glBindImageTexture(HARD_SHADOW_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0,
                        GL_WRITE_ONLY, GL_R32F);
-    bindImageForReading(HARD_SHADOW_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
+    bindTextureForReading(HARD_SHADOW_WS_NORMAL_UNIT, frame.input(*this, "wsNormal"));
     glUniform1f(HARD_SHADOW_OFFSET_LOCATION, param("offset").asFloat());
-    dispatchRows(frame.eyeWidth, frame.eyeHeight);
+    dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults);
   }
 
 private:

@@ -26,10 +26,10 @@ static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, PCSS
                                  gpu::kUniformBindings));
 static_assert(gpu::distinctBelow({PCSS_TAPS_BINDING}, gpu::kStorageBindings) &&
               gpu::distinctBelow({DEPTH_BOUNDS_BINDING}, gpu::kStorageBindings));
-static_assert(PCSS_NEAR_UNIT < gpu::kTextureUnits);
+static_assert(gpu::distinctBelow({PCSS_NEAR_UNIT, PCSS_WS_POSITION_UNIT, PCSS_WS_NORMAL_UNIT},
+                                 gpu::kTextureUnits));
 static_assert(gpu::distinctBelow({PCSS_VISIBILITY_IMAGE, PCSS_SEARCH_RADIUS_IMAGE,
-                                  PCSS_BLOCKER_DEPTH_IMAGE, PCSS_FILTER_RADIUS_IMAGE,
-                                  PCSS_WS_POSITION_IMAGE, PCSS_WS_NORMAL_IMAGE},
+                                  PCSS_BLOCKER_DEPTH_IMAGE, PCSS_FILTER_RADIUS_IMAGE},
                                  gpu::kImageUnits));
 
 namespace {
@@ -107,8 +107,8 @@ public:
     program.use();
     glBindBufferBase(GL_UNIFORM_BUFFER, PCSS_PARAMS_BINDING, paramBuffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PCSS_TAPS_BINDING, tapBuffer_.id());
-    bindImageForReading(PCSS_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
-    bindImageForReading(PCSS_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
+    bindTextureForReading(PCSS_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));
+    bindTextureForReading(PCSS_WS_NORMAL_UNIT, frame.input(*this, "wsNormal"));
     glBindTextureUnit(PCSS_NEAR_UNIT, nearLayer.id());
     const std::pair<GLuint, const char*> images[] = {
         {PCSS_VISIBILITY_IMAGE, "visibility"}, {PCSS_SEARCH_RADIUS_IMAGE, "searchRadius"},
@@ -116,11 +116,11 @@ public:
     for (const auto& [unit, output] : images)
       glBindImageTexture(unit, frame.output(*this, output, frame.eyeWidth, frame.eyeHeight).id(),
                          0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    dispatchRows(frame.eyeWidth, frame.eyeHeight);
+    dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults);
   }
 
 private:
-  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "pcss.comp"}}};  // one per hash (hash.glsl)
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "pcss.comp"}}, hashSpecializations()};  // one per hash (hash.glsl)
   ShaderProgram boundsProgram_{{{GL_COMPUTE_SHADER, "depth_bounds.comp"}}};
   GlBuffer boundsBuffer_, tapBuffer_, paramBuffer_;
 };

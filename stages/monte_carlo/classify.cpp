@@ -5,6 +5,7 @@
 // classify.minmax_cells aligned cells per axis covering it, 4 by default: conservative,
 // docs/decisions/026-classify-follows-trace-hierarchy.md), so a frame builds only one. The
 // bounds also feed the trace's ray shortening (§3.7, Fig 3.9).
+#include <cstring>
 #include <cstddef>
 
 #include "core/frame.h"
@@ -20,10 +21,10 @@ namespace gpu {
 static_assert(offsetof(gpu::ClassifyCounts, pixels) == 0);
 static_assert(sizeof(gpu::ClassifyCounts) == 32);  // std430: uint[8], stride 4
 static_assert(CLASS_OUTSIDE + 1 == CLASSIFY_CLASS_COUNT);
-static_assert(gpu::distinctBelow({CLASSIFY_WS_POSITION_IMAGE, CLASSIFY_WS_NORMAL_IMAGE,
-                                  CLASSIFY_LEVELS_IMAGE, CLASSIFY_MINMAX_IMAGE,
-                                  CLASSIFY_FAR_IMAGE}, gpu::kImageUnits));
-static_assert(CLASSIFY_NEAR_UNIT < gpu::kTextureUnits && CLASSIFY_MASK_IMAGE < gpu::kImageUnits);
+static_assert(gpu::distinctBelow({CLASSIFY_WS_POSITION_UNIT, CLASSIFY_WS_NORMAL_UNIT,
+                                  CLASSIFY_LEVELS_UNIT, CLASSIFY_MINMAX_UNIT, CLASSIFY_NEAR_UNIT,
+                                  CLASSIFY_FAR_UNIT}, gpu::kTextureUnits));
+static_assert(CLASSIFY_MASK_UNIT < gpu::kTextureUnits);
 static_assert(gpu::distinctBelow({CLASSIFY_COUNTS_BINDING, CLASSIFY_LIST_BINDING},
                                  gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({CLASSIFY_ITERATIONS_LOCATION,
@@ -107,11 +108,11 @@ public:
     const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
     programs_[std::string("#define CLASSIFY_OVER_MINMAX ") + (minmax ? "1" : "0") + "\n"].use();
     bindLightInput(frame, *this);
-    bindImageForReading(CLASSIFY_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
-    bindImageForReading(CLASSIFY_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
-    bindImageForReading(minmax ? CLASSIFY_MINMAX_IMAGE : CLASSIFY_LEVELS_IMAGE, levels);
-    glBindTextureUnit(CLASSIFY_NEAR_UNIT, frame.input(*this, "near").id());
-    bindImageForReading(CLASSIFY_FAR_IMAGE, frame.input(*this, "far"));
+    bindTextureForReading(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));
+    bindTextureForReading(CLASSIFY_WS_NORMAL_UNIT, frame.input(*this, "wsNormal"));
+    bindTextureForReading(minmax ? CLASSIFY_MINMAX_UNIT : CLASSIFY_LEVELS_UNIT, levels);
+    bindTextureForReading(CLASSIFY_NEAR_UNIT, frame.input(*this, "near"));
+    bindTextureForReading(CLASSIFY_FAR_UNIT, frame.input(*this, "far"));
     if (minmax) glUniform1i(CLASSIFY_MINMAX_CELLS_LOCATION, param("minmax_cells").asInt());
     glUniform1i(CLASSIFY_ITERATIONS_LOCATION, param("iterations").asInt());
     // §3.6's umbra rule assumes rays cannot pass between occluders; with three layers
@@ -130,26 +131,32 @@ public:
     GLint64 currentBytes = 0;
     glGetNamedBufferParameteri64v(tracedPixels.id(), GL_BUFFER_SIZE, &currentBytes);
     if (size_t(currentBytes) != listBytes) tracedPixels.upload(nullptr, listBytes);
-    const std::uint32_t zeroCount = 0;
-    glNamedBufferSubData(tracedPixels.id(), 0, sizeof zeroCount, &zeroCount);
+    // The header: no pixels yet, and the trace's dispatch (0, 1, 1) groups.
+    const std::uint32_t header[4] = {0, 0, 1, 1};
+    static_assert(sizeof header == CLASSIFY_LIST_HEADER_BYTES && CLASSIFY_LIST_DISPATCH_OFFSET == 4);
+    glNamedBufferSubData(tracedPixels.id(), 0, sizeof header, header);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
     listProgram_.use();
-    bindImageForReading(CLASSIFY_MASK_IMAGE, mask);
-    dispatchTiles(w, h, CLASSIFY_LIST_TILE);
+    bindTextureForReading(CLASSIFY_MASK_UNIT, mask);
+    dispatchRows(w, h, kBufferResults | kCommandResults);
 
-    gpu::ClassifyCounts counts{};
-    glGetNamedBufferSubData(counts_.id(), 0, sizeof counts, &counts);
-    frame.counters["classify.lit"] = counts.pixels[CLASS_LIT];
-    frame.counters["classify.penumbra"] = counts.pixels[CLASS_PENUMBRA];
-    frame.counters["classify.umbra"] = counts.pixels[CLASS_UMBRA];
-    frame.counters["classify.outside"] = counts.pixels[CLASS_OUTSIDE];
-    frame.counters["classify.background"] = counts.pixels[CLASS_BACKGROUND];
+    frame.readAfterFrame(counts_, 0, sizeof(gpu::ClassifyCounts),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::ClassifyCounts counts{};
+                           std::memcpy(&counts, bytes.data(), sizeof counts);
+                           frame.counters["classify.lit"] = counts.pixels[CLASS_LIT];
+                           frame.counters["classify.penumbra"] = counts.pixels[CLASS_PENUMBRA];
+                           frame.counters["classify.umbra"] = counts.pixels[CLASS_UMBRA];
+                           frame.counters["classify.outside"] = counts.pixels[CLASS_OUTSIDE];
+                           frame.counters["classify.background"] = counts.pixels[CLASS_BACKGROUND];
+                         });
   }
 
 private:
   // One program per hierarchy (classify.frag says why).
   ShaderVariants programs_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                            {GL_FRAGMENT_SHADER, "classify.frag"}}};
+                            {GL_FRAGMENT_SHADER, "classify.frag"}},
+                           {"#define CLASSIFY_OVER_MINMAX 0\n", "#define CLASSIFY_OVER_MINMAX 1\n"}};
   ShaderProgram listProgram_{{{GL_COMPUTE_SHADER, "classify_list.comp"}}};
   ScreenTriangle screen_;
   GlBuffer counts_;

@@ -3,6 +3,7 @@
 // where it can change a value (docs/decisions/025-filter-only-non-uniform-tiles.md;
 // shaders/filter_tiles.comp says why that is exact, whatever the weights: a window of equal values
 // averages to that value).
+#include <cstring>
 #include <cmath>
 #include <cstddef>
 
@@ -17,9 +18,13 @@ namespace gpu {
 
 static_assert(offsetof(gpu::FilterTilesHeader, pixels) == 12);
 static_assert(sizeof(gpu::FilterTilesHeader) == 16);  // std430: uint[3] stride 4, then uint
-static_assert(gpu::distinctBelow({FILTER_TARGET_IMAGE, FILTER_SOURCE_IMAGE,
-                                  FILTER_WS_POSITION_IMAGE, FILTER_WS_NORMAL_IMAGE,
-                                  FILTER_ZRANGE_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({FILTER_SOURCE_UNIT, FILTER_WS_POSITION_UNIT,
+                                  FILTER_WS_NORMAL_UNIT, FILTER_ZRANGE_UNIT},
+                                 gpu::kTextureUnits));
+static_assert(FILTER_TARGET_IMAGE < gpu::kImageUnits);
+// filter.comp's shared rows: 8 rows of 8 + 2 x the largest radius taps, 40 bytes each, within
+// the 32 KiB of shared memory every GL 4.5 implementation offers.
+static_assert(FILTER_TILE_SIZE * (FILTER_TILE_SIZE + 2 * FILTER_MAX_RADIUS) * 40 <= 32768);
 static_assert(gpu::distinctBelow({ROW_OFFSET_LOCATION, FILTER_DIRECTION_LOCATION,
                                   FILTER_RADIUS_LOCATION, FILTER_DEPTH_SCALE_LOCATION,
                                   FILTER_NORMAL_POWER_LOCATION, FILTER_TILED_LOCATION,
@@ -51,7 +56,8 @@ public:
     };
     params_ = {
         Param::boolean("enabled", "Blur the shadows (off: the visibility passes through).", true),
-        Param::integer("radius", "Filter radius in pixels (sigma = radius / 2).", 4, 0, 32),
+        Param::integer("radius", "Filter radius in pixels (sigma = radius / 2).", 4, 0,
+                       FILTER_MAX_RADIUS),
         Param::real("depth_scale", "Depth sensitivity per world unit: a sample's weight is "
                                    "divided by 1 + depth_scale x |depth difference| (§3).",
                     20, 0, 1000),
@@ -93,8 +99,8 @@ public:
     const GlTexture& source = frame.input(*this, "visibility");
     GlTexture& horizontal = frame.output(*this, "horizontal", w, h);
     GlTexture& filtered = frame.output(*this, "visibility", w, h);
-    bindImageForReading(FILTER_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
-    bindImageForReading(FILTER_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
+    bindTextureForReading(FILTER_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));
+    bindTextureForReading(FILTER_WS_NORMAL_UNIT, frame.input(*this, "wsNormal"));
     if (tiled) {
       // 1. The tiles where the blur can change a value, and an indirect dispatch over them.
       GlBuffer& tiles = frame.outputBuffer(*this, "tiles");
@@ -111,8 +117,8 @@ public:
       if (radius > 0) {
         tilesProgram_.use();
         glUniform1i(FILTER_RADIUS_LOCATION, radius);
-        bindImageForReading(FILTER_SOURCE_IMAGE, source);
-        dispatchTiles(w, h, FILTER_TILE_SIZE);
+        bindTextureForReading(FILTER_SOURCE_UNIT, source);
+        dispatchRows(w, h, kBufferResults | kCommandResults);
       }
       // 2. Every other pixel keeps its value in both passes.
       glCopyImageSubData(source.id(), GL_TEXTURE_2D, 0, 0, 0, 0, horizontal.id(), GL_TEXTURE_2D,
@@ -131,28 +137,31 @@ public:
     glUniform1f(FILTER_PIXEL_ANGLE_LOCATION,
                 2.0f * std::tan(glm::radians(frame.scene.camera.fovYDegrees) * 0.5f) / float(h));
     bindLightInput(frame, *this);
-    bindImageForReading(FILTER_ZRANGE_IMAGE, frame.input(*this, "zRange"));
+    bindTextureForReading(FILTER_ZRANGE_UNIT, frame.input(*this, "zRange"));
     pass(source, horizontal, {1, 0}, tiled, w, h);
     pass(horizontal, filtered, {0, 1}, tiled, w, h);
     if (!tiled) {
       frame.counters["filter.pixels"] = double(w) * h;
       return;
     }
-    gpu::FilterTilesHeader listed{};
-    glGetNamedBufferSubData(frame.outputBuffer(*this, "tiles").id(), 0, sizeof listed, &listed);
-    frame.counters["filter.tiles"] = listed.groups[0];
-    frame.counters["filter.pixels"] = listed.pixels;
+    frame.readAfterFrame(frame.outputBuffer(*this, "tiles"), 0, sizeof(gpu::FilterTilesHeader),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::FilterTilesHeader listed{};
+                           std::memcpy(&listed, bytes.data(), sizeof listed);
+                           frame.counters["filter.tiles"] = listed.groups[0];
+                           frame.counters["filter.pixels"] = listed.pixels;
+                         });
   }
 
 private:
   void pass(const GlTexture& source, GlTexture& target, glm::ivec2 direction, bool tiled, int w,
             int h) {
-    bindImageForReading(FILTER_SOURCE_IMAGE, source);
+    bindTextureForReading(FILTER_SOURCE_UNIT, source);
     glBindImageTexture(FILTER_TARGET_IMAGE, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glUniform2i(FILTER_DIRECTION_LOCATION, direction.x, direction.y);
-    if (!tiled) return dispatchRows(w, h);
+    if (!tiled) return dispatchRows(w, h, kImageResults);
     glDispatchComputeIndirect(0);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kImageResults);
   }
   ShaderProgram program_{{{GL_COMPUTE_SHADER, "filter.comp"}}};
   ShaderProgram tilesProgram_{{{GL_COMPUTE_SHADER, "filter_tiles.comp"}}};

@@ -1,6 +1,7 @@
 // Stage `trace` (thesis §3-3.7, Algorithms 1 and 2): n x n rays per receiver through the
 // light's depth layers, in the deferred form (a compute pass over the G-buffer) or the
 // forward form (every rasterized fragment traces; thesis Table 4.1).
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 
@@ -209,10 +210,10 @@ public:
     glBindTextureUnit(TRACE_WS_POSITION_UNIT, frame.input(*this, "wsPosition").id());
     glBindTextureUnit(TRACE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal").id());
     glBindTextureUnit(TRACE_NEAR_UNIT, nearLayer.id());
-    bindImageForReading(TRACE_FAR_IMAGE, frame.input(*this, "far"));
-    bindImageForReading(minmax ? TRACE_MINMAX_IMAGE : TRACE_LEVELS_IMAGE, levels);
-    bindImageForReading(TRACE_MASK_IMAGE, frame.input(*this, "mask"));
-    bindImageForReading(TRACE_ZRANGE_IMAGE, frame.input(*this, "zRange"));
+    bindTextureForReading(TRACE_FAR_UNIT, frame.input(*this, "far"));
+    bindTextureForReading(minmax ? TRACE_MINMAX_UNIT : TRACE_LEVELS_UNIT, levels);
+    bindTextureForReading(TRACE_MASK_UNIT, frame.input(*this, "mask"));
+    bindTextureForReading(TRACE_ZRANGE_UNIT, frame.input(*this, "zRange"));
 
     // 4. The pass.
     const bool recording = params.record.x >= 0 && params.record.y >= 0;
@@ -224,18 +225,37 @@ public:
                  forward_[specialization(params, frame, recording, cost)]);
     }
 
-    // 5. Totals and the recorded steps.
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::uint32_t totals[TOTAL_COUNT];
-    glGetNamedBufferSubData(totalsBuffer_.id(), 0, sizeof totals, totals);
+    // 5. Totals and the recorded steps, read after the frame (Frame::readAfterFrame).
+    frame.readAfterFrame(totalsBuffer_, 0, TOTAL_COUNT * sizeof(std::uint32_t),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           std::uint32_t totals[TOTAL_COUNT];
+                           std::memcpy(totals, bytes.data(), sizeof totals);
+                           addTotals(totals, frame);
+                         });
+    readRecords(frame);
+  }
+
+private:
+  static void addTotals(const std::uint32_t* totals, Frame& frame) {
     const char* names[] = {"rays", "raysSearched", "fetches", "iterations", "earlyOutBackface",
                            "earlyOutInside", "earlyOutRegion", "iterationCapReached"};
     for (int i = 0; i <= TOTAL_ITERATION_CAP; ++i)
       frame.counters["trace." + std::string(names[i])] = totals[i];
     frame.counters["trace.fetchesPerRay"] =
         totals[TOTAL_RAYS] ? double(totals[TOTAL_FETCHES]) / totals[TOTAL_RAYS] : 0.0;
-    readRecords(frame);
+    // The fetches split (thesis §3.7): those of the early-out tests (the end point inside a
+    // solid, the ray's region empty), per ray set up; those of the searches, per ray
+    // searched; the two add up to trace.fetches.
+    const std::uint32_t earlyOutFetches = totals[TOTAL_EARLY_OUT_FETCHES];
+    const std::uint32_t searchFetches = totals[TOTAL_FETCHES] - earlyOutFetches;
+    frame.counters["trace.fetchesEarlyOuts"] = earlyOutFetches;
+    frame.counters["trace.fetchesSearches"] = searchFetches;
+    frame.counters["trace.earlyOutFetchesPerRay"] =
+        totals[TOTAL_RAYS] ? double(earlyOutFetches) / totals[TOTAL_RAYS] : 0.0;
+    frame.counters["trace.searchFetchesPerSearchedRay"] =
+        totals[TOTAL_RAYS_SEARCHED] ? double(searchFetches) / totals[TOTAL_RAYS_SEARCHED] : 0.0;
   }
+
 
 private:
   static constexpr int kRecordCapacity = 8192;
@@ -248,7 +268,7 @@ private:
   // cost: null where nobody asked for it (the pass is compiled without its store).
   void runDeferred(Frame& frame, GlTexture& visibility, GlTexture* cost, ShaderProgram& pass,
                    ShaderProgram* recordingPass) {
-    const size_t recordBytes = 4 * sizeof(std::uint32_t);  // a uvec4 per pixel
+    const size_t recordBytes = TRACE_RECORD_UVEC4S * 4 * sizeof(std::uint32_t);
     const size_t partialsBytes = size_t(frame.eyeWidth) * frame.eyeHeight * recordBytes;
     if (partialsBytes != partialsBytes_) partialsBuffer_.upload(nullptr, partialsBytes);
     partialsBytes_ = partialsBytes;
@@ -263,24 +283,26 @@ private:
       records = dispatchListed(frame, visibility, cost);
     } else {
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_ALL);
-      dispatchRows(frame.eyeWidth, frame.eyeHeight, kRowsPerBand);
+      dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults | kBufferResults, kRowsPerBand);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       records = std::uint32_t(frame.eyeWidth) * std::uint32_t(frame.eyeHeight);
     }
     totalsProgram_.use();
     glUniform1ui(TRACE_TOTALS_RECORDS_LOCATION, records);
+    glUniform1i(TRACE_TOTALS_FROM_LIST_LOCATION, param("use_classification").asBool() ? 1 : 0);
     const std::uint32_t perGroup = 64 * TRACE_TOTALS_RECORDS_PER_INVOCATION;
     if (records > 0) glDispatchCompute((records + perGroup - 1) / perGroup, 1, 1);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kBufferResults);
     if (recordingPass) {
       recordingPass->use();
       glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_RECORDED);
       glDispatchCompute(1, 1, 1);
-      glMemoryBarrier(GL_ALL_BARRIER_BITS);
+      glMemoryBarrier(kImageResults | kBufferResults);
     }
   }
 
-  // Returns the number of listed pixels.
+  // One invocation per listed pixel, in as many groups as classify counted (an indirect
+  // dispatch: the CPU never waits for the count). Returns the most records it can write.
   std::uint32_t dispatchListed(Frame& frame, GlTexture& visibility, GlTexture* cost) {
     const float one = 1.0f, zeros[4] = {0, 0, 0, 0};
     glClearTexImage(visibility.id(), 0, GL_RED, GL_FLOAT, &one);
@@ -288,16 +310,14 @@ private:
     // The list's header holds its length (penumbra + umbra pixels; classify_layout.h).
     const GlBuffer& tracedPixels = frame.inputBuffer(*this, "tracedPixels");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, CLASSIFY_LIST_BINDING, tracedPixels.id());
-    std::uint32_t listed = 0;
-    glGetNamedBufferSubData(tracedPixels.id(), 0, sizeof listed, &listed);
     glUniform1i(TRACE_PIXELS_LOCATION, TRACE_PIXELS_LISTED);
-    const int groups = int((listed + 63) / 64), groupsPerBand = kRowsPerBand * frame.eyeWidth / 64;
-    for (int first = 0; first < groups; first += groupsPerBand) {
-      glUniform1i(ROW_OFFSET_LOCATION, first);
-      glDispatchCompute(GLuint(std::min(groupsPerBand, groups - first)), 1, 1);
-    }
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
-    return listed;
+    glUniform1i(ROW_OFFSET_LOCATION, 0);
+    static_assert(CLASSIFY_TRACE_GROUP == 64);  // trace.comp's 8 x 8 groups
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, tracedPixels.id());
+    glDispatchComputeIndirect(CLASSIFY_LIST_DISPATCH_OFFSET);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(kImageResults | kBufferResults);
+    return std::uint32_t(frame.eyeWidth) * std::uint32_t(frame.eyeHeight);
   }
 
   // Every fragment traces its rays; with a recorded pixel, `pass` is the variant with step
@@ -323,19 +343,23 @@ private:
     pass.use();
     frame.gpuScene.draw(/*includeReceivers=*/true);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kBufferResults);  // the totals and records; the images are framebuffer writes
   }
 
   void readRecords(Frame& frame) {
     frame.traceSteps.clear();
     if (param("record_x").asInt() < 0 || param("record_y").asInt() < 0) return;
-    std::uint32_t header[4];
-    glGetNamedBufferSubData(recordsBuffer_.id(), 0, sizeof header, header);
-    const std::uint32_t count = std::min<std::uint32_t>(header[0], kRecordCapacity);
-    frame.traceSteps.resize(count);
-    glGetNamedBufferSubData(recordsBuffer_.id(), 16, GLsizeiptr(count * sizeof(gpu::TraceStep)),
-                            frame.traceSteps.data());
-    frame.counters["trace.recordedSteps"] = header[0];
+    frame.readAfterFrame(recordsBuffer_, 0, 16 + kRecordCapacity * sizeof(gpu::TraceStep),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           std::uint32_t header[4];
+                           std::memcpy(header, bytes.data(), sizeof header);
+                           const std::uint32_t count =
+                               std::min<std::uint32_t>(header[0], kRecordCapacity);
+                           frame.traceSteps.resize(count);
+                           std::memcpy(frame.traceSteps.data(), bytes.data() + 16,
+                                       count * sizeof(gpu::TraceStep));
+                           frame.counters["trace.recordedSteps"] = header[0];
+                         });
   }
 
   // Each pass specialized (shaders/shared/trace_ray.glsl says why) for the hierarchy,
@@ -350,10 +374,25 @@ private:
            "\n#define TRACE_COST " + (cost ? "1" : "0") + "\n" +
            hashSpecialization(frame.light.hashKind);
   }
-  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}};
+  // Every text specialization() can return.
+  static std::vector<std::string> specializations() {
+    auto values = [](const char* name, std::vector<int> values) {
+      std::vector<std::string> lines;
+      for (int value : values)
+        lines.push_back(std::string(name) + " " + std::to_string(value) + "\n");
+      return lines;
+    };
+    return defineCombinations(
+        {values("#define TRACE_HIERARCHY", {HIERARCHY_NBUFFER, HIERARCHY_MINMAX}),
+         values("#define TRACE_SEARCH", {SEARCH_LINEAR, SEARCH_LINEAR_BINARY, SEARCH_HIERARCHICAL}),
+         values("#define TRACE_LAYERS", {1, 2, 3}), values("#define TRACE_RECORDING", {0, 1}),
+         values("#define TRACE_COST", {0, 1}), hashSpecializations()});
+  }
+  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}, specializations()};
   ShaderProgram totalsProgram_{{{GL_COMPUTE_SHADER, "trace_totals.comp"}}};
   ShaderVariants forward_{
-      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}}};
+      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
+      specializations()};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   GlBuffer partialsBuffer_;  // the deferred pass's per-pixel counts (trace_layout.h)
   size_t partialsBytes_ = 0;

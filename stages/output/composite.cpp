@@ -6,9 +6,9 @@
 #include "gl/shader_program.h"
 #include "shared/composite_layout.h"
 
-static_assert(gpu::distinctBelow({COMPOSITE_ALBEDO_IMAGE, COMPOSITE_WS_NORMAL_IMAGE,
-                                  COMPOSITE_WS_POSITION_IMAGE, COMPOSITE_VISIBILITY_IMAGE},
-                                 gpu::kImageUnits));
+static_assert(gpu::distinctBelow({COMPOSITE_ALBEDO_UNIT, COMPOSITE_WS_NORMAL_UNIT,
+                                  COMPOSITE_WS_POSITION_UNIT, COMPOSITE_VISIBILITY_UNIT},
+                                 gpu::kTextureUnits));
 static_assert(COMPOSITE_AMBIENT_LOCATION < gpu::kUniformLocations);
 
 namespace {
@@ -47,10 +47,10 @@ public:
     program_.use();
     bindLightInput(frame, *this);
     glUniform1f(COMPOSITE_AMBIENT_LOCATION, param("ambient").asFloat());
-    bindImageForReading(COMPOSITE_ALBEDO_IMAGE, frame.input(*this, "albedo"));
-    bindImageForReading(COMPOSITE_WS_NORMAL_IMAGE, frame.input(*this, "wsNormal"));
-    bindImageForReading(COMPOSITE_WS_POSITION_IMAGE, frame.input(*this, "wsPosition"));
-    bindImageForReading(COMPOSITE_VISIBILITY_IMAGE, visibility);
+    bindTextureForReading(COMPOSITE_ALBEDO_UNIT, frame.input(*this, "albedo"));
+    bindTextureForReading(COMPOSITE_WS_NORMAL_UNIT, frame.input(*this, "wsNormal"));
+    bindTextureForReading(COMPOSITE_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));
+    bindTextureForReading(COMPOSITE_VISIBILITY_UNIT, visibility);
     GlTexture& color = frame.output(*this, "color", frame.eyeWidth, frame.eyeHeight);
     screen_.draw(color);
   }

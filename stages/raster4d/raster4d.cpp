@@ -44,6 +44,8 @@ double millisecondsSince(Clock::time_point& start) {
   return ms;
 }
 
+constexpr int kMinSamples = 8, kMaxSamples = 64;  // raster4d.samples: m per side
+
 class Raster4dStage final : public Stage {
 public:
   Raster4dStage() {
@@ -77,7 +79,7 @@ public:
                                   "engine, so off until asked for; turn it on to show it or to "
                                   "use it as error.method or error.against).", false),
         Param::integer("samples", "m: light samples per side, m x m cell centres (the paper: 8x8 "
-                                  "too few, 32x32 consistently good).", 32, 8, 64),
+                                  "too few, 32x32 consistently good).", 32, kMinSamples, kMaxSamples),
         Param::integer("fb_resolution", "w = h: pixels per side of the frame buffer FB that pairs "
                                         "samples with triangles (Table 6: 128 is best).",
                        128, 8, 512),
@@ -322,7 +324,7 @@ private:
     bind({{R4D_SCAN_COUNTS, &counts}, {R4D_SCAN_STARTS, &starts}});
     scanProgram_.use();
     glDispatchCompute(1, 1, 1);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glMemoryBarrier(kBufferResults);
   }
 
   void writeCellViews(Frame& frame, int fb) {
@@ -394,8 +396,15 @@ private:
   ShaderProgram trianglesProgram_{{{GL_COMPUTE_SHADER, "raster4d_triangles.comp"}}};
   ShaderProgram scanProgram_{{{GL_COMPUTE_SHADER, "raster4d_scan.comp"}}};
   ShaderProgram cellsProgram_{{{GL_COMPUTE_SHADER, "raster4d_cells.comp"}}};
-  ShaderVariants occlusionPrograms_{{{GL_COMPUTE_SHADER, "raster4d_occlusion.comp"}}};
-  ShaderVariants resolvePrograms_{{{GL_COMPUTE_SHADER, "raster4d_resolve.comp"}}};
+  static std::vector<std::string> samplesDefines() {  // every `samples` value's
+    std::vector<std::string> defines;
+    for (int m = kMinSamples; m <= kMaxSamples; ++m) defines.push_back(samplesDefine(m));
+    return defines;
+  }
+  ShaderVariants occlusionPrograms_{{{GL_COMPUTE_SHADER, "raster4d_occlusion.comp"}},
+                                    samplesDefines()};
+  ShaderVariants resolvePrograms_{{{GL_COMPUTE_SHADER, "raster4d_resolve.comp"}},
+                                  samplesDefines()};
 };
 
 }  // namespace

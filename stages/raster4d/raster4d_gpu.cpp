@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gl/shader_program.h"
 #include "reference/reference_cache.h"
 
 void Raster4dOccluders::update(const Scene& scene) {
@@ -42,12 +43,12 @@ void dispatchLinear(std::uint64_t count) {
   if (groups == 0) return;
   const std::uint64_t x = std::min<std::uint64_t>(groups, 65535);
   glDispatchCompute(GLuint(x), GLuint((groups + x - 1) / x), 1);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  glMemoryBarrier(kBufferResults | kImageResults);
 }
 
 void dispatchGrid(int width, int height) {
   glDispatchCompute(GLuint((width + 7) / 8), GLuint((height + 7) / 8), 1);
-  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  glMemoryBarrier(kBufferResults | kImageResults);
 }
 
 glm::mat4 lightSpaceFromWorld(const glm::vec3& centre, const glm::vec3& right,

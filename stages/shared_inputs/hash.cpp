@@ -42,11 +42,11 @@ public:
     GlTexture& bits = frame.output(*this, "bits", frame.eyeWidth, frame.eyeHeight);
     glBindImageTexture(HASH_SAMPLES_IMAGE, samples.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindImageTexture(HASH_BITS_IMAGE, bits.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    dispatchRows(frame.eyeWidth, frame.eyeHeight);
+    dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults);
   }
 
 private:
-  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "hash.comp"}}};  // one per hash (hash.glsl)
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "hash.comp"}}, hashSpecializations()};  // one per hash (hash.glsl)
 };
 
 }  // namespace

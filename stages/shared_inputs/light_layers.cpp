@@ -86,8 +86,7 @@ public:
     glBindTextureUnit(RISERS_NEAR_UNIT, nearLayer.id());
     glBindTextureUnit(RISERS_FAR_UNIT, farRasterized_.id());
     glTextureBarrier();
-    screen_.drawRect(far, origin, extent);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    screen_.drawRect(far, origin, extent);  // framebuffer writes: no barrier needed
   }
 
 private:

@@ -11,6 +11,7 @@
 // The maps share the light's frustum (Eq 3.1 of the thesis): aligned with the rectangular
 // light and of its aspect ratio, seen from the projection point behind the light centre.
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 
@@ -176,11 +177,14 @@ public:
     glBindTextureUnit(SSM_PROJECT_SOFT_SHADOW_MAP_UNIT, softShadowMap.id());
     glBindImageTexture(SSM_PROJECT_VISIBILITY_IMAGE, visibility.id(), 0, GL_FALSE, 0,
                        GL_WRITE_ONLY, GL_R32F);
-    dispatchRows(frame.eyeWidth, frame.eyeHeight);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    glGetNamedBufferSubData(counterBuffer_.id(), 0, sizeof counters, &counters);
-    frame.counters["ssm.clampedPixels"] = counters.clampedPixels;
-    frame.counters["ssm.occluderPixels"] = counters.occluderPixels;
+    dispatchRows(frame.eyeWidth, frame.eyeHeight, kImageResults | kBufferResults);
+    frame.readAfterFrame(counterBuffer_, 0, sizeof counters,
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::SsmCounters read{};
+                           std::memcpy(&read, bytes.data(), sizeof read);
+                           frame.counters["ssm.clampedPixels"] = read.clampedPixels;
+                           frame.counters["ssm.occluderPixels"] = read.occluderPixels;
+                         });
 
     // The picked views.
     GlTexture& pickedLight = frame.output(*this, "pickedLight", kPickedLightSize, kPickedLightSize);

@@ -131,6 +131,7 @@ TEST(FilterTileList, EqualsTheCpuCountOnScatteredValues) {
                         GL_FLOAT, visibility.data());
     ASSERT_EQ(run.pipeline->set("filter.radius=" + std::to_string(radius)), "");
     run.pipeline->stage("filter").run(*run.frame);
+    run.frame->finishReadbacks();
     const TileCount expected = expectedTiles(visibility, w, h, radius);
     EXPECT_EQ(run.frame->counters.at("filter.tiles"), expected.tiles) << "radius " << radius;
     EXPECT_EQ(run.frame->counters.at("filter.pixels"), expected.pixels) << "radius " << radius;

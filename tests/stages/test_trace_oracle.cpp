@@ -189,3 +189,43 @@ TEST(TraceOracle, LinearSearchAgreementAgainstStepSize) {
     }
   }
 }
+
+// The trace's fetches split into the early-out tests' (§3.7) and the searches' (the
+// fig_3_9 lesson quotes them): the split adds up to trace.fetches, and the early-out part is
+// what the rules of trace_pixel.glsl imply from the ray counts alone, on the N-buffer: the
+// region test costs one fetch for every ray that reaches it (each such ray is then ended by
+// it or searched), the inside test two (near and far at the end texel), and with both off
+// the early outs fetch nothing. Shortening off, so every ray's end point stays on it and
+// every ray that reaches the tests runs the inside test.
+TEST(TraceFetchSplit, EarlyOutFetchesFollowFromTheRayCountsAndAddUpToTheTotal) {
+  struct Case {
+    const char* region;
+    const char* inside;
+  };
+  for (const Case& test : {Case{"true", "false"}, Case{"false", "true"}, Case{"false", "false"},
+                           Case{"true", "true"}}) {
+    const std::string where = std::string("region ") + test.region + ", inside " + test.inside;
+    PipelineRun run(makeBuiltinScene("cube"),
+                    {"trace.rays=2", "light.resolution=256", "trace.hierarchy=nbuffer",
+                     "light.layers=two", "trace.search=hierarchical", "trace.deferred=true",
+                     "trace.use_classification=false", "trace.shorten_rays=false",
+                     std::string("trace.early_out_region=") + test.region,
+                     std::string("trace.early_out_inside=") + test.inside},
+                    96, 72);
+    const auto& c = run.frame->counters;
+    const double early = c.at("trace.fetchesEarlyOuts"), search = c.at("trace.fetchesSearches");
+    EXPECT_EQ(early + search, c.at("trace.fetches")) << where;
+    EXPECT_GT(c.at("trace.raysSearched"), 0.0) << where;
+    EXPECT_DOUBLE_EQ(c.at("trace.searchFetchesPerSearchedRay"), search / c.at("trace.raysSearched"))
+        << where;
+    EXPECT_DOUBLE_EQ(c.at("trace.earlyOutFetchesPerRay"), early / c.at("trace.rays")) << where;
+    const double searched = c.at("trace.raysSearched");
+    const bool region = std::string(test.region) == "true", inside = std::string(test.inside) == "true";
+    if (region && !inside) EXPECT_EQ(early, searched + c.at("trace.earlyOutRegion")) << where;
+    if (!region && inside) EXPECT_EQ(early, 2 * (searched + c.at("trace.earlyOutInside"))) << where;
+    if (!region && !inside) EXPECT_EQ(early, 0.0) << where;
+    if (region && inside) EXPECT_GT(early, searched) << where;
+    // Every searched ray reads at least one texel.
+    EXPECT_GE(search, searched) << where;
+  }
+}

@@ -5,7 +5,9 @@
 #include <sys/wait.h>
 
 CommandResult runPenumbra(const std::string& arguments) {
-  const std::string command = std::string(PENUMBRA_BINARY_PATH) + " " + arguments + " 2>&1";
+  // PENUMBRA_GL_ERRORS_FATAL=1: a GL error ends the run with status 3 (app/gl/gl_context.h).
+  const std::string command = "PENUMBRA_GL_ERRORS_FATAL=1 " + std::string(PENUMBRA_BINARY_PATH) +
+                              " " + arguments + " 2>&1";
   CommandResult result{-1, ""};
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;

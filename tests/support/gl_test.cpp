@@ -10,6 +10,8 @@ GlContext& headlessContext() {
       std::fprintf(stderr, "headless context: %s\n", error.c_str());
       std::abort();
     }
+    // Any GL error (KHR_debug, GL_DEBUG_TYPE_ERROR) fails the test that caused it.
+    setGlErrorHook([](const char* message) { ADD_FAILURE() << "GL error: " << message; });
     return created;
   }();
   return *context;

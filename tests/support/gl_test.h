@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 
 // The process-wide headless context (created on first use; the test fails if it cannot be).
+// Every GL error reported through KHR_debug while a test runs fails that test.
 GlContext& headlessContext();
 
 // A scene, its GPU copy, a pipeline with `sets` applied and one frame, run once.

@@ -52,9 +52,9 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, queryBuffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, resultBuffer.id());
   glBindTextureUnit(TRACE_NEAR_UNIT, near_.id());
-  bindImageForReading(TRACE_FAR_IMAGE, far_);
-  bindImageForReading(TRACE_LEVELS_IMAGE, levels_);
-  bindImageForReading(TRACE_MINMAX_IMAGE, minmax_);
+  bindTextureForReading(TRACE_FAR_UNIT, far_);
+  bindTextureForReading(TRACE_LEVELS_UNIT, levels_);
+  bindTextureForReading(TRACE_MINMAX_UNIT, minmax_);
   program.use();
   glUniform1i(0, int(queries.size()));
   glDispatchCompute(GLuint((queries.size() + 63) / 64), 1, 1);
