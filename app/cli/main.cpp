@@ -22,6 +22,7 @@
 #include "cli/trace_command.h"
 #include "core/input_error.h"
 #include "core/pipeline.h"
+#include "core/stage_table.h"
 #include "window/window_app.h"
 
 namespace {
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
   CLI::App* benchRaster4dCommand = app.add_subcommand(
       "bench-raster4d", "raster4d (4D rasterization) timed against the Embree reference at the "
                         "same light samples, in the shapes of Wang et al.'s tables");
-  benchRaster4dCommand->add_option("--out", raster4dBench.out, "Markdown file")->capture_default_str();
+  benchRaster4dCommand->add_option("--out", raster4dBench.out, "Markdown file")->required();
   benchRaster4dCommand->add_option("--scenes", raster4dBench.scenes, "comma-separated scenes")
       ->capture_default_str();
   benchRaster4dCommand->add_option("--toggle-scenes", raster4dBench.toggleScenes,
@@ -175,7 +176,7 @@ int main(int argc, char** argv) {
   CLI::App* benchHierarchyCommand = app.add_subcommand(
       "bench-hierarchy", "N-buffer against min-max mipmap, back to back per map size: build "
                          "time, memory, fetches per searched ray, trace time");
-  benchHierarchyCommand->add_option("--out", hierarchyBench.out, "Markdown file")->capture_default_str();
+  benchHierarchyCommand->add_option("--out", hierarchyBench.out, "Markdown file")->required();
   benchHierarchyCommand->add_option("--frames", hierarchyBench.frames, "timed frames per hierarchy")
       ->check(CLI::Range(1, 1000))->capture_default_str();
   benchHierarchyCommand->add_option("--scene", hierarchyBench.scene)->capture_default_str();
@@ -234,6 +235,9 @@ int main(int argc, char** argv) {
   CLI::App* graphCommand = app.add_subcommand(
       "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
                "penumbra graph | dot -Tsvg > graph.svg");
+  bool graphMarkdown = false;
+  graphCommand->add_flag("--markdown", graphMarkdown, "print the README's stage table as Markdown "
+                         "instead (scripts/stage_docs.sh)");
 
   try {
     app.parse(argc, argv);
@@ -249,7 +253,8 @@ int main(int argc, char** argv) {
   const std::string command = app.get_subcommands().empty() ? "" : app.get_subcommands()[0]->get_name();
   return runCommand(command, [&] {
     if (*graphCommand) {
-      std::fputs(Pipeline().dot().c_str(), stdout);
+      const Pipeline pipeline;
+      std::fputs((graphMarkdown ? stageTableMarkdown(pipeline) : pipeline.dot()).c_str(), stdout);
       return 0;
     }
     if (*exportCommand) return runExport(exporting);
