@@ -9,7 +9,10 @@
 #include <string>
 
 struct BenchRaster4dOptions {
-  std::string out = "bench/raster4d.md";
+  // The Markdown file to write (--out, required). The committed write-up,
+  // docs/raster4d_speed.md, joins two runs' tables with notes on the paper and the machine,
+  // so no run overwrites it by default.
+  std::string out;
   std::string scenes = "cube,spheres,engine";
   // Scenes whose Table 2 variants (proj4, rejection off, row masks off, row culling off) are
   // timed; "" = every scene. Per-sample tests on a 91k-triangle scene take many minutes.

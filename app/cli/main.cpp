@@ -25,6 +25,7 @@
 #include "core/pipeline.h"
 #include "core/run_control.h"
 #include "io/output_path.h"
+#include "core/stage_table.h"
 #include "window/window_app.h"
 
 namespace {
@@ -170,7 +171,7 @@ int main(int argc, char** argv) {
   CLI::App* benchRaster4dCommand = app.add_subcommand(
       "bench-raster4d", "raster4d (4D rasterization) timed against the Embree reference at the "
                         "same light samples, in the shapes of Wang et al.'s tables");
-  benchRaster4dCommand->add_option("--out", raster4dBench.out, "Markdown file")->capture_default_str();
+  benchRaster4dCommand->add_option("--out", raster4dBench.out, "Markdown file")->required();
   benchRaster4dCommand->add_option("--scenes", raster4dBench.scenes, "comma-separated scenes")
       ->capture_default_str();
   benchRaster4dCommand->add_option("--toggle-scenes", raster4dBench.toggleScenes,
@@ -184,7 +185,7 @@ int main(int argc, char** argv) {
   CLI::App* benchHierarchyCommand = app.add_subcommand(
       "bench-hierarchy", "N-buffer against min-max mipmap, back to back per map size: build "
                          "time, memory, fetches per searched ray, trace time");
-  benchHierarchyCommand->add_option("--out", hierarchyBench.out, "Markdown file")->capture_default_str();
+  benchHierarchyCommand->add_option("--out", hierarchyBench.out, "Markdown file")->required();
   benchHierarchyCommand->add_option("--frames", hierarchyBench.frames, "timed frames per hierarchy")
       ->check(CLI::Range(1, 1000))->capture_default_str();
   benchHierarchyCommand->add_option("--scene", hierarchyBench.scene)->capture_default_str();
@@ -243,6 +244,9 @@ int main(int argc, char** argv) {
   CLI::App* graphCommand = app.add_subcommand(
       "graph", "print the stage graph (stages/registry.cpp) as Graphviz dot: "
                "penumbra graph | dot -Tsvg > graph.svg");
+  bool graphMarkdown = false;
+  graphCommand->add_flag("--markdown", graphMarkdown, "print the README's stage table as Markdown "
+                         "instead (scripts/stage_docs.sh)");
 
   CLI::App* shadersCommand = app.add_subcommand(
       "shaders", "write the final GLSL source of every program variant the pipeline can build "
@@ -277,7 +281,8 @@ int main(int argc, char** argv) {
   return runCommand(command, [&] {
     const RunTimeLimit limit(timeLimit.empty() ? 0.0 : std::strtod(timeLimit.c_str(), nullptr));
     if (*graphCommand) {
-      std::fputs(Pipeline().dot().c_str(), stdout);
+      const Pipeline pipeline;
+      std::fputs((graphMarkdown ? stageTableMarkdown(pipeline) : pipeline.dot()).c_str(), stdout);
       return 0;
     }
     if (*shadersCommand) {

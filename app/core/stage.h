@@ -108,7 +108,8 @@ public:
   virtual ~Stage() = default;
   virtual std::string name() const = 0;           // "classify"
   virtual std::string summary() const = 0;        // one sentence for the UI
-  virtual std::string thesisSection() const = 0;  // "3.6", "" where none
+  // Where it comes from: "thesis §3.6, Eq 3.3", "Atty et al. 2006 §3"; "" where none.
+  virtual std::string thesisSection() const = 0;
   virtual void run(Frame& frame) = 0;             // reads its inputs, writes its outputs
   // The option an `auto` choice parameter `key` takes this frame (see Input::decidedAfter).
   // Only stages that declare such a parameter override it; the default throws.

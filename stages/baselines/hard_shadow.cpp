@@ -34,9 +34,10 @@ public:
   }
   std::string name() const override { return "hard_shadow"; }
   std::string summary() const override {
-    return "Classic shadow-map test from the light's projection point: the baseline.";
+    return "Classic shadow-map test (Williams 1978) from the light's projection point: the "
+           "baseline.";
   }
-  std::string thesisSection() const override { return "2.3"; }
+  std::string thesisSection() const override { return "thesis §2.3"; }
 
   void run(Frame& frame) override {
     program_.use();

@@ -53,7 +53,7 @@ public:
     return "Difference between a method's visibility and the exact reference, with RMSE, max, "
            "mean error in shadow and p99.";
   }
-  std::string thesisSection() const override { return ""; }
+  std::string thesisSection() const override { return "Atty et al. 2006 §4.2.1"; }
 
   void run(Frame& frame) override {
     if (!frame.connected(*this, "truth") || !frame.connected(*this, "method")) {

@@ -29,7 +29,7 @@ public:
   std::string summary() const override {
     return "Which eye pixels show a receiver-only object (Atty et al. 2006 measure there).";
   }
-  std::string thesisSection() const override { return "3.3"; }
+  std::string thesisSection() const override { return "Atty et al. 2006 §4.2.1"; }
 
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;

@@ -69,10 +69,11 @@ public:
   ~ReferenceStage() override { stopJob(); }
   std::string name() const override { return "reference"; }
   std::string summary() const override {
-    return "Ground truth: visibility of the area light through the real triangles, ray traced "
-           "on the CPU (Embree).";
+    return "Ground truth: visibility of the area light through the real triangles at m x m "
+           "light samples per pixel, ray traced on the CPU (Embree), cached on disk. Off "
+           "unless reference.enabled (bench turns it on).";
   }
-  std::string thesisSection() const override { return ""; }
+  std::string thesisSection() const override { return "thesis §4 (ground truth)"; }
 
   void run(Frame& frame) override {
     const std::string key = "reference.visibility";

@@ -72,7 +72,7 @@ public:
     return "DIEHARD-like statistics of the hash: pair histogram, avalanche, bit bias, "
            "serial correlation, FIPS 140-2, each with its p-value.";
   }
-  std::string thesisSection() const override { return "3.1, 4.3, App. A"; }
+  std::string thesisSection() const override { return "thesis §3.1, §4.3, App. A"; }
 
   void run(Frame& frame) override {
     // 1. Recompute when a parameter changed.

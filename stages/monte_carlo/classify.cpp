@@ -93,10 +93,10 @@ public:
   }
   std::string name() const override { return "classify"; }
   std::string summary() const override {
-    return "Marks pixels fully lit, fully shadowed or in penumbra, so rays are traced only "
-           "in the penumbra.";
+    return "Marks pixels fully lit, fully shadowed or in penumbra (and background or outside "
+           "the light's frustum), so rays are traced only in the penumbra.";
   }
-  std::string thesisSection() const override { return "3.6, Eq 3.3"; }
+  std::string thesisSection() const override { return "thesis §3.6, Eq 3.3"; }
 
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;

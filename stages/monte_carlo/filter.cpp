@@ -88,7 +88,7 @@ public:
   std::string summary() const override {
     return "Depth-aware separable Gaussian blur of the traced visibility.";
   }
-  std::string thesisSection() const override { return "3 (Fig 3.2)"; }
+  std::string thesisSection() const override { return "thesis §3, Fig 3.2"; }
 
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;

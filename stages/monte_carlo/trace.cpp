@@ -136,9 +136,10 @@ public:
   std::string name() const override { return "trace"; }
   std::string summary() const override {
     return "Monte Carlo rays from each pixel to random points on the light, through the depth "
-           "layers.";
+           "layers: the unfiltered visibility, and per pixel the texel fetches, search "
+           "iterations, rays searched and early outs.";
   }
-  std::string thesisSection() const override { return "3.1-3.7, Alg. 2"; }
+  std::string thesisSection() const override { return "thesis §3.1-3.7, Alg. 2"; }
 
   AutoChoice chooseAuto(const std::string& key, const Frame& frame) const override {
     if (key != "hierarchy") return Stage::chooseAuto(key, frame);

@@ -36,9 +36,10 @@ public:
   }
   std::string name() const override { return "composite"; }
   std::string summary() const override {
-    return "Combines the lit G-buffer with the selected visibility.";
+    return "Combines the lit G-buffer with the selected visibility: color = albedo x "
+           "(ambient + visibility x Lambert).";
   }
-  std::string thesisSection() const override { return "3 (Alg. 1)"; }
+  std::string thesisSection() const override { return "thesis §3, Alg. 1"; }
 
   void run(Frame& frame) override {
     const GlTexture& visibility = frame.connected(*this, "visibility")

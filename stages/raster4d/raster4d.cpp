@@ -107,9 +107,9 @@ public:
   std::string name() const override { return "raster4d"; }
   std::string summary() const override {
     return "4D rasterization (Wang et al.): exact occlusion masks over an m x m light grid, a "
-           "shadow method and a GPU ground truth.";
+           "shadow method and a GPU ground truth. Off unless raster4d.enabled.";
   }
-  std::string thesisSection() const override { return ""; }
+  std::string thesisSection() const override { return "Wang et al. 2020"; }
 
   void run(Frame& frame) override {
     if (!param("enabled").asBool()) {

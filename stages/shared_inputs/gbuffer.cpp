@@ -27,7 +27,7 @@ public:
   std::string summary() const override {
     return "Eye pass: albedo, normal, depth and world position of every visible surface.";
   }
-  std::string thesisSection() const override { return "3.4 (Alg. 1)"; }
+  std::string thesisSection() const override { return "thesis §3.4, Alg. 1"; }
 
   void run(Frame& frame) override {
     const int w = frame.eyeWidth, h = frame.eyeHeight;

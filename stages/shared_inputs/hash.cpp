@@ -32,7 +32,7 @@ public:
     return "Per-pixel random numbers from a hash of the screen coordinates: the first "
            "light sample and the raw bits.";
   }
-  std::string thesisSection() const override { return "3.1, App. A"; }
+  std::string thesisSection() const override { return "thesis §3.1, App. A"; }
 
   void run(Frame& frame) override {
     ShaderProgram& program = programs_[hashSpecialization(frame.light.hashKind)];

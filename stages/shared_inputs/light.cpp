@@ -88,9 +88,10 @@ public:
   }
   std::string name() const override { return "light"; }
   std::string summary() const override {
-    return "The light's frustum, map size, bias and sample hash, shared by every later stage.";
+    return "The light's frame (Eq 3.1), map size, number of depth layers, the Eq 3.2 bias and "
+           "the sample hash: one uniform block shared by every later stage.";
   }
-  std::string thesisSection() const override { return "3, Eq 3.1-3.2"; }
+  std::string thesisSection() const override { return "thesis §3, Eq 3.1-3.2"; }
 
   void run(Frame& frame) override {
     // 1. The light frame of Eq 3.1 (CPU copy for views, reference and the trace panel).

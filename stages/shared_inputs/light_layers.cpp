@@ -42,9 +42,10 @@ public:
   }
   std::string name() const override { return "light_layers"; }
   std::string summary() const override {
-    return "Near (nearest surface) and far (farthest surface) depth layers from the light.";
+    return "Near (nearest surface) and far (farthest surface) depth layers from the light, "
+           "in linear light depth.";
   }
-  std::string thesisSection() const override { return "3.3, Eq 3.1"; }
+  std::string thesisSection() const override { return "thesis §3.3, Eq 3.1"; }
 
   void run(Frame& frame) override {
     bindLightInput(frame, *this);

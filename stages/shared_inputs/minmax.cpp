@@ -27,10 +27,11 @@ public:
   }
   std::string name() const override { return "minmax"; }
   std::string summary() const override {
-    return "Min/max occluder depths over a quadtree of the light layers (a min-max mipmap), "
-           "a smaller alternative to the N-buffer.";
+    return "The N-buffer's bounds over quadtree-aligned cells of the light layers (a min-max "
+           "mipmap), a smaller alternative to the N-buffer; trace.hierarchy chooses one of "
+           "the two.";
   }
-  std::string thesisSection() const override { return "5.1"; }
+  std::string thesisSection() const override { return "thesis §5.1"; }
 
   void run(Frame& frame) override {
     const GlTexture& nearLayer = frame.input(*this, "near");

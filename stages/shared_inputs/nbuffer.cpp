@@ -25,10 +25,10 @@ public:
   }
   std::string name() const override { return "nbuffer"; }
   std::string summary() const override {
-    return "Min/max occluder depths over growing windows of the light layers, for fast "
-           "region queries.";
+    return "Min/max occluder depths (zNearMin, zNearMax, zFarMax) over growing windows of the "
+           "light layers, one level per window size, for fast region queries.";
   }
-  std::string thesisSection() const override { return "3.5"; }
+  std::string thesisSection() const override { return "thesis §3.5"; }
 
   void run(Frame& frame) override {
     const GlTexture& nearLayer = frame.input(*this, "near");

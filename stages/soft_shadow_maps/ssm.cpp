@@ -113,10 +113,11 @@ public:
   std::string name() const override { return "ssm"; }
   std::string summary() const override {
     return "Soft shadow maps (Atty et al. 2006): every occluder texel is a micro-patch whose "
-           "hidden fraction of the light is summed into a light-space map. Receivers and "
-           "occluders are separate: no self-shadowing.";
+           "hidden fraction of the light is summed into a light-space map (one or two passes, "
+           "R32F or R16F). Receivers (the scene's receiver_only objects) and occluders are "
+           "separate: no self-shadowing.";
   }
-  std::string thesisSection() const override { return "Atty 2006 §3"; }
+  std::string thesisSection() const override { return "Atty et al. 2006 §3"; }
 
   void run(Frame& frame) override {
     const int n = param("resolution").asInt();

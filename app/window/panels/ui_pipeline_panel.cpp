@@ -129,7 +129,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
   ImGui::TextUnformatted(stage.summary().c_str());
   ImGui::PopTextWrapPos();
   ImGui::PushTextWrapPos(0);
-  if (!stage.thesisSection().empty()) ImGui::TextDisabled("thesis %s", stage.thesisSection().c_str());
+  if (!stage.thesisSection().empty()) ImGui::TextDisabled("%s", stage.thesisSection().c_str());
   ImGui::PopTextWrapPos();
   for (const Input& input : stage.inputs()) drawInput(state, stage, input);
   for (const Output& output : stage.outputs()) drawOutput(state, stage, output);
