@@ -46,7 +46,7 @@ int dumpShaderSources(const std::filesystem::path& directory) {
   const std::vector<ProgramVariant> programs = buildablePrograms();
   std::string listing;
   for (size_t i = 0; i < programs.size(); ++i) {
-    char number[16];
+    char number[32];
     std::snprintf(number, sizeof number, "%04zu", i);
     listing += number;
     for (const ShaderProgram::Source& source : programs[i].sources) {

@@ -221,10 +221,18 @@ TEST(TraceFetchSplit, EarlyOutFetchesFollowFromTheRayCountsAndAddUpToTheTotal) {
     EXPECT_DOUBLE_EQ(c.at("trace.earlyOutFetchesPerRay"), early / c.at("trace.rays")) << where;
     const double searched = c.at("trace.raysSearched");
     const bool region = std::string(test.region) == "true", inside = std::string(test.inside) == "true";
-    if (region && !inside) EXPECT_EQ(early, searched + c.at("trace.earlyOutRegion")) << where;
-    if (!region && inside) EXPECT_EQ(early, 2 * (searched + c.at("trace.earlyOutInside"))) << where;
-    if (!region && !inside) EXPECT_EQ(early, 0.0) << where;
-    if (region && inside) EXPECT_GT(early, searched) << where;
+    if (region && !inside) {
+      EXPECT_EQ(early, searched + c.at("trace.earlyOutRegion")) << where;
+    }
+    if (!region && inside) {
+      EXPECT_EQ(early, 2 * (searched + c.at("trace.earlyOutInside"))) << where;
+    }
+    if (!region && !inside) {
+      EXPECT_EQ(early, 0.0) << where;
+    }
+    if (region && inside) {
+      EXPECT_GT(early, searched) << where;
+    }
     // Every searched ray reads at least one texel.
     EXPECT_GE(search, searched) << where;
   }

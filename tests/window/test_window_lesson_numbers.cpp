@@ -50,11 +50,12 @@ TEST(WindowLessonNumbers, CaptionsCarryTheRunsNumbersAndNothingIsLeftUnreplaced)
     {"export_view": {"file": "signed.exr"}},
     {"export_view": {"file": "signed.png", "caption": "dark={pixels:error.signed<-0.02} share={share:error.signed<-0.02} min={min:error.signed} max={max:error.signed} pct={pct:dark/all} rmse={error.rmse}"}},
     {"say": "the end, ratio={ratio:dark/all}"}])");
-  const auto result = runPenumbra("lesson " + script.string() + " --export " + dir.string());
+  const fs::path out = dir / "export";  // a lesson replaces only a folder of its own
+  const auto result = runPenumbra("lesson " + script.string() + " --export " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
   int w = 0, h = 0;
   std::vector<std::string> names;
-  const std::vector<float> error = readExr(dir / "signed.exr", w, h, names);
+  const std::vector<float> error = readExr(out / "signed.exr", w, h, names);
   ASSERT_EQ(w * h, 96 * 72);
   int dark = 0;
   float low = 1e9f, high = -1e9f;
@@ -64,7 +65,7 @@ TEST(WindowLessonNumbers, CaptionsCarryTheRunsNumbersAndNothingIsLeftUnreplaced)
     high = std::max(high, v);
   }
   ASSERT_GT(dark, 0) << "the test needs some too-dark pixels";
-  const std::string md = readText(dir / "lesson.md");
+  const std::string md = readText(out / "lesson.md");
   EXPECT_EQ(md.find('{'), std::string::npos) << md;  // every placeholder filled in
   EXPECT_EQ(valueAfter(md, "dark"), std::to_string(dark)) << md;
   EXPECT_EQ(valueAfter(md, "pixels"), std::to_string(dark)) << md;
@@ -85,7 +86,7 @@ TEST(WindowLessonNumbers, AnUnknownOrMalformedPlaceholderStopsTheLessonWithItsNa
                                  std::string("{min:nostage.output}"), std::string("{pct:error.rmse}")}) {
     const auto script = writeScript(dir, std::string(kSetup) + R"({"say": "number )" + bad + R"("},
       {"export_view": {"file": "x.png", "caption": "x"}}])");
-    const auto result = runPenumbra("lesson " + script.string() + " --export " + dir.string());
+    const auto result = runPenumbra("lesson " + script.string() + " --export " + (dir / "export").string());
     EXPECT_NE(result.exitCode, 0) << bad << "\n" << result.output;
     EXPECT_NE(result.output.find(bad), std::string::npos) << bad << "\n" << result.output;
   }

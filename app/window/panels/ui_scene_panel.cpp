@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "scene/scene_builtin.h"
 #include "scene/scene_frame.h"
@@ -38,7 +39,15 @@ void drawScenePicker(UiState& state) {
   if ((ImGui::Button("Load") || entered) && !path.empty())
     if (std::string problem = state.loadScene(path); !problem.empty()) state.status = problem;
   // The model's size in the scene's units, and a button that fits camera, ground and light.
-  ImGui::TextWrapped("bounds %s", boundsText(state.session.scene.bounds(false)).c_str());
+  // In pieces ("x [a, b]", "y [...]", ...) that never break inside a number.
+  std::vector<std::string> pieces{"bounds"};
+  const std::string bounds = boundsText(state.session.scene.bounds(false));
+  for (size_t start = 0; start < bounds.size();) {
+    const size_t end = bounds.find("] ", start);
+    pieces.push_back(bounds.substr(start, end == std::string::npos ? std::string::npos : end + 1 - start));
+    start = end == std::string::npos ? bounds.size() : end + 2;
+  }
+  textPieces(pieces);
   if (ImGui::Button("Frame scene"))
     if (std::string problem = frameLoadedScene(state); !problem.empty()) state.status = problem;
   helpMarker("Places the camera, the ground and the light to fit the model, whatever its units: "

@@ -201,7 +201,12 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
     seriesMarker(ImGui::GetWindowDrawList(), {at.x + 0.5f * markerWidth, at.y + 0.5f * ImGui::GetTextLineHeight()},
                  m, 0.3f * em);
     ImGui::SameLine(0, 0);
-    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(seriesColour(m)), "%s", methods[m].c_str());
+    // An entry wider than the panel (a long configuration at a large UI scale) wraps at its
+    // spaces instead of running past the edge.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::ColorConvertU32ToFloat4(seriesColour(m)));
+    if (width > lineWidth) ImGui::TextWrapped("%s", methods[m].c_str());
+    else ImGui::TextUnformatted(methods[m].c_str());
+    ImGui::PopStyleColor();
   }
 }
 
