@@ -162,6 +162,14 @@ TEST(WindowUnits, ScriptParsingNamesTheActionAndWhatIsValid) {
   problem = parseScriptJson(json::parse(R"([{"wait": 1, "pick": [1, 2]}])"), actions);
   EXPECT_NE(problem.find("one key"), std::string::npos) << problem;
   EXPECT_NE(parseScriptJson(json::parse(R"({"wait": 1})"), actions), "");
+  // Integer arguments with a positive lower bound (JSON reads them as unsigned): inside the
+  // range accepted, at its bounds too, outside refused.
+  EXPECT_EQ(parseScriptJson(json::parse(R"([{"drag": {"from": [1, 2], "to": [3, 4], "frames": 60}},
+    {"drag": {"from": [1, 2], "to": [3, 4], "frames": 1}}, {"drag": {"from": [1, 2], "to": [3, 4], "frames": 240}}])"),
+                            actions), "");
+  EXPECT_NE(parseScriptJson(json::parse(R"([{"drag": {"from": [1, 2], "to": [3, 4], "frames": 0}}])"), actions), "");
+  EXPECT_NE(parseScriptJson(json::parse(R"([{"drag": {"from": [1, 2], "to": [3, 4], "frames": 241}}])"), actions), "");
+  EXPECT_NE(parseScriptJson(json::parse(R"([{"drag": {"from": [1, 2], "to": [3, 4], "frames": -5}}])"), actions), "");
 }
 
 TEST(WindowUnits, ExportNamesSaySceneOutputAndChangedParameters) {

@@ -72,11 +72,14 @@ bool inRange(const json& v, double lo, double hi) {
 }
 ScriptCheck integer(long long lo, long long hi) {
   return [lo, hi](const json& v) -> std::string {
-    const bool fits = v.is_number_unsigned() ? v.get<unsigned long long>() <= (unsigned long long)hi && lo <= 0
-                      : v.is_number_integer() ? v.get<long long>() >= lo && v.get<long long>() <= hi
-                                              : false;
-    if (fits && (!v.is_number_unsigned() || v.get<unsigned long long>() >= (unsigned long long)std::max(lo, 0LL)))
-      return "";
+    // JSON reads a non-negative integer as unsigned (it may exceed long long's range).
+    const bool fits =
+        v.is_number_unsigned()
+            ? hi >= 0 && v.get<unsigned long long>() <= (unsigned long long)hi &&
+                  v.get<unsigned long long>() >= (unsigned long long)std::max(lo, 0LL)
+        : v.is_number_integer() ? v.get<long long>() >= lo && v.get<long long>() <= hi
+                                : false;
+    if (fits) return "";
     return "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   };
 }
