@@ -62,14 +62,18 @@ TEST(WindowHashLesson, BadHashesShowInTheShadowTheHistogramAndTheTable) {
   int pngWidth = 0, pngHeight = 0;
   pixels(dir / "b_md5_4_pairs.png", pngWidth, pngHeight);
   EXPECT_EQ(pngWidth, 64 * 7) << "a small output is enlarged before it is annotated";
-  // Verdicts (white passed, red failed): lcg32 mostly red, md5_16 mostly white.
-  const auto redCells = [&](const char* name) {
-    const auto rgb = pixels(dir / name, width, height);
-    int red = 0;
-    for (size_t i = 0; i < rgb.size(); i += 3) red += rgb[i] > 0.5f && rgb[i + 1] < 0.3f;
-    return double(red) / (width * height);
+  // Verdicts (0 passed, 0.5 weak, 1 failed, -1 not applicable; red on the colour bar): lcg32
+  // mostly failed, md5_16 mostly passed. Read from the EXRs: the PNGs are annotated, the
+  // enlarged table on a wider canvas under its colour bar.
+  const auto failedCells = [&](const char* name) {
+    const auto verdicts = readExr(dir / name, width, height, names);
+    int failed = 0;
+    for (float verdict : verdicts) failed += verdict > 0.75f;
+    return double(failed) / (width * height);
   };
-  EXPECT_GT(redCells("d_lcg32_verdicts.png"), 0.7);
-  EXPECT_LT(redCells("e_md5_16_verdicts.png"), 0.2);
+  EXPECT_GT(failedCells("d_lcg32_verdicts.exr"), 0.7);
+  EXPECT_LT(failedCells("e_md5_16_verdicts.exr"), 0.2);
+  EXPECT_GT(pixels(dir / "d_lcg32_verdicts.png", pngWidth, pngHeight).size(), 0u);
+  EXPECT_GT(pngHeight, 160) << "the verdict table is annotated (a colour bar under it)";
   fs::remove_all(dir);
 }
