@@ -15,21 +15,13 @@
 #include <sstream>
 
 #include "support/command.h"
+#include "support/refusal.h"
 #include "support/temp_directory.h"
 #include "support/window_test.h"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // Every file under `directory`, relative, sorted (the whole tree as a listing to compare).
 std::string listing(const fs::path& directory) {
