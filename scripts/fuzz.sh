@@ -6,7 +6,7 @@
 # found (BUILD_FUZZ/corpus, default build-fuzz). A finding (crash, sanitizer report, leak,
 # timeout, out of memory, an exception other than InputError) fails the run and leaves its
 # input in BUILD_FUZZ/findings. Then the corpus is replayed with source-based coverage and
-# the line coverage of the two readers printed (docs/reliability.md); FUZZ_COVERAGE=0 skips
+# the line coverage of the readers printed (docs/reliability.md); FUZZ_COVERAGE=0 skips
 # that (ctest Fuzz.Bounded).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,7 +33,7 @@ for harness in $harnesses; do
     grep -E "ERROR|SUMMARY|==[0-9]+==" "$build/fuzz_$harness.log" | head -20 || true
     echo "fuzz_$harness: FINDING (input in $build/findings, log in $build/fuzz_$harness.log)"
   fi
-  grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$build/fuzz_$harness.log" || true
+  grep -E "^#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$build/fuzz_$harness.log" || true
 done
 # Line coverage of the readers over the corpus (when llvm-cov is installed).
 if [ "${FUZZ_COVERAGE:-1}" != 0 ] && command -v llvm-profdata-14 >/dev/null &&
@@ -45,8 +45,8 @@ if [ "${FUZZ_COVERAGE:-1}" != 0 ] && command -v llvm-profdata-14 >/dev/null &&
     llvm-profdata-14 merge -sparse "$build/coverage/$harness.profraw" -o "$build/coverage/$harness.profdata"
     echo "line coverage, corpus of fuzz_$harness:"
     llvm-cov-14 report "$build/coverage/fuzz_$harness" -instr-profile="$build/coverage/$harness.profdata" \
-      app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/scene.cpp \
-      app/io/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/json_input/p;/output_path/p;/TOTAL/p'
+      app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/gltf_declared.cpp app/scene/scene.cpp \
+      app/io/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/gltf_/p;/json_input/p;/output_path/p;/TOTAL/p'
   done
 fi
 exit $status

@@ -19,11 +19,7 @@ void writeAnnotatedPng(const std::filesystem::path& png, const Frame& frame, con
                        const std::string& keyParameters) {
   const std::vector<float> values = texture.readFloats(layer);
   DisplayHint hint = output.display;
-  const int shown = hint.channel < texture.channelCount() ? hint.channel : -1;
-  // Errors and counts: the range the window's view starts from (robustRange, io/colormap.h).
-  const bool automatic = hint.rangeFromData && shown >= 0 &&
-                         robustRange(values, texture.channelCount(), shown,
-                                     hint.colormap == Colormap::Diverging, hint.black, hint.white);
+  const bool automatic = applyDataRange(hint, values, texture.channelCount());  // io/colormap.h
   Annotation annotation;
   annotation.caption = frame.scene.name + " · " + key +
                        (texture.isArray() ? " level " + std::to_string(layer) : "") + " · " +

@@ -86,3 +86,9 @@ bool robustRange(const std::vector<float>& values, int channels, int channel, bo
   high = p;
   return true;
 }
+
+bool applyDataRange(DisplayHint& hint, const std::vector<float>& values, int channels) {
+  return hint.rangeFromData &&
+         robustRange(values, channels, hint.channel, hint.colormap == Colormap::Diverging, hint.black,
+                     hint.white);
+}

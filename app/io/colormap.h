@@ -24,3 +24,10 @@ std::vector<std::uint8_t> displayRgb8(const std::vector<float>& values, int widt
 constexpr double kRobustPercentile = 0.99;
 bool robustRange(const std::vector<float>& values, int channels, int channel, bool symmetric,
                  float& low, float& high);
+
+// A data-ranged output's display (DisplayHint::rangeFromData: errors, counts) as a view first
+// shows it: black and white of `hint` set to robustRange of its channel. true when the range
+// came from the data; false (hint untouched) for other outputs, a channel the texture lacks,
+// or no qualifying value. Used by every exported PNG (plain and annotated); the window's views
+// apply robustRange to their own settings (TextureView::autoRange) the same way.
+bool applyDataRange(DisplayHint& hint, const std::vector<float>& values, int channels);

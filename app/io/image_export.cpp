@@ -85,11 +85,9 @@ std::vector<std::filesystem::path> exportTexture(const std::filesystem::path& di
   const auto png = directory / (stem + ".png");
   writeExr(exr, values, texture.width(), texture.height(), output.channels);
   // The PNG as a view first shows it: errors and counts in the range of their data
-  // (robustRange, the p99 of the magnitudes), everything else in its declared range.
+  // (applyDataRange, io/colormap.h), everything else in its declared range.
   DisplayHint hint = output.display;
-  if (hint.rangeFromData && hint.channel < texture.channelCount())
-    robustRange(values, texture.channelCount(), hint.channel, hint.colormap == Colormap::Diverging,
-                hint.black, hint.white);
+  applyDataRange(hint, values, texture.channelCount());
   writePng(png, displayRgb8(values, texture.width(), texture.height(), texture.channelCount(), hint),
            texture.width(), texture.height());
   return {exr, png};

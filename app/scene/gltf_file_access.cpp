@@ -2,11 +2,6 @@
 
 #include <sys/stat.h>
 
-#include <nlohmann/json.hpp>
-
-#include <cctype>
-
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -15,23 +10,6 @@
 #include "scene/scene.h"
 
 namespace {
-
-// As tinygltf's dlib::urldecode: "%20" and "+" are spaces.
-std::string urlDecoded(const std::string& uri) {
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '+') {
-      out += ' ';
-    } else if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-               std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
-}
 
 // tinygltf joins "<base dir>/<uri>" (or "./<uri>"): does `path` name `uri`?
 bool names(const std::string& path, const std::string& uri) {
@@ -46,37 +24,6 @@ std::string bytes(std::uint64_t count) {
 }
 
 }  // namespace
-
-GltfFiles declaredFiles(const std::vector<unsigned char>& data, bool binary) {
-  GltfFiles files;
-  std::string text;
-  if (binary) {  // header (magic, version, length), then the JSON chunk (length, "JSON")
-    if (data.size() < 20 || std::memcmp(data.data() + 16, "JSON", 4) != 0) return files;
-    std::uint32_t length = 0;
-    std::memcpy(&length, data.data() + 12, 4);
-    if (length > data.size() - 20) return files;
-    text.assign(reinterpret_cast<const char*>(data.data() + 20), length);
-  } else {
-    text.assign(reinterpret_cast<const char*>(data.data()), data.size());
-  }
-  const nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
-  if (!root.is_object()) return files;
-  const auto external = [](const nlohmann::json& item) {
-    return item.is_object() && item.contains("uri") && item["uri"].is_string() &&
-           item["uri"].get<std::string>().rfind("data:", 0) != 0;
-  };
-  if (root.contains("buffers") && root["buffers"].is_array())
-    for (const auto& buffer : root["buffers"])
-      if (external(buffer)) {
-        const auto& length = buffer.contains("byteLength") ? buffer["byteLength"] : nlohmann::json();
-        files.buffers.emplace_back(urlDecoded(buffer["uri"].get<std::string>()),
-                                   length.is_number_unsigned() ? length.get<std::uint64_t>() : 0);
-      }
-  if (root.contains("images") && root["images"].is_array())
-    for (const auto& image : root["images"])
-      if (external(image)) files.images.push_back(urlDecoded(image["uri"].get<std::string>()));
-  return files;
-}
 
 // Any existing path: the read below names what is wrong with one that is not a regular file
 // (tinygltf would say "File not found" for /dev/zero).
@@ -99,10 +46,10 @@ bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const st
   if (error || size >= kMaxFileBytes) return reject("unreadable or 4 GiB or more");
   if (GltfFiles* files = static_cast<GltfFiles*>(user)) {
     const std::pair<std::string, std::uint64_t>* buffer = nullptr;
-    for (const auto& declared : files->buffers)
+    for (const auto& declared : files->declared->buffers)
       if (names(path, declared.first)) buffer = &declared;
     if (!buffer) {
-      for (const std::string& image : files->images)
+      for (const std::string& image : files->declared->images)
         if (names(path, image)) {  // images are skipped: nothing read
           out->assign(1, 0);
           return true;

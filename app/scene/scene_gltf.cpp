@@ -4,7 +4,6 @@
 // header is used with no configuration macros (they would change what the header
 // declares, not the library), and without TINYGLTF_IMPLEMENTATION.
 #include <tiny_gltf.h>
-#include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
 #include "io/json_input.h"
@@ -83,54 +82,6 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
-// Extensions that change how geometry is stored; reading past them would produce garbage.
-// Returns what the extension does, in words, or nullptr when it is not one of them.
-const char* unsupportedGeometryExtension(const std::string& name) {
-  if (name == "KHR_draco_mesh_compression") return "Draco-compressed meshes";
-  if (name == "EXT_meshopt_compression") return "meshopt-compressed buffers";
-  if (name == "KHR_mesh_quantization") return "quantized (integer) vertex attributes";
-  if (name == "EXT_mesh_gpu_instancing") return "GPU-instanced meshes";
-  return nullptr;
-}
-
-std::string unsupportedMessage(const std::string& name, const char* what) {
-  return std::string(what) + " (" + name + ") are not supported";
-}
-
-// extensionsRequired and extensionsUsed, read from the file's JSON before tinygltf sees it:
-// tinygltf checks accessors first, and a Draco accessor (no bufferView) fails there with a
-// message that names neither Draco nor the extension. Empty when the JSON does not parse
-// (tinygltf then says why).
-struct DeclaredExtensions {
-  std::vector<std::string> required, used;
-};
-
-DeclaredExtensions declaredExtensions(const std::vector<unsigned char>& bytes, bool binary) {
-  DeclaredExtensions result;
-  const unsigned char* json = bytes.data();
-  size_t length = bytes.size();
-  if (binary) {  // 12-byte header, then the JSON chunk: length, type "JSON", bytes
-    if (bytes.size() < 20) return result;
-    std::uint32_t chunkLength = 0, chunkType = 0;
-    std::memcpy(&chunkLength, bytes.data() + 12, 4);
-    std::memcpy(&chunkType, bytes.data() + 16, 4);
-    if (chunkType != 0x4E4F534Au || chunkLength > bytes.size() - 20) return result;
-    json = bytes.data() + 20;
-    length = chunkLength;
-  }
-  const nlohmann::json doc = nlohmann::json::parse(json, json + length, nullptr, false);
-  if (!doc.is_object()) return result;
-  auto names = [&](const char* key, std::vector<std::string>& out) {
-    const auto it = doc.find(key);
-    if (it == doc.end() || !it->is_array()) return;
-    for (const nlohmann::json& name : *it)
-      if (name.is_string()) out.push_back(name.get<std::string>());
-  };
-  names("extensionsRequired", result.required);
-  names("extensionsUsed", result.used);
-  return result;
-}
-
 // A validated accessor: `count` elements, element i starts at data + i * stride, and all
 // of them lie inside the buffer.
 struct AccessorView {
@@ -206,7 +157,7 @@ std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
 
 void Importer::checkExtensions() {
   for (const std::string& name : model_.extensionsRequired) {
-    if (const char* what = unsupportedGeometryExtension(name)) fail(unsupportedMessage(name, what));
+    if (const char* what = unsupportedGeometryExtension(name)) fail(unsupportedExtensionMessage(name, what));
     warn("ignoring required extension " + name);
   }
 }
@@ -600,9 +551,12 @@ std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& by
     fail("unknown extension '" + ext + "' (expected .gltf or .glb)");
   if (bytes.size() >= kMaxFileBytes) fail("files of 4 GiB or more are not supported");
 
-  const DeclaredExtensions declared = declaredExtensions(bytes, ext == ".glb");
-  for (const std::string& name : declared.required)
-    if (const char* what = unsupportedGeometryExtension(name)) fail(unsupportedMessage(name, what));
+  // One read of the JSON before tinygltf's (gltf_declared.h): an unsupported geometry
+  // extension is named before tinygltf fails on its accessors with a message that names
+  // neither, and the buffers it declares bound what is read.
+  const GltfDeclared declared = readGltfDeclared(bytes, ext == ".glb");
+  for (const std::string& name : declared.extensionsRequired)
+    if (const char* what = unsupportedGeometryExtension(name)) fail(unsupportedExtensionMessage(name, what));
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skipImage, nullptr);
@@ -610,8 +564,7 @@ std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& by
   // bytes read (gltf_file_access.h): a 48-byte buffer naming a 2 GiB file is refused unread.
   SceneBudget whole;
   SceneBudget& shared = budget ? *budget : whole;
-  GltfFiles files = declaredFiles(bytes, ext == ".glb");
-  files.remaining = &shared.fileBytes;
+  GltfFiles files{&declared, &shared.fileBytes};
   loader.SetFsCallbacks({regularFileExists, unexpandedPath, readRegularFile, refuseWrite, &files});
   tinygltf::Model model;
   std::string err, warn;
@@ -632,9 +585,9 @@ std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& by
     std::string message =
         err.empty() ? "tinygltf could not load it" : "tinygltf: " + printable(oneLine(err), 400);
     // Used but not required: the file promises a fallback; name the extension if it failed.
-    for (const std::string& name : declared.used)
+    for (const std::string& name : declared.extensionsUsed)
       if (const char* what = unsupportedGeometryExtension(name))
-        message += " (the file uses " + unsupportedMessage(name, what) + ")";
+        message += " (the file uses " + unsupportedExtensionMessage(name, what) + ")";
     fail(message);
   }
   if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + printable(oneLine(warn), 400));

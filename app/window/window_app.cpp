@@ -15,6 +15,7 @@
 
 #include "gl/gl_context.h"
 #include "core/input_error.h"
+#include "io/headless_session.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
 #include "scene/scene_builtin.h"
@@ -374,6 +375,11 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene,
     state.status = message;
   }
   for (const std::string& assignment : options.sets) state.session.pipeline.set(assignment);
+  // A --set choice naming a disabled stage (composite.shadow=raster4d, raster4d off) would
+  // silently use nothing. The command line refuses it (decision 083); the window warns in
+  // its log and status line, since the stage can be enabled in the pipeline panel.
+  if (std::string problem = disabledSelection(state.session.pipeline, options.sets); !problem.empty())
+    state.report(LogLevel::Warning, "--set", problem);  // the log echoes it to stderr
   // A ground truth chosen by --set or --config is the user's: the live error keeps it.
   const std::string truthKey = groundTruthChoiceKey(state.session.pipeline);
   if (!truthKey.empty()) {

@@ -14,21 +14,13 @@
 #include <thread>
 
 #include "support/command.h"
+#include "support/refusal.h"
 #include "support/scene_writer.h"
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // Names in `directory` holding ".partial" (a temporary file or directory left behind).
 std::vector<std::string> leftovers(const fs::path& directory) {

@@ -15,21 +15,13 @@
 #include <sstream>
 
 #include "support/command.h"
+#include "support/refusal.h"
 #include "support/temp_directory.h"
 #include "support/window_test.h"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 // Every file under `directory`, relative, sorted (the whole tree as a listing to compare).
 std::string listing(const fs::path& directory) {
@@ -261,4 +253,24 @@ TEST(ScriptInputs, NumericArgumentsOutOfRangeAreRefused) {
     EXPECT_EQ(result.exitCode, 2) << action << "\n" << result.output;
     EXPECT_TRUE(contains(result.output, expected)) << action << "\n" << result.output;
   }
+}
+
+// 9. The window's --set of a disabled method (composite.shadow=raster4d, raster4d off) drew
+// no shadow and said nothing. The command line refuses it (CliReliability); the window warns
+// in its log panel and status line (the stage can be enabled there), naming the fix.
+TEST(ScriptInputs, TheWindowWarnsWhenSetSelectsADisabledMethod) {
+  const TempDirectory dir("penumbra_window_disabled");
+  const std::string file = dir.write("s.json", std::string("[") + kSmall + R"({"print_log": "end"}])");
+  const auto warned = script(file, "--set composite.shadow=raster4d");
+  EXPECT_EQ(warned.exitCode, 0) << warned.output;
+  std::istringstream lines(warned.output);
+  bool logged = false;
+  for (std::string line; std::getline(lines, line);)
+    logged |= line.rfind("log end: ", 0) == 0 && contains(line, "warning  --set: composite.shadow=raster4d") &&
+              contains(line, "which is disabled (raster4d.enabled=false)") &&
+              contains(line, "add --set raster4d.enabled=true");
+  EXPECT_TRUE(logged) << warned.output;
+  const auto enabled = script(file, "--set composite.shadow=raster4d --set raster4d.enabled=true --set raster4d.samples=8");
+  EXPECT_EQ(enabled.exitCode, 0) << enabled.output;
+  EXPECT_FALSE(contains(enabled.output, "which is disabled")) << enabled.output;
 }

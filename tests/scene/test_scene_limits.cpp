@@ -16,6 +16,7 @@
 #include "scene/scene_file.h"
 #include "scene/scene_gltf.h"
 #include "scene/scene_stress.h"
+#include "support/refusal.h"
 #include "support/scene_writer.h"
 
 using nlohmann::json;
@@ -25,20 +26,7 @@ namespace {
 // The message of the InputError loading `path` throws ("" and a test failure if none).
 std::string refusal(const std::string& path) {
   std::vector<std::string> warnings;
-  try {
-    loadScene(path, warnings);
-  } catch (const InputError& error) {
-    return error.what();
-  } catch (const std::exception& error) {
-    ADD_FAILURE() << path << ": not an InputError: " << error.what();
-    return error.what();
-  }
-  ADD_FAILURE() << path << " loaded but should be refused";
-  return "";
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
+  return refusalOf(path, [&] { loadScene(path, warnings); });
 }
 
 }  // namespace
