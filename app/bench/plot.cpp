@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "bench/plot_layout.h"
 #include "figures/cairo_file.h"
 
 namespace {
@@ -24,46 +25,6 @@ std::string tickText(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
   return text;
-}
-
-// "Nice" linear ticks (1, 2, 5 x 10^k) covering [0, top].
-std::vector<double> linearTicks(double top, double& axisTop) {
-  const double raw = top / 5, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = magnitude;
-  for (double factor : {1.0, 2.0, 5.0, 10.0})
-    if (factor * magnitude >= raw) { step = factor * magnitude; break; }
-  axisTop = std::ceil(top / step) * step;
-  std::vector<double> ticks;
-  for (double t = 0; t <= axisTop * (1 + 1e-9); t += step) ticks.push_back(t);
-  return ticks;
-}
-
-// Linear ticks at a 1, 2, 5 x 10^k step inside [low, high].
-std::vector<double> rangeTicks(double low, double high) {
-  double unused = 0;
-  const std::vector<double> fromZero = linearTicks(high - low, unused);
-  const double step = fromZero.size() > 1 ? fromZero[1] : 1;
-  std::vector<double> ticks;
-  for (double t = std::ceil(low / step) * step; t <= high + 1e-9 * step; t += step)
-    ticks.push_back(std::fabs(t) < 1e-12 * step ? 0.0 : t);
-  return ticks;
-}
-
-// Log ticks at 1, 2, 5 x 10^k inside [low, high]; at 1..9 x 10^k when that gives fewer
-// than three.
-std::vector<double> logTicks(double low, double high) {
-  std::vector<double> ticks;
-  for (const std::vector<double>& factors : {std::vector<double>{1, 2, 5},
-                                             std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
-    ticks.clear();
-    for (int k = int(std::floor(std::log10(low))); k <= int(std::ceil(std::log10(high))); ++k)
-      for (double factor : factors) {
-        const double t = factor * std::pow(10.0, k);
-        if (t >= low && t <= high) ticks.push_back(t);
-      }
-    if (ticks.size() >= 3) break;
-  }
-  return ticks;
 }
 
 enum class Align { Left, Center, Right };
@@ -105,50 +66,40 @@ void line(cairo_t* cr, double xa, double ya, double xb, double yb, const Color& 
   cairo_stroke(cr);
 }
 
-// The series' shape and colour (seriesStyle), so colour is not the only cue.
+// The series' shape and colour (seriesStyle), so colour is not the only cue; the outline
+// is the chart layout's (plot_layout.h), as the window draws it.
 void marker(cairo_t* cr, double x, double y, int series, double r) {
   const SeriesStyle style = seriesStyle(series);
   cairo_set_source_rgb(cr, style.r, style.g, style.b);
-  switch (style.shape) {
-    case MarkerShape::Square: cairo_rectangle(cr, x - r, y - r, 2 * r, 2 * r); break;
-    case MarkerShape::Diamond:
-      cairo_move_to(cr, x, y - r * 1.3), cairo_line_to(cr, x + r * 1.3, y);
-      cairo_line_to(cr, x, y + r * 1.3), cairo_line_to(cr, x - r * 1.3, y);
-      cairo_close_path(cr);
-      break;
-    case MarkerShape::Triangle:
-      cairo_move_to(cr, x, y - r * 1.2), cairo_line_to(cr, x + r * 1.2, y + r);
-      cairo_line_to(cr, x - r * 1.2, y + r);
-      cairo_close_path(cr);
-      break;
-    case MarkerShape::Circle:
-      cairo_new_sub_path(cr);
-      cairo_arc(cr, x, y, r * 1.1, 0, 2 * M_PI);
-      break;
-    case MarkerShape::TriangleDown:
-      cairo_move_to(cr, x, y + r * 1.2), cairo_line_to(cr, x + r * 1.2, y - r);
-      cairo_line_to(cr, x - r * 1.2, y - r);
-      cairo_close_path(cr);
-      break;
+  const MarkerOutline outline = markerOutline(style.shape);
+  if (outline.circle) {
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, x, y, r * outline.radius, 0, 2 * M_PI);
+  } else {
+    for (size_t i = 0; i < outline.vertices.size(); ++i)
+      (i == 0 ? cairo_move_to : cairo_line_to)(cr, x + r * outline.vertices[i][0], y + r * outline.vertices[i][1]);
+    cairo_close_path(cr);
   }
   cairo_fill(cr);
 }
 
 struct Layout {
+  ChartLayout chart;  // ranges, ticks, drawable points, frontier order (plot_layout.h)
   std::vector<const PlotPoint*> points, frontier;  // drawable; frontier by increasing x
   std::vector<std::string> frontierLines;
   double width = 0, height = 0;
 };
 
-// 1. The points that can be drawn (finite; log axes need > 0) and the frontier, numbered
-//    left to right; the legend sits right of the axes so it never hides a point.
+// 1. The chart's layout (the points that can be drawn, the frontier numbered left to right,
+//    the axes) and the page: the legend sits right of the axes so it never hides a point.
 Layout layout(const PlotSpec& spec) {
   Layout l;
-  for (const PlotPoint& p : spec.points)
-    if (std::isfinite(p.x) && std::isfinite(p.y) && (!spec.logX || p.x > 0) && (!spec.logY || p.y > 0))
-      l.points.push_back(&p);
-  for (const PlotPoint* p : l.points) if (p->frontier) l.frontier.push_back(p);
-  std::sort(l.frontier.begin(), l.frontier.end(), [](auto a, auto b) { return a->x < b->x; });
+  std::vector<double> xs, ys;
+  std::vector<bool> onFrontier;
+  for (const PlotPoint& p : spec.points) xs.push_back(p.x), ys.push_back(p.y), onFrontier.push_back(p.frontier);
+  l.chart = chartLayout(xs, ys, onFrontier, spec.logX, spec.logY);
+  for (size_t i : l.chart.drawable) l.points.push_back(&spec.points[i]);
+  for (size_t i : l.chart.frontier) l.frontier.push_back(&spec.points[i]);
   for (size_t i = 0; i < l.frontier.size(); ++i) {
     char numbers[64];
     std::snprintf(numbers, sizeof numbers, " (%.3g, %.3g)", l.frontier[i]->x, l.frontier[i]->y);
@@ -168,52 +119,23 @@ Layout layout(const PlotSpec& spec) {
 
 void drawPlot(cairo_t* cr, const PlotSpec& spec, const Layout& l) {
   const double W = l.width, H = l.height;
-  const double x0 = 96, x1 = spec.width - 24, y0 = H - 78, y1 = 56;
+  const PlotBox box = plotAxesBox(spec);
+  const double x0 = box.left, x1 = box.right, y0 = box.bottom, y1 = box.top;
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
 
-  // 2. Ranges and mappings.
-  double xLow = 1, xHigh = 10, yLow = 0.1, yHigh = 1;
-  if (!l.points.empty()) {
-    xLow = xHigh = l.points[0]->x;
-    yLow = yHigh = l.points[0]->y;
-    for (const PlotPoint* p : l.points) {
-      xLow = std::min(xLow, p->x), xHigh = std::max(xHigh, p->x);
-      yLow = std::min(yLow, p->y), yHigh = std::max(yHigh, p->y);
-    }
-  }
-  if (spec.logX) { xLow /= 1.25; xHigh *= 1.25; }
-  else { const double pad = 0.05 * std::max(xHigh - xLow, 1e-9); xLow -= pad; xHigh += pad; }
-  if (xHigh <= xLow) xHigh = xLow * 2 + 1;
-  double yTop = 1, yBottom = 0;
-  std::vector<double> yTicks;
-  if (spec.logY) {
-    yBottom = yLow / 1.25;
-    yTop = std::max(yHigh * 1.25, yBottom * 2);
-    yTicks = logTicks(yBottom, yTop);
-  } else {
-    yTicks = linearTicks(std::max(yHigh * 1.08, 1e-6), yTop);
-  }
-  auto px = [&](double x) {
-    const double t = spec.logX ? (std::log(x) - std::log(xLow)) / (std::log(xHigh) - std::log(xLow))
-                               : (x - xLow) / (xHigh - xLow);
-    return x0 + t * (x1 - x0);
-  };
-  auto py = [&](double y) {
-    const double t = spec.logY ? (std::log(y) - std::log(yBottom)) / (std::log(yTop) - std::log(yBottom))
-                               : y / yTop;
-    return y0 - t * (y0 - y1);
-  };
+  // 2. The mappings of the layout's axes onto this page's box.
+  const ChartAxis &xAxis = l.chart.x, &yAxis = l.chart.y;
+  auto px = [&](double x) { return x0 + xAxis.at(x) * (x1 - x0); };
+  auto py = [&](double y) { return y0 - yAxis.at(y) * (y0 - y1); };
 
   // 3. Grid, axes, ticks, labels.
-  const std::vector<double> xTicks = spec.logX ? logTicks(xLow, xHigh) : rangeTicks(xLow, xHigh);
-  for (double t : xTicks) {
-    if (t < xLow || t > xHigh) continue;
+  for (double t : xAxis.ticks) {
     line(cr, px(t), y0, px(t), y1, kGrid);
     line(cr, px(t), y0, px(t), y0 + 5, kBlack);
     text(cr, px(t), y0 + 8, tickText(t), 15, kBlack, Align::Center);
   }
-  for (double t : yTicks) {
+  for (double t : yAxis.ticks) {
     line(cr, x0, py(t), x1, py(t), kGrid);
     line(cr, x0 - 5, py(t), x0, py(t), kBlack);
     text(cr, x0 - 8, py(t) - 8, tickText(t), 15, kBlack, Align::Right);
@@ -290,6 +212,10 @@ std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, 
     return cairo_pdf_surface_create(file, l.width, l.height);
   }, draw, false);
   return {png, svg, pdf};
+}
+
+PlotBox plotAxesBox(const PlotSpec& spec) {
+  return {96, double(spec.width) - 24, double(spec.height) - 78, 56};
 }
 
 SeriesStyle seriesStyle(int series) {

@@ -25,6 +25,11 @@ struct PlotSpec {
   int width = 1000, height = 680;  // the axes' area; the legend widens the page
 };
 
+// The axes' box on the page, in pixels (y down): the chart layout's (plot_layout.h) 0..1 map
+// onto [left, right] and [bottom, top].
+struct PlotBox { double left, right, bottom, top; };
+PlotBox plotAxesBox(const PlotSpec& spec);
+
 // Writes `stem`.png, .svg and .pdf (each atomically: a temporary file renamed); returns
 // their paths. Throws std::runtime_error naming the file it cannot write.
 std::vector<std::filesystem::path> writePlot(const std::filesystem::path& stem, const PlotSpec& spec);

@@ -5,25 +5,20 @@
 #include <string>
 
 #include "gl/gpu_layout.h"
+#include "gl/hierarchy_cells.h"
 #include "shared/minmax_layout.h"
 
 static_assert(gpu::distinctBelow({MINMAX_NEAR_UNIT, MINMAX_FAR_UNIT}, gpu::kTextureUnits));
 static_assert(MINMAX_ATLAS_IMAGE < gpu::kImageUnits);
 
-int minmaxTopLevel(int width, int height) {
-  int top = 0;
-  while ((1 << top) < std::max(width, height)) ++top;
-  return top;
-}
+int minmaxTopLevel(int width, int height) { return cells::levelSpanning(std::max(width, height)); }
 
 glm::ivec2 minmaxLevelSize(int level, int width, int height) {
-  return {(width + (1 << level) - 1) >> level, (height + (1 << level) - 1) >> level};
+  return {cells::minmaxLevelSize(level, width), cells::minmaxLevelSize(level, height)};
 }
 
 glm::ivec2 minmaxLevelOrigin(int level, int width, int height) {
-  int y = 0;  // levels 1 .. level-1 stacked (the GLSL has the closed form)
-  for (int finer = 1; finer < level; ++finer) y += minmaxLevelSize(finer, width, height).y;
-  return {0, y};
+  return cells::minmaxLevelOrigin(level, {width, height});
 }
 
 glm::ivec2 minmaxAtlasSize(int width, int height) {

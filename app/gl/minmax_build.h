@@ -11,8 +11,8 @@
 
 // Top level: ceil(log2(max(W, H))), one texel over the whole map.
 int minmaxTopLevel(int width, int height);
-// Texels of level `level` per axis, and the origin in the atlas of a level >= 1 (as the
-// GLSL functions).
+// Texels of level `level` per axis, and the origin in the atlas of a level >= 1: the
+// shaders' functions (gl/hierarchy_cells.h).
 glm::ivec2 minmaxLevelSize(int level, int width, int height);
 glm::ivec2 minmaxLevelOrigin(int level, int width, int height);
 // The atlas: ceil(W/2) x (stacked heights of levels >= 1); 1 x 1 for a 1 x 1 map.

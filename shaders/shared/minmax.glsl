@@ -13,12 +13,5 @@
 // stacked. The atlas is ceil(W/2) x (sum of those heights) texels (1 x 1 for a 1 x 1 map);
 // the stored levels use 1/3 of one level.
 
-// Texels of level `level` along an axis of `size` level-0 texels.
-int minmaxLevelSize(int level, int size) { return (size + (1 << level) - 1) >> level; }
-
-// Atlas origin of level `level` >= 1. The stacked heights sum_{j=1}^{n-1} ceil(H / 2^j) in closed
-// form: ceil(H / 2^j) = floor((H - 1) / 2^j) + 1, and sum_{j>=1} floor(m / 2^j) = m - bitCount(m).
-ivec2 minmaxLevelOrigin(int level, ivec2 size) {
-  int m = size.y - 1, tail = m >> (level - 1);
-  return ivec2(0, (m - bitCount(m)) - (tail - bitCount(tail)) + level - 1);
-}
+// The arithmetic, shared with C++: minmaxLevelSize, minmaxCell1D, minmaxLevelOrigin.
+#include "hierarchy_cells.h"

@@ -26,26 +26,6 @@
 // writes the distinct texels only (NBufferTexels::Distinct, app/gl/nbuffer_build.h) from
 // level 2 on (levels 0 and 1 are one pass over every texel).
 
-int nbufferHalf(int level) { return level == 0 ? 0 : 1 << (level - 1); }
-
-// The smallest level n with 2^n >= texels, ceil(log2(texels)) in integers (0 for one
-// texel): a level-n window of the N-buffer, or cell of the min-max mipmap, spans 2^n texels.
-int levelSpanning(int texels) { return texels <= 1 ? 0 : findMSB(texels - 1) + 1; }
-
-// Per axis: the window [lo, hi] (inclusive) of level `level` texel `x` on a map of `size`.
-ivec2 nbufferWindow1D(int level, int x, int size) {
-  int span = 1 << level;
-  int lo = clamp(x - nbufferHalf(level), 0, max(size - span, 0));
-  return ivec2(lo, min(lo + span, size) - 1);
-}
-
-// The level texel whose window starts at `lo` (clamped inward like the window itself).
-// On an axis shorter than 2^level every texel's window is the whole axis: stay in the map.
-int nbufferTexelForWindow(int level, int lo, int size) {
-  return min(clamp(lo, 0, max(size - (1 << level), 0)) + nbufferHalf(level), size - 1);
-}
-
-// The texel holding the coarsest level's one window, the whole map (level `top`).
-ivec2 nbufferWholeMapTexel(int top, ivec2 size) {
-  return ivec2(nbufferTexelForWindow(top, 0, size.x), nbufferTexelForWindow(top, 0, size.y));
-}
+// The arithmetic, shared with C++: nbufferHalf, levelSpanning, nbufferWindow1D,
+// nbufferTexelForWindow, nbufferWholeMapTexel.
+#include "hierarchy_cells.h"

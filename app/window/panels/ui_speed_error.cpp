@@ -31,6 +31,12 @@ std::string newestBenchJson(const std::filesystem::path& directory) {
   return newest.empty() ? "" : fs::relative(newest, directory, error).string();
 }
 
+ChartLayout speedErrorChartLayout(const std::vector<const BenchResult*>& points) {
+  std::vector<double> xs, ys;
+  for (const BenchResult* p : points) xs.push_back(p->msMedian), ys.push_back(p->error.meanAbsInShadow);
+  return chartLayout(xs, ys, paretoFrontier(xs, ys), /*logX=*/true, /*logY=*/true);
+}
+
 namespace {
 
 // 1. The panel's state: the live run, or a loaded file.
@@ -63,25 +69,6 @@ void load(PanelState& panel) {
   panel.fileMessage = parseBenchJson(text.str(), panel.fileInfo, panel.fileSetups, panel.fileResults);
 }
 
-// Log-scale axes over the points, one decade at least.
-struct LogAxis {
-  double lo, hi;
-  float to(double v, float a, float b) const {
-    const double t = (std::log10(std::max(v, 1e-9)) - lo) / (hi - lo);
-    return a + float(t) * (b - a);
-  }
-};
-
-LogAxis axisFor(const std::vector<double>& values) {
-  double lo = INFINITY, hi = -INFINITY;
-  for (double v : values)
-    if (v > 0) lo = std::min(lo, std::log10(v)), hi = std::max(hi, std::log10(v));
-  if (!std::isfinite(lo)) return {-1, 0};
-  lo = std::floor(lo * 5) / 5 - 0.1;
-  hi = std::ceil(hi * 5) / 5 + 0.1;
-  return {lo, std::max(hi, lo + 0.5)};
-}
-
 // Colour and shape per series (bench/plot.h, as the report's charts), in the order the
 // series first appear; the window's plot is dark, so black is drawn white.
 ImU32 seriesColour(size_t index) {
@@ -92,20 +79,14 @@ ImU32 seriesColour(size_t index) {
 
 void seriesMarker(ImDrawList* draw, ImVec2 p, size_t index, float r) {
   const ImU32 colour = seriesColour(index);
-  switch (seriesStyle(int(index)).shape) {
-    case MarkerShape::Square: draw->AddRectFilled({p.x - r, p.y - r}, {p.x + r, p.y + r}, colour); break;
-    case MarkerShape::Diamond:
-      draw->AddQuadFilled({p.x, p.y - 1.3f * r}, {p.x + 1.3f * r, p.y}, {p.x, p.y + 1.3f * r},
-                          {p.x - 1.3f * r, p.y}, colour);
-      break;
-    case MarkerShape::Triangle:
-      draw->AddTriangleFilled({p.x, p.y - 1.2f * r}, {p.x + 1.2f * r, p.y + r}, {p.x - 1.2f * r, p.y + r}, colour);
-      break;
-    case MarkerShape::Circle: draw->AddCircleFilled(p, 1.1f * r, colour); break;
-    case MarkerShape::TriangleDown:
-      draw->AddTriangleFilled({p.x, p.y + 1.2f * r}, {p.x - 1.2f * r, p.y - r}, {p.x + 1.2f * r, p.y - r}, colour);
-      break;
+  const MarkerOutline outline = markerOutline(seriesStyle(int(index)).shape);  // as the report's
+  if (outline.circle) {
+    draw->AddCircleFilled(p, float(outline.radius) * r, colour);
+    return;
   }
+  std::vector<ImVec2> points;
+  for (const auto& v : outline.vertices) points.push_back({p.x + float(v[0]) * r, p.y + float(v[1]) * r});
+  draw->AddConvexPolyFilled(points.data(), int(points.size()), colour);
 }
 
 // 2. The chart: points (only those measured: frames > 0), frontier, the current one ringed.
@@ -122,50 +103,43 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   const float top = origin.y + 0.5f * em, bottom = origin.y + size.y - 1.4f * em;
   draw->AddRectFilled({left, top}, {right, bottom}, IM_COL32(30, 30, 34, 255));
   draw->AddRect({left, top}, {right, bottom}, IM_COL32(120, 120, 120, 255));
-  std::vector<double> xs, ys;
-  for (const BenchResult* p : points) xs.push_back(p->msMedian), ys.push_back(p->error.meanAbsInShadow);
-  const LogAxis ax = axisFor(xs), ay = axisFor(ys);
+  // The chart's layout (bench/plot_layout.h), as the report's charts: log ranges, ticks, the
+  // frontier in increasing time; mapped here onto the panel's box.
+  const ChartLayout chart = speedErrorChartLayout(points);
   auto at = [&](const BenchResult& p) {
-    return ImVec2{ax.to(p.msMedian, left, right), ay.to(p.error.meanAbsInShadow, bottom, top)};
+    return ImVec2{left + float(chart.x.at(p.msMedian)) * (right - left),
+                  bottom - float(chart.y.at(p.error.meanAbsInShadow)) * (bottom - top)};
   };
-  // Decade and 2x / 5x ticks; a label centred on its line, left out where it would touch
-  // the one before it or leave the plot's box (they ran together at UI scale 1.5).
+  // A label centred on its line, left out where it would touch the one before it or leave
+  // the plot's box (they ran together at UI scale 1.5).
   const ImU32 grid = IM_COL32(70, 70, 76, 255), label = IM_COL32(180, 180, 180, 255);
   float labelEnd = -INFINITY;
-  for (int decade = int(std::floor(ax.lo)); decade <= int(std::ceil(ax.hi)); ++decade)
-    for (double m : {1.0, 2.0, 5.0}) {
-      const double v = m * std::pow(10.0, decade);
-      if (std::log10(v) < ax.lo || std::log10(v) > ax.hi) continue;
-      const float x = ax.to(v, left, right);
-      draw->AddLine({x, top}, {x, bottom}, grid);
-      char text[32];
-      std::snprintf(text, sizeof text, "%g", v);
-      const float width = ImGui::CalcTextSize(text).x, start = x - 0.5f * width;
-      if (start < labelEnd + 0.5f * em || start + width > origin.x + size.x) continue;
-      draw->AddText({start, bottom + 2}, label, text);
-      labelEnd = start + width;
-    }
-  for (int decade = int(std::floor(ay.lo)); decade <= int(std::ceil(ay.hi)); ++decade)
-    for (double m : {1.0, 2.0, 5.0}) {
-      const double v = m * std::pow(10.0, decade);
-      if (std::log10(v) < ay.lo || std::log10(v) > ay.hi) continue;
-      const float y = ay.to(v, bottom, top);
-      draw->AddLine({left, y}, {right, y}, grid);
-      char text[32];
-      std::snprintf(text, sizeof text, "%g", v);
-      draw->AddText({origin.x, y - 0.5f * em}, label, text);
-    }
+  for (double v : chart.x.ticks) {
+    const float x = left + float(chart.x.at(v)) * (right - left);
+    draw->AddLine({x, top}, {x, bottom}, grid);
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    const float width = ImGui::CalcTextSize(text).x, start = x - 0.5f * width;
+    if (start < labelEnd + 0.5f * em || start + width > origin.x + size.x) continue;
+    draw->AddText({start, bottom + 2}, label, text);
+    labelEnd = start + width;
+  }
+  for (double v : chart.y.ticks) {
+    const float y = bottom - float(chart.y.at(v)) * (bottom - top);
+    draw->AddLine({left, y}, {right, y}, grid);
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    draw->AddText({origin.x, y - 0.5f * em}, label, text);
+  }
   // Frontier (increasing time), points coloured by method, the current configuration.
-  const std::vector<bool> onFrontier = paretoFrontier(xs, ys);
-  std::vector<size_t> frontier;
-  for (size_t i = 0; i < points.size(); ++i) if (onFrontier[i]) frontier.push_back(i);
-  std::sort(frontier.begin(), frontier.end(), [&](size_t a, size_t b) { return xs[a] < xs[b]; });
-  for (size_t i = 1; i < frontier.size(); ++i)
-    draw->AddLine(at(*points[frontier[i - 1]]), at(*points[frontier[i]]), IM_COL32(255, 190, 60, 255), 2);
+  std::vector<bool> onFrontier(points.size(), false);
+  for (size_t i : chart.frontier) onFrontier[i] = true;
+  for (size_t i = 1; i < chart.frontier.size(); ++i)
+    draw->AddLine(at(*points[chart.frontier[i - 1]]), at(*points[chart.frontier[i]]), IM_COL32(255, 190, 60, 255), 2);
   std::vector<std::string> methods;
   int hovered = -1;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  for (size_t i = 0; i < points.size(); ++i) {
+  for (size_t i : chart.drawable) {
     const std::string legend = seriesLegend(points[i]->method, points[i]->family);
     auto it = std::find(methods.begin(), methods.end(), legend);
     if (it == methods.end()) methods.push_back(legend), it = methods.end() - 1;

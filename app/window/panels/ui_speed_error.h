@@ -9,8 +9,16 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include "bench/bench_report.h"
+#include "bench/plot_layout.h"
 
 class UiState;
+
+// The chart's layout (bench/plot_layout.h, the report's charts' too) of these measured
+// points: time (msMedian) against mean |error| in shadow, both log, the Pareto frontier.
+ChartLayout speedErrorChartLayout(const std::vector<const BenchResult*>& points);
 
 // The newest bench/*/results.json under `directory`, relative to it; "" if none.
 std::string newestBenchJson(const std::filesystem::path& directory);

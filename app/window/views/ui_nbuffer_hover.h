@@ -1,8 +1,8 @@
 // N-buffer views (docs/design.md#window): the level-0 window that the hovered texel
 // of level n summarises, drawn as a rectangle. The N-buffer is the output wired to the
 // trace's "levels" slot (window/ui_graph.h recordingInput), one array layer per level. The
-// window rule is the layout spec of shaders/shared/nbuffer.glsl (nbufferWindow1D), restated
-// here for the UI only.
+// window rule is the shaders' own (shaders/shared/hierarchy_cells.h nbufferWindow1D, through
+// gl/hierarchy_cells.h), for levels the user may type past the map's.
 #pragma once
 #include <glm/glm.hpp>
 #include <string>
