@@ -47,8 +47,8 @@ void drawRunBudgetModal(UiState& state) {
 namespace {
 
 // The "running" overlay (header). The UI frame on screen when the run began, kept as copies
-// of its draw lists (ImGui rebuilds the originals in the next frame), is drawn again under
-// a dimming veil and a small window with the Cancel button: a real ImGui frame, so the
+// of its draw lists (ImGui rebuilds the originals in the next frame), is drawn again with a
+// small window over it holding the Cancel button: a real ImGui frame, so the
 // button is clicked as any other, between two checks of the run.
 constexpr double kOverlayAfterSeconds = 1.0;  // shorter runs never show it
 constexpr double kOverlayInterval = 0.1;      // seconds between two overlay frames
@@ -130,7 +130,6 @@ void drawRunningOverlay(GLFWwindow* window) {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::GetBackgroundDrawList()->AddRectFilled({0, 0}, display, IM_COL32(0, 0, 0, 120));
   // Centred on the window, the button in the middle (tests click the window's centre).
   ImGui::SetNextWindowPos({0.5f * display.x, 0.5f * display.y}, ImGuiCond_Always, {0.5f, 0.5f});
   ImGui::Begin("##run_overlay", nullptr,
@@ -141,7 +140,8 @@ void drawRunningOverlay(GLFWwindow* window) {
   const ImVec2 button{ImGui::GetContentRegionAvail().x, 2 * ImGui::GetFrameHeight()};
   if (runCancelRequested()) {
     ImGui::Button("cancelling...", button);
-  } else if (ImGui::Button("Cancel run", button)) {
+  } else if (ImGui::ButtonEx("Cancel run", button, ImGuiButtonFlags_PressedOnClick)) {
+    // On the press, not the release: the next overlay frame may be a whole tile away.
     requestRunCancel("Cancel clicked");
   }
   ImGui::TextDisabled("(or press Esc) The run stops at its next check: between stages, SSM\n"
