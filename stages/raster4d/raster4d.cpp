@@ -104,7 +104,7 @@ public:
                               "triangle) pairs of every FB pixel, known exactly after STEP 4's "
                               "counts, times the loops per pair (m + 1 with row masks, else "
                               "m (m + 1) + 1); a run over it is refused before STEP 5 (the "
-                              "window asks). 0: no limit.", 200000.0, 0.0, 1e9),
+                              "window asks). 0: no limit.", 50000.0, 0.0, 1e9),
         Param::integer("pick_x", "Picked pixel (image column) whose mask the `pickedMask` view "
                                  "shows; "
                                  "-1: none.", -1, -1, 16383),
