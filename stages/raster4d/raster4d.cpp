@@ -197,7 +197,10 @@ public:
                   "(m=%d, %d occluder triangles, FB %d x %d)", pairs, loopsPerPair, m,
                   occluders_.triangles(), fb, fb);
     checkRunBudget("raster4d.budget", pairs * loopsPerPair * 1e-6, param("budget").asFloat(), what,
-                   "Lower raster4d.samples or the image size, or turn raster4d.row_masks on");
+                   param("row_masks").asBool()
+                       ? "Lower raster4d.samples or the image size"
+                       : "Turn raster4d.row_masks on (m + 1 loops per pair), or lower "
+                         "raster4d.samples or the image size");
     throwIfRunCancelled("in raster4d, before STEP 5");
 
     // Bands of FB rows whose lists fit (one band unless max_entries is exceeded).
