@@ -74,11 +74,19 @@ void captureLastFrame() {
   const ImDrawData* data = ImGui::GetDrawData();
   if (!data || !data->Valid) return;
   const ImTextureID font = ImGui::GetIO().Fonts->TexID;
+  // A view's texture still alive and still 2D (a name a stage freed may come back as
+  // another kind of texture, which ImGui's GL_TEXTURE_2D bind would refuse).
+  auto live2D = [](ImTextureID id) {
+    const GLuint name = GLuint(reinterpret_cast<intptr_t>(id));
+    if (!glIsTexture(name)) return false;
+    GLint target = 0;
+    glGetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
+    return target == GL_TEXTURE_2D;
+  };
   for (int i = 0; i < data->CmdListsCount; ++i) {
     ImDrawList* copy = data->CmdLists[i]->CloneOutput();
     for (ImDrawCmd& command : copy->CmdBuffer)
-      if (command.UserCallback || (command.TextureId != font &&
-                                   !glIsTexture(GLuint(reinterpret_cast<intptr_t>(command.TextureId)))))
+      if (command.UserCallback || (command.TextureId != font && !live2D(command.TextureId)))
         command.ElemCount = 0, command.UserCallback = nullptr;
     overlay.lists.push_back(copy);
   }
