@@ -5,7 +5,7 @@
 // code with the shaders: the layers are read texel by texel, the region's bounds are a
 // brute-force min/max over the window's texels (not the N-buffer), all in double.
 //
-// THE RULES COUNTED (what one fetch is; docs/design.md "trace counters"):
+// THE RULES COUNTED (what one fetch is, as trace_ray.glsl counts them):
 // - a texel of the two layers is two fetches (near and far), a texel of the N-buffer one;
 // - region test ("nothing in the ray's region can block it", lit): one N-buffer texel, the
 //   level-L window with 2^L >= the side of the texel rectangle the ray's [sStart, sEnd]
