@@ -255,11 +255,11 @@ int main(int argc, char** argv) {
   shadersCommand->add_option("--dump", shaderDumpDirectory, "directory to write to")->required();
   // --time-limit on every command but bench (whose --time-limit bounds its reference tracing,
   // estimated before it starts): the run is cancelled at the next check after that many
-  // seconds (between stages, SSM passes, reference rows) and the command exits 1 with
+  // seconds (between stages, SSM passes, reference tiles) and the command exits 1 with
   // nothing half-written (core/run_control.h).
   std::string timeLimit;
   const char* timeLimitHelp = "seconds the command may run; then it stops at the next check "
-                              "(between stages, SSM passes, reference rows) and exits 1, "
+                              "(between stages, SSM passes, reference tiles) and exits 1, "
                               "writing nothing";
   app.add_option("--time-limit", timeLimit, timeLimitHelp)->check(positiveSeconds);
   for (CLI::App* sub : app.get_subcommands({}))

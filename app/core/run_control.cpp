@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
@@ -16,8 +17,24 @@ std::mutex reasonMutex;
 std::string reason;
 std::function<void()> pollHook;
 std::chrono::steady_clock::time_point lastPoll;
+std::string progress;  // under reasonMutex
+std::chrono::steady_clock::time_point runStart = std::chrono::steady_clock::now();
+std::atomic<unsigned> serial{0};
 
 }  // namespace
+
+void checkRunBudget(const std::string& key, double estimateMillions, double budgetMillions,
+                    const std::string& what, const std::string& fix) {
+  if (budgetMillions <= 0 || !(estimateMillions > budgetMillions)) return;
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers, " (about %.4g million), over %s=%g million. ",
+                estimateMillions, key.c_str(), budgetMillions);
+  char override[96];
+  std::snprintf(override, sizeof override, ", or run it anyway with --set %s=%.0f (0: no limit)",
+                key.c_str(), std::ceil(estimateMillions * 1.25));
+  throw RunBudgetExceeded(key + ": this run would " + what + numbers + fix + override, key,
+                          estimateMillions, budgetMillions);
+}
 
 void requestRunCancel(const std::string& why, bool sticky) {
   {
@@ -52,7 +69,34 @@ void pollRunCancel() {
   pollHook();
 }
 
+void setRunProgress(const std::string& where) {
+  std::lock_guard<std::mutex> lock(reasonMutex);
+  progress = where;
+}
+
+std::string runProgress() {
+  std::lock_guard<std::mutex> lock(reasonMutex);
+  return progress;
+}
+
+void markRunStart() {
+  {
+    std::lock_guard<std::mutex> lock(reasonMutex);
+    progress.clear();
+    runStart = std::chrono::steady_clock::now();
+  }
+  ++serial;
+}
+
+double secondsSinceRunStart() {
+  std::lock_guard<std::mutex> lock(reasonMutex);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+}
+
+unsigned runSerial() { return serial; }
+
 void throwIfRunCancelled(const std::string& where) {
+  setRunProgress(where);
   pollRunCancel();
   if (cancelled) throw RunCancelled("cancelled " + where + " (" + runCancelReason() + ")");
 }

@@ -83,6 +83,7 @@ float referenceOriginOffset(const ReferenceRequest& request, const glm::vec3& p)
 struct ReferenceTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  mutable std::atomic<std::uint64_t> rays{0};
   ~Impl() {
     if (scene) rtcReleaseScene(scene);
     if (device) rtcReleaseDevice(device);
@@ -127,6 +128,7 @@ struct ReferenceTracer::Impl {
         ++active;
       }
       if (active == 0) continue;
+      rays += std::uint64_t(active);
       occluded(valid, &context, &packet);
       for (int lane = 0; lane < K; ++lane)
         if (valid[lane] && packet.tfar[lane] >= 0) {  // tfar = -inf when occluded
@@ -210,6 +212,8 @@ ReferenceTracer::ReferenceTracer(const Scene& sceneIn) : impl_(std::make_unique<
 
 ReferenceTracer::~ReferenceTracer() = default;
 
+std::uint64_t ReferenceTracer::raysCast() const { return impl_->rays; }
+
 float ReferenceTracer::pointVisibility(const ReferenceRequest& request, const glm::vec3& p,
                                        const glm::vec3& n, int x, int y) const {
   const int m = request.samplesPerSide;
@@ -234,32 +238,37 @@ bool ReferenceTracer::trace(const ReferenceRequest& request, std::vector<float>&
   checkInRange(request);  // here: the worker threads must not throw
   visibility.assign(size_t(w) * h, 1.0f);
   if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, h);
+  const int tilesX = (w + kTile - 1) / kTile, tilesY = (h + kTile - 1) / kTile;
+  const int tiles = tilesX * tilesY;
+  threads = std::min(threads, tiles);
   if (progress) {
-    progress->rowsTotal = h;
-    progress->rowsDone = 0;
+    progress->tilesTotal = tiles;
+    progress->tilesDone = 0;
   }
-  std::atomic<int> nextRow{0};
+  std::atomic<int> nextTile{0}, completed{0};
   auto worker = [&] {
-    for (int y = nextRow++; y < h; y = nextRow++) {
-      // Between rows: a cancel request of its own, or of the whole run (core/run_control.h:
-      // Esc in the window, a command's --time-limit).
+    for (int tile = nextTile++; tile < tiles; tile = nextTile++) {
+      // Between tiles: a cancel request of its own, or of the whole run (core/run_control.h:
+      // Esc or Cancel in the window, a command's --time-limit).
       if ((progress && progress->cancel) || runCancelRequested()) return;
-      for (int x = 0; x < w; ++x) {
-        const size_t i = size_t(y) * w + x;
-        const float* p = &request.wsPosition[4 * i];
-        if (p[3] <= 0) continue;  // background: nothing to shade
-        const float* n = &request.wsNormal[4 * i];
-        visibility[i] = pointVisibility(request, {p[0], p[1], p[2]}, {n[0], n[1], n[2]}, x, y);
-      }
-      if (progress) ++progress->rowsDone;
+      const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+      for (int y = y0; y < std::min(h, y0 + kTile); ++y)
+        for (int x = x0; x < std::min(w, x0 + kTile); ++x) {
+          const size_t i = size_t(y) * w + x;
+          const float* p = &request.wsPosition[4 * i];
+          if (p[3] <= 0) continue;  // background: nothing to shade
+          const float* n = &request.wsNormal[4 * i];
+          visibility[i] = pointVisibility(request, {p[0], p[1], p[2]}, {n[0], n[1], n[2]}, x, y);
+        }
+      ++completed;
+      if (progress) ++progress->tilesDone;
     }
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (std::thread& thread : pool) thread.join();
-  return !(progress && progress->cancel) && !runCancelRequested();
+  return completed == tiles;  // every tile traced: the image is whole
 }
 
 double ReferenceTracer::estimateSeconds(const ReferenceRequest& request, int stride) const {
@@ -293,7 +302,7 @@ void TerminalProgress::update() {
   const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   if (now - lastDraw_ < 0.2) return;
   lastDraw_ = now;
-  const int total = std::max(1, progress_.rowsTotal.load()), done = progress_.rowsDone.load();
+  const int total = std::max(1, progress_.tilesTotal.load()), done = progress_.tilesDone.load();
   const int width = 30, filled = width * done / total;
   const double elapsed = now - started_;
   const double remaining = done > 0 ? elapsed * (total - done) / done : 0;

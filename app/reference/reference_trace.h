@@ -54,11 +54,11 @@ struct ReferenceRequest {
   float minimumEpsilon = 1e-5f;  // world units
 };
 
-// Shared with whoever shows progress or wants to stop a computation (the window later):
-// rows finished so far and a cancel request, both polled from any thread.
+// Shared with whoever shows progress or wants to stop a computation (the window, the stage):
+// tiles finished so far and a cancel request, both polled from any thread.
 struct ReferenceProgress {
-  std::atomic<int> rowsDone{0};
-  std::atomic<int> rowsTotal{0};
+  std::atomic<int> tilesDone{0};
+  std::atomic<int> tilesTotal{0};
   std::atomic<bool> cancel{false};
   std::atomic<bool> running{false};  // a computation is under way
   std::atomic<int> finished{0};      // completed computations: a change means "run again"
@@ -84,13 +84,19 @@ public:
   ReferenceTracer& operator=(const ReferenceTracer&) = delete;
 
   size_t occluderTriangles() const { return triangles_; }
+  // Rays handed to Embree so far by this tracer (every call, every thread): what the cost
+  // estimate (reference_cost.h) counts, less the samples behind a tangent plane.
+  std::uint64_t raysCast() const;
   // 16, 8, 4 or 1: the widest packet native to this CPU ($PENUMBRA_REFERENCE_PACKET forces
   // one, for measurements; every width gives the same bits).
   int packetWidth() const { return packetWidth_; }
 
-  // Visibility per pixel (GL order, 1 where there is no geometry). Rows are shared out to
-  // `threads` std::threads (0: hardware concurrency). Returns false (and a partial image)
-  // when progress->cancel was set. Deterministic: no result depends on the thread count.
+  // Visibility per pixel (GL order, 1 where there is no geometry). Tiles of kTile x kTile
+  // pixels are shared out to `threads` std::threads (0: hardware concurrency); before each
+  // tile, a cancel (progress->cancel, or the run's: core/run_control.h) stops the work, so
+  // it stops within one tile's time (m^2 x 256 rays) whatever the image size. Returns false
+  // (and a partial image) when cancelled. Deterministic: no result depends on the thread count.
+  static constexpr int kTile = 16;
   bool trace(const ReferenceRequest& request, std::vector<float>& visibility,
              ReferenceProgress* progress = nullptr, int threads = 0) const;
 

@@ -22,7 +22,7 @@ const Shortcut* shortcuts(int& count) {
       {"Ctrl+S", "save settings (penumbra_settings.json)"},
       {"Ctrl+E", "export all stages"},
       {"F12", "save a screenshot of the window"},
-      {"Esc", "cancel a run under way (between stages, SSM tiles, reference rows)"},
+      {"Esc", "cancel a run under way (so does the Cancel button shown after 1 s)"},
       {"Ctrl+Q", "quit"},
       {"Wheel", "zoom the view about the cursor"},
       {"Left drag / click", "pan the view / pick a texel"},

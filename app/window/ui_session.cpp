@@ -138,6 +138,7 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
   if (!runEveryFrame && holds(key)) return false;
   lastRun = key;  // a failing run is not retried until something changes
   clearRunCancel();  // Esc cancels the run under way, not the next one
+  markRunStart();    // the "running" overlay's clock (panels/ui_run_budget.h)
   try {
     pipeline.run(*frame, key.requested);
   } catch (const RunBudgetExceeded& error) {

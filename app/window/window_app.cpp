@@ -473,7 +473,7 @@ struct FrameLoop {
     // (An interactive lesson waits for the student: its screenshot shows where it waits.)
     const bool finalShot = (!runner || options.interactiveLesson) && !options.screenshot.empty() &&
                            framesRendered >= options.frames;
-    if (exposed) change.forceNext();
+    if (exposed || takeRunOverlayDrawn()) change.forceNext();  // the overlay covered it
     exposed = false;
     const bool draw = change.changed(*ImGui::GetDrawData(), state.shownContent);
     if (!draw && !finalShot && state.script.screenshotRequest.empty()) return true;

@@ -6,5 +6,10 @@ struct RayQuery {
   vec4 depths;  // x = zA, y = zB (linear depth along the light axis), z = sStart, w = sEnd
 };
 struct RayQueryResult {
-  uvec4 outcome;  // x = blocked (0/1), y = texel fetches, z = iterations, w unused
+  // x = blocked (bit 0) | what ended the ray << 1 (RAY_QUERY_*); y = texel fetches in all;
+  // z = iterations; w = the early outs' share of y (0 unless early outs were asked for)
+  uvec4 outcome;
 };
+#define RAY_QUERY_SEARCHED 0u
+#define RAY_QUERY_INSIDE 1u
+#define RAY_QUERY_REGION 2u

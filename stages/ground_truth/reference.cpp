@@ -13,6 +13,7 @@
 #include "core/frame.h"
 #include "core/run_control.h"
 #include "reference/reference_cache.h"
+#include "reference/reference_cost.h"
 #include "reference/reference_request.h"
 #include "reference/reference_trace.h"
 
@@ -61,6 +62,11 @@ public:
         Param::boolean("cache", "Reuse and store results under ~/.cache/penumbra/reference "
                                 "($PENUMBRA_CACHE).", true),
         Param::integer("threads", "CPU threads tracing rows (0: every core).", 0, 0, 256),
+        Param::real("budget", "Millions of ray steps a new reference image may take, estimated "
+                              "before tracing (reference_cost.h: covered pixels x m^2 rays x "
+                              "(1 + log2(1 + occluder triangles)), the BVH's depth); a run over "
+                              "it is refused (the window asks). Cached images cost nothing. 0: "
+                              "no limit.", 20000.0, 0.0, 1e9),
         Param::boolean("background", "Trace on a background thread and leave the output "
                                      "unwritten until done (for the window: it stays "
                                      "responsive and can cancel).", false),
@@ -138,6 +144,20 @@ private:
                                             const std::string& cacheKey) {
     tracer(frame.scene);
     frame.counters["reference.occluderTriangles"] = double(tracer_->occluderTriangles());
+    // Before tracing, its cost (reference_cost.h): refused over the budget (core/run_control.h).
+    const ReferenceCostEstimate cost = estimateReferenceCost(request, tracer_->occluderTriangles());
+    frame.counters["reference.estimatedRays"] = cost.rays;
+    frame.counters["reference.estimatedSteps"] = cost.steps;
+    if (!(job_ && job_->key == cacheKey)) {  // a job under way for this view was accepted
+      char what[200];
+      std::snprintf(what, sizeof what, "trace %.3g rays (%d x %d pixels x m^2 = %d samples) through "
+                    "%zu occluder triangles, %.3g ray steps", cost.rays, request.width,
+                    request.height, request.samplesPerSide * request.samplesPerSide,
+                    tracer_->occluderTriangles(), cost.steps);
+      checkRunBudget("reference.budget", cost.steps * 1e-6, param("budget").asFloat(), what,
+                     "Lower reference.samples or the image size");
+    }
+    const std::uint64_t raysBefore = tracer_->raysCast();
     if (param("background").asBool()) return computeInBackground(frame, std::move(request), cacheKey);
     stopJob();
     ReferenceProgress& progress = referenceStageProgress();
@@ -162,7 +182,9 @@ private:
       });
       while (!workerDone) {
         bar.update();
-        pollRunCancel();  // Esc in the window (core/run_control.h); the rows stop at the next
+        setRunProgress("in reference, tile " + std::to_string(progress.tilesDone) + " of " +
+                       std::to_string(progress.tilesTotal));
+        pollRunCancel();  // Esc or Cancel in the window (core/run_control.h): the tiles stop
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
       }
       worker.join();
@@ -170,11 +192,14 @@ private:
       if (failure) std::rethrow_exception(failure);
       bar.finish(secondsSince(start), !completed);
     }
-    if (!completed) {
+    if (!completed) {  // reported as cancelled: nothing downstream runs, nothing is exported
       frame.counters["reference.cancelled"] = 1;
-      return std::nullopt;
+      const std::string why = runCancelRequested() ? runCancelReason() : "its own cancel";
+      throw RunCancelled("cancelled in reference after " + std::to_string(progress.tilesDone) +
+                         " of " + std::to_string(progress.tilesTotal) + " tiles (" + why + ")");
     }
     ++progress.finished;
+    frame.counters["reference.raysCast"] = double(tracer_->raysCast() - raysBefore);
     return finish(frame, cacheKey, std::move(visibility), request, secondsSince(start));
   }
 

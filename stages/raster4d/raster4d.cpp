@@ -16,11 +16,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 #include <utility>
 #include <memory>
 
 #include "core/frame.h"
+#include "core/run_control.h"
 #include "gl/shader_program.h"
 #include "raster4d_gpu.h"
 #include "shared_inputs/light_input.h"
@@ -98,6 +100,11 @@ public:
         Param::integer("max_entries", "Most list entries (samples, and triangles) held at once; "
                                       "beyond it the FB is processed in bands of rows.",
                        1 << 24, 1024, 1 << 28),
+        Param::real("budget", "Millions of STEP 5 pair loops a run may take: the (sample, "
+                              "triangle) pairs of every FB pixel, known exactly after STEP 4's "
+                              "counts, times the loops per pair (m + 1 with row masks, else "
+                              "m (m + 1) + 1); a run over it is refused before STEP 5 (the "
+                              "window asks). 0: no limit.", 50000.0, 0.0, 1e9),
         Param::integer("pick_x", "Picked pixel (image column) whose mask the `pickedMask` view "
                                  "shows; "
                                  "-1: none.", -1, -1, 16383),
@@ -178,12 +185,29 @@ public:
     }
     double step4 = millisecondsSince(start);
 
+    // Before STEP 5, its cost from STEP 3-4's counts: every sample of an FB pixel meets
+    // every triangle of its list, so the pairs are known exactly (raster4d.pairsConsidered
+    // after the run); refused over the budget (core/run_control.h).
+    const int loopsPerPair = param("row_masks").asBool() ? m + 1 : m * (m + 1) + 1;
+    const double pairs = anyReceiver ? pairsToTest(cells) : 0;
+    frame.counters["raster4d.estimatedPairs"] = pairs;
+    frame.counters["raster4d.estimatedLoops"] = pairs * loopsPerPair;
+    char what[160];
+    std::snprintf(what, sizeof what, "test %.3g (sample, triangle) pairs x %d loops each in STEP 5 "
+                  "(m=%d, %d occluder triangles, FB %d x %d)", pairs, loopsPerPair, m,
+                  occluders_.triangles(), fb, fb);
+    checkRunBudget("raster4d.budget", pairs * loopsPerPair * 1e-6, param("budget").asFloat(), what,
+                   param("row_masks").asBool()
+                       ? "Lower raster4d.samples or the image size"
+                       : "Turn raster4d.row_masks on (m + 1 loops per pair), or lower "
+                         "raster4d.samples or the image size");
+    throwIfRunCancelled("in raster4d, before STEP 5");
+
     // Bands of FB rows whose lists fit (one band unless max_entries is exceeded).
     std::vector<Raster4dBand> bands;
     if (anyReceiver)
       bands = plan(fb, windowRows, cells, std::uint64_t(param("max_entries").asInt()));
     // STEP 5 splits each pixel's triangle list into chunks whose loops fit the budget.
-    const int loopsPerPair = param("row_masks").asBool() ? m + 1 : m * (m + 1) + 1;
     const int chunk = std::max(1, (kLoopBudget - 4 * m) / loopsPerPair);
     const int chunks = anyReceiver ? (mostTrianglesPerPixel(cells) + chunk - 1) / chunk : 0;
     double step5 = 0;
@@ -288,6 +312,15 @@ private:
       upload(params);
       dispatch();
     }
+  }
+
+  // Sum over FB pixels of samples x triangles in their lists (STEP 3-4 counts).
+  double pairsToTest(size_t cells) const {
+    const std::vector<std::uint32_t> samples = readBuffer<std::uint32_t>(sampleCounts_, cells);
+    const std::vector<std::uint32_t> triangles = readBuffer<std::uint32_t>(triangleCounts_, cells);
+    double pairs = 0;
+    for (size_t c = 0; c < cells; ++c) pairs += double(samples[c]) * double(triangles[c]);
+    return pairs;
   }
 
   int mostTrianglesPerPixel(size_t cells) const {

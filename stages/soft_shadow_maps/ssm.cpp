@@ -315,6 +315,8 @@ private:
         drawPatches(params, occluders, receivers, pass, instances);
         glDisable(GL_SCISSOR_TEST);
         glFinish();  // the tile is done before the check
+        setRunProgress("in ssm, tile " + std::to_string(ty * tiles + tx + 1) + " of " +
+                       std::to_string(tiles * tiles) + " of pass " + std::to_string(pass + 1));
         pollRunCancel();
         if (runCancelRequested()) {
           endAdditive();  // GL state as every stage leaves it

@@ -291,10 +291,10 @@ TEST(Reference, CancelStopsAndReportsIt) {
   progress.cancel = true;
   std::vector<float> visibility;
   EXPECT_FALSE(tracer.trace(request, visibility, &progress, 2));
-  EXPECT_LT(progress.rowsDone.load(), 64);
+  EXPECT_LT(progress.tilesDone.load(), 16);  // 4 x 4 tiles of 16 x 16
   progress.cancel = false;
   EXPECT_TRUE(tracer.trace(request, visibility, &progress, 2));
-  EXPECT_EQ(progress.rowsDone.load(), 64);
+  EXPECT_EQ(progress.tilesDone.load(), 16);
 }
 
 TEST(Reference, BackgroundModeWritesTheSameImageWhenDone) {

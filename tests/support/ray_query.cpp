@@ -57,6 +57,7 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   bindTextureForReading(TRACE_MINMAX_UNIT, minmax_);
   program.use();
   glUniform1i(0, int(queries.size()));
+  glUniform1i(1, earlyOuts_);
   glDispatchCompute(GLuint((queries.size() + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(resultBuffer.id(), 0, GLsizeiptr(results.size() * sizeof(gpu::RayQueryResult)),
@@ -64,6 +65,7 @@ std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery
   std::vector<RayQueryOutcome> outcomes;
   outcomes.reserve(results.size());
   for (const auto& result : results)
-    outcomes.push_back({result.outcome.x != 0, result.outcome.y, result.outcome.z});
+    outcomes.push_back({(result.outcome.x & 1u) != 0, result.outcome.y, result.outcome.z,
+                        result.outcome.w, result.outcome.x >> 1});
   return outcomes;
 }

@@ -12,6 +12,8 @@
 struct RayQueryOutcome {
   bool blocked;
   unsigned fetches, iterations;
+  unsigned earlyOutFetches = 0;       // the early outs' share of `fetches`
+  unsigned ended = RAY_QUERY_SEARCHED;  // RAY_QUERY_*: an early out, or the search
 };
 
 class RayQueryRunner {
@@ -26,10 +28,14 @@ public:
   int levelCount() const { return levels_.layers(); }
   // Which hierarchy the searches read (HIERARCHY_*; both are built): N-buffer by default.
   void useHierarchy(int hierarchy) { hierarchy_ = hierarchy; }
+  // The trace stage's early outs before the search (shortening off; ray_query.comp):
+  // bit 0 the region test, bit 1 the inside test; 0 (default): the search alone.
+  void useEarlyOuts(int bits) { earlyOuts_ = bits; }
 
 private:
   int width_, height_;
   float zNear_, zFar_;
   int hierarchy_ = HIERARCHY_NBUFFER;
+  int earlyOuts_ = 0;
   GlTexture near_, far_, levels_, minmax_;
 };

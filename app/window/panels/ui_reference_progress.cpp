@@ -57,10 +57,10 @@ void drawReferenceProgress(UiState& state) {
         kInteractiveTruthMs);
   ReferenceProgress& progress = referenceStageProgress();
   if (!progress.running) return;
-  const int total = progress.rowsTotal, done = progress.rowsDone;
+  const int total = progress.tilesTotal, done = progress.tilesDone;
   const float fraction = total > 0 ? float(done) / float(total) : 0.0f;
   char text[64];
-  std::snprintf(text, sizeof text, "tracing rows %d / %d", done, total);
+  std::snprintf(text, sizeof text, "tracing tiles %d / %d", done, total);
   ImGui::ProgressBar(fraction, {ImGui::GetContentRegionAvail().x - 70, 0}, text);
   ImGui::SameLine();
   if (ImGui::Button(progress.cancel ? "cancelling" : "Cancel")) {

@@ -3,10 +3,14 @@
 #include <epoxy/gl.h>
 
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // GImGui->WithinFrameScope
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "core/run_control.h"
 #include "window/ui_state.h"
@@ -42,6 +46,143 @@ void drawRunBudgetModal(UiState& state) {
 
 namespace {
 
+// The "running" overlay (header). The UI frame on screen when the run began, kept as copies
+// of its draw lists (ImGui rebuilds the originals in the next frame), is drawn again with a
+// small window over it holding the Cancel button: a real ImGui frame, so the
+// button is clicked as any other, between two checks of the run.
+constexpr double kOverlayAfterSeconds = 1.0;  // shorter runs never show it
+constexpr double kOverlayInterval = 0.1;      // seconds between two overlay frames
+
+struct Overlay {
+  unsigned run = ~0u;           // runSerial() of the run it was captured for
+  std::vector<ImDrawList*> lists;  // copies of the frame on screen when the run began
+  ImVec2 displayPos{0, 0}, displaySize{0, 0}, framebufferScale{1, 1};
+  double lastDrawn = -1;
+  bool announced = false;
+  bool drawnSinceTaken = false;
+} overlay;
+
+void releaseCapture() {
+  for (ImDrawList* list : overlay.lists) IM_DELETE(list);
+  overlay.lists.clear();
+}
+
+// The last frame ImGui rendered (what the screen shows), copied; the commands of textures
+// deleted since (a view's texture that a stage reallocated) are dropped.
+void captureLastFrame() {
+  releaseCapture();
+  const ImDrawData* data = ImGui::GetDrawData();
+  if (!data || !data->Valid) return;
+  const ImTextureID font = ImGui::GetIO().Fonts->TexID;
+  // A view's texture still alive and still 2D (a name a stage freed may come back as
+  // another kind of texture, which ImGui's GL_TEXTURE_2D bind would refuse).
+  auto live2D = [](ImTextureID id) {
+    const GLuint name = GLuint(reinterpret_cast<intptr_t>(id));
+    if (!glIsTexture(name)) return false;
+    GLint target = 0;
+    glGetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
+    return target == GL_TEXTURE_2D;
+  };
+  for (int i = 0; i < data->CmdListsCount; ++i) {
+    ImDrawList* copy = data->CmdLists[i]->CloneOutput();
+    for (ImDrawCmd& command : copy->CmdBuffer)
+      if (command.UserCallback || (command.TextureId != font && !live2D(command.TextureId)))
+        command.ElemCount = 0, command.UserCallback = nullptr;
+    overlay.lists.push_back(copy);
+  }
+  overlay.displayPos = data->DisplayPos;
+  overlay.displaySize = data->DisplaySize;
+  overlay.framebufferScale = data->FramebufferScale;
+}
+
+void renderCapture() {
+  if (overlay.lists.empty()) return;
+  ImDrawData data;
+  data.Valid = true;
+  data.CmdLists = overlay.lists.data();
+  data.CmdListsCount = int(overlay.lists.size());
+  for (ImDrawList* list : overlay.lists) {
+    data.TotalVtxCount += list->VtxBuffer.Size;
+    data.TotalIdxCount += list->IdxBuffer.Size;
+  }
+  data.DisplayPos = overlay.displayPos;
+  data.DisplaySize = overlay.displaySize;
+  data.FramebufferScale = overlay.framebufferScale;
+  ImGui_ImplOpenGL3_RenderDrawData(&data);
+}
+
+// One overlay frame, from the poll hook, in the middle of a run: the GL state the stage has
+// set is kept (ImGui's renderer restores what it changes; the framebuffers, colour mask,
+// clear colour and scissor test are restored here).
+void drawRunningOverlay(GLFWwindow* window) {
+  ImGuiContext* context = ImGui::GetCurrentContext();
+  if (!context || context->WithinFrameScope) return;  // a run started from inside a UI frame
+  const double elapsed = secondsSinceRunStart();
+  if (elapsed < kOverlayAfterSeconds) return;
+  if (overlay.run != runSerial()) {
+    overlay.run = runSerial();
+    captureLastFrame();
+    overlay.lastDrawn = -1;
+    overlay.announced = false;
+  }
+  if (overlay.lastDrawn >= 0 && elapsed - overlay.lastDrawn < kOverlayInterval) return;
+  overlay.lastDrawn = elapsed;
+  const std::string where = runProgress();
+  if (!overlay.announced) {  // the terminal hears it too (and tests wait for it)
+    std::fprintf(stderr, "penumbra: a run is taking long (%s); Cancel or Esc stops it\n",
+                 where.empty() ? "under way" : where.c_str());
+    overlay.announced = true;
+  }
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  // Centred on the window, the button in the middle (tests click the window's centre).
+  ImGui::SetNextWindowPos({0.5f * display.x, 0.5f * display.y}, ImGuiCond_Always, {0.5f, 0.5f});
+  ImGui::Begin("##run_overlay", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
+  ImGui::Text("Running the pipeline: %.1f s", elapsed);
+  ImGui::TextDisabled("%s", where.empty() ? "under way" : where.c_str());
+  const ImVec2 button{ImGui::GetContentRegionAvail().x, 2 * ImGui::GetFrameHeight()};
+  if (runCancelRequested()) {
+    ImGui::Button("cancelling...", button);
+  } else if (ImGui::ButtonEx("Cancel run", button, ImGuiButtonFlags_PressedOnClick)) {
+    // On the press, not the release: the next overlay frame may be a whole tile away.
+    requestRunCancel("Cancel clicked");
+  }
+  ImGui::TextDisabled("(or press Esc) The run stops at its next check: between stages, SSM\n"
+                      "tiles or reference tiles. Settings and the last image stay.");
+  ImGui::End();
+  ImGui::Render();
+
+  GLint drawFramebuffer = 0, readFramebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+  GLboolean mask[4];
+  glGetBooleani_v(GL_COLOR_WRITEMASK, 0, mask);
+  GLfloat clear[4];
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+  const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window, &width, &height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  renderCapture();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer));
+  glColorMaski(0, mask[0], mask[1], mask[2], mask[3]);
+  glClearColor(clear[0], clear[1], clear[2], clear[3]);
+  if (scissor) glEnable(GL_SCISSOR_TEST);
+  overlay.drawnSinceTaken = true;
+}
+
 // Esc seen by a key callback (chained before ImGui's): a press and its release can both
 // arrive within one poll during a long tile, where glfwGetKey would read "released".
 GLFWkeyfun previousKeyCallback = nullptr;
@@ -58,6 +199,7 @@ void installRunCancelKeys(GLFWwindow* window) {
   static GLFWwindow* installed = nullptr;
   if (!window) {
     setRunCancelPoll(nullptr);
+    releaseCapture();
     if (installed) glfwSetKeyCallback(installed, previousKeyCallback);
     installed = nullptr;
     return;
@@ -71,5 +213,12 @@ void installRunCancelKeys(GLFWwindow* window) {
       requestRunCancel("Esc pressed");
     else if (glfwWindowShouldClose(window))
       requestRunCancel("the window is closing");
+    drawRunningOverlay(window);
   });
+}
+
+bool takeRunOverlayDrawn() {
+  const bool drawn = overlay.drawnSinceTaken;
+  overlay.drawnSinceTaken = false;
+  return drawn;
 }
