@@ -125,6 +125,7 @@ private:
     if (!tracer_ || key != tracerKey_) {
       tracer_ = std::make_shared<ReferenceTracer>(scene);
       tracerKey_ = key;
+      ++tracerBuilds_;
     }
     return *tracer_;
   }
@@ -137,6 +138,9 @@ private:
   std::optional<std::vector<float>> compute(Frame& frame, ReferenceRequest request,
                                             const std::string& cacheKey) {
     tracer(frame.scene);
+    // Embree's BVH is rebuilt only when an occluder moved (an animated scene's new pose), not
+    // when only the camera or the light did: the builds so far, for people and tests.
+    frame.counters["reference.bvhBuilds"] = tracerBuilds_;
     frame.counters["reference.occluderTriangles"] = double(tracer_->occluderTriangles());
     if (param("background").asBool()) return computeInBackground(frame, std::move(request), cacheKey);
     stopJob();
@@ -231,6 +235,7 @@ private:
 
   std::shared_ptr<ReferenceTracer> tracer_;
   std::string tracerKey_;
+  int tracerBuilds_ = 0;
   std::string memoryKey_;
   std::vector<float> memory_;
   std::unique_ptr<Job> job_;
