@@ -97,13 +97,13 @@ Scene toys() {
   Scene scene;
   scene.name = "toys";
   scene.objects.push_back({"ground", makeQuad(12.0f, glm::mat4(1)), glm::vec3(0.85f), true});
-  // A box spinning on the spot, once every 4 s.
+  // A long box spinning on the spot, once every 4 s.
   scene.objects.push_back({"spinning box",
-                           makeBox({0.8f, 0.8f, 0.8f}, glm::translate(glm::mat4(1), {-1.2f, 0.4f, 0})),
+                           makeBox({1.1f, 0.6f, 0.5f}, glm::translate(glm::mat4(1), {-1.2f, 0.3f, 0})),
                            {0.9f, 0.35f, 0.25f}, false});
   TrsTrack spin;
   spin.rotationKeys = fullTurn(4);
-  scene.animation.objects.push_back(aboutPivot({1}, {-1.2, 0.4, 0}, spin));
+  scene.animation.objects.push_back(aboutPivot({1}, {-1.2, 0.3, 0}, spin));
   // A ball bouncing: up 1.2 and down again twice in 4 s (it touches the ground at the ends).
   scene.objects.push_back({"bouncing ball", makeSphere({0.3f, 0.35f, 0.6f}, 0.35f),
                            {0.3f, 0.8f, 0.4f}, false});
