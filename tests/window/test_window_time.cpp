@@ -8,6 +8,7 @@
 #include "scene/scene_builtin.h"
 #include "support/gl_test.h"
 #include "window/script/ui_script.h"
+#include "window/script/ui_script_actions.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_state.h"
 #include "window/ui_timeline.h"
@@ -88,4 +89,15 @@ TEST(WindowTime, PlayingAdvancesBySpeedTimesTheClock) {
   // A stall of seconds moves at most a quarter second (times the speed).
   EXPECT_EQ(advanceTimeline(state.session, clock, 15.0), "");
   EXPECT_DOUBLE_EQ(state.session.time, 0.75);
+}
+
+// "Frame scene" on an animated scene frames it at rest and keeps its animation and time.
+TEST(WindowTime, FrameSceneKeepsTheAnimationAndTheTime) {
+  UiState state;
+  useLightSweep(state);
+  ASSERT_EQ(state.session.setTime(1.5), "");
+  ASSERT_EQ(frameLoadedScene(state), "");
+  EXPECT_TRUE(state.session.animated());
+  EXPECT_EQ(state.session.time, 1.5);
+  EXPECT_FLOAT_EQ(state.session.scene.light.width, 1.4f);  // the track's, at 1.5 s
 }
