@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
 
   WindowOptions window;
-  app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine, dragon) or a "
-                                          ".json/.gltf/.glb file")->capture_default_str();
+  app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine, dragon; animated: "
+                                          "dragon_turntable, light_sweep, toys) or a .json/.gltf/.glb file")->capture_default_str();
   app.add_option("--set", window.sets, "stage.key=value, repeatable");
   app.add_option("--screenshot", window.screenshot, "save the window to this PNG and exit");
   app.add_option("--frames", window.frames, "frames to render before --screenshot")
