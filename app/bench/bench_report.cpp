@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -63,7 +64,12 @@ int runBench(const BenchOptions& options) {
   Pipeline pipeline;
   const ParamSnapshot defaults(pipeline);
   try {
-    scene = loadScene(options.scene, warnings);
+    const Scene rest = loadScene(options.scene, warnings);
+    if (!std::isfinite(options.time) || std::abs(options.time) > 1e9)
+      throw InputError("--time must be finite and within +-1e9 seconds");
+    if (std::string problem = posedSceneProblem(rest, options.time); !problem.empty())
+      throw InputError(printable(options.scene, 200) + ": " + problem);
+    scene = poseAt(rest, options.time);
     BenchPlanOptions planOptions{options.preset, options.sweeps, options.width, options.height};
     setups = makeBenchPlan(scene, planOptions, pipeline);
   } catch (const std::exception& error) {

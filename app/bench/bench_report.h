@@ -14,6 +14,7 @@
 
 struct BenchOptions {
   std::string scene = "cube";
+  double time = 0;                  // --time: the scene posed at this time (scene/animation.h)
   std::string preset;               // "" = default
   std::vector<std::string> sweeps;  // "stage.key=v1,v2", "scene.light_scale=...", "eye.size=..."
   std::vector<std::string> sets;    // applied to every configuration first

@@ -53,6 +53,7 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
   std::vector<std::string> written;
   nlohmann::json run;
   run["scene"] = frame.scene.name;
+  run["time"] = frame.scene.time;  // seconds: the pose of an animated scene
   run["triangles"] = frame.scene.triangleCount();
   const Bounds bounds = frame.scene.bounds(false);
   run["bounds"] = {{"min", {bounds.min.x, bounds.min.y, bounds.min.z}},
@@ -99,7 +100,8 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
 int runExport(const ExportOptions& options) {
   checkOutputDirectory(options.outDirectory, "--out", "run.json");  // before any rendering
   HeadlessSession session;
-  if (int status = session.open("export", options.scene, options.sets, options.width, options.height))
+  if (int status = session.open("export", options.scene, options.sets, options.width, options.height,
+                                options.time))
     return status;
   Frame& frame = *session.frame;
   frame.frameKey = options.frameKey;

@@ -14,6 +14,7 @@ struct ExportOptions {
   int width = 512, height = 512;
   std::vector<std::string> sets;  // "stage.key=value"
   std::uint32_t frameKey = 0;
+  double time = 0;  // --time: seconds into the scene's animation (scene/animation.h)
   bool annotate = false;  // --annotate: PNGs carry a colour bar / legend and a caption
 };
 

@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
 
   WindowOptions window;
-  app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine, dragon) or a "
-                                          ".json/.gltf/.glb file")->capture_default_str();
+  app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine, dragon; animated: "
+                                          "dragon_turntable, light_sweep, toys) or a .json/.gltf/.glb file")->capture_default_str();
   app.add_option("--set", window.sets, "stage.key=value, repeatable");
   app.add_option("--screenshot", window.screenshot, "save the window to this PNG and exit");
   app.add_option("--frames", window.frames, "frames to render before --screenshot")
@@ -110,6 +110,9 @@ int main(int argc, char** argv) {
   exportCommand->add_option("--set", exporting.sets, "stage.key=value, repeatable");
   exportCommand->add_option("--frame-key", exporting.frameKey, "hash key of the frame")
       ->capture_default_str();
+  exportCommand->add_option("--time", exporting.time, "seconds into the scene's animation "
+                            "(the scene posed at that time; static scenes ignore it)")
+      ->capture_default_str();
   exportCommand->add_flag("--annotate", exporting.annotate,
                           "PNGs carry a colour bar (range, channel) or legend and a caption "
                           "line below the image; the EXRs stay raw");
@@ -127,6 +130,8 @@ int main(int argc, char** argv) {
   traceCommand->add_option("--height", tracing.height, "eye image height")
       ->check(CLI::Range(1, 8192))->capture_default_str();
   traceCommand->add_option("--set", tracing.sets, "stage.key=value, repeatable");
+  traceCommand->add_option("--time", tracing.time, "seconds into the scene's animation")
+      ->capture_default_str();
 
   HashOptions hashing;
   CLI::App* hashCommand = app.add_subcommand("hash", "raw little-endian uint32 stream of a hash "
@@ -223,6 +228,9 @@ int main(int argc, char** argv) {
       "bench", "speed against error: every configuration timed and compared with the exact "
                "reference (writes results.json, results.csv, results.md and charts as PNG, SVG, PDF)");
   benchCommand->add_option("--scene", report.scene, "built-in scene or scene file")->capture_default_str();
+  benchCommand->add_option("--time", report.time, "seconds into the scene's animation (every "
+                           "configuration measured on the scene posed at that time)")
+      ->capture_default_str();
   benchCommand->add_option("--preset", report.preset, "default, minimal, thesis-table-4.1, atty-4.2");
   benchCommand->add_option("--sweep", report.sweeps, "stage.key=v1,v2,... or scene.light_scale=, "
                                                      "scene.lateral=, scene.vertical=, eye.size=WxH,...");

@@ -65,11 +65,16 @@ std::string shellWord(const std::string& text) {
 }  // namespace
 
 std::string traceCommandLine(const std::string& scene, int x, int y, int width, int height,
-                             const std::vector<std::string>& sets) {
+                             const std::vector<std::string>& sets, double time) {
   std::string command = "penumbra trace --scene " + shellWord(scene) + " --pixel " +
                         std::to_string(x) + "," + std::to_string(y) + " --width " +
                         std::to_string(width) + " --height " + std::to_string(height);
   for (const std::string& set : sets) command += " --set " + shellWord(set);
+  if (time != 0) {
+    char seconds[40];
+    std::snprintf(seconds, sizeof seconds, " --time %.17g", time);
+    command += seconds;
+  }
   return command;
 }
 
@@ -87,7 +92,8 @@ int runTraceCommand(const TraceOptions& options) {
   sets.push_back("trace.record_x=" + std::to_string(x));
   sets.push_back("trace.record_y=" + std::to_string(y));
   HeadlessSession session;
-  if (int status = session.open("trace", options.scene, sets, options.width, options.height))
+  if (int status = session.open("trace", options.scene, sets, options.width, options.height,
+                                options.time))
     return status;
   session.pipeline.run(*session.frame);
   const std::string json = traceStepsJson(*session.frame, x, y);

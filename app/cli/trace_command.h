@@ -12,6 +12,7 @@ struct TraceOptions {
   std::string out;    // file; empty: stdout
   int width = 512, height = 512;
   std::vector<std::string> sets;
+  double time = 0;  // --time: seconds into the scene's animation
 };
 
 int runTraceCommand(const TraceOptions& options);
@@ -25,5 +26,6 @@ std::string traceStepsJson(const Frame& frame, int x, int y);
 // The command that records the same steps headless: image pixel (x, y) (row 0 at the top)
 // of a width x height eye image, the scene as loaded, `sets` as stage.key=value. The window's
 // ray trace panel shows it, so a pixel picked in a 616x665 view is the CLI's pixel too.
+// A non-zero `time` (an animated scene's pose) is given as --time.
 std::string traceCommandLine(const std::string& scene, int x, int y, int width, int height,
-                             const std::vector<std::string>& sets);
+                             const std::vector<std::string>& sets, double time = 0);

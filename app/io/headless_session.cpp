@@ -1,6 +1,9 @@
 #include "io/headless_session.h"
 
+#include <cmath>
 #include <cstdio>
+
+#include "core/input_error.h"
 
 #include "scene/scene_builtin.h"
 #include "scene/scene_checks.h"
@@ -30,7 +33,8 @@ std::string disabledSelection(const Pipeline& pipeline, const std::vector<std::s
 }
 
 int HeadlessSession::open(const std::string& command, const std::string& sceneNameOrPath,
-                          const std::vector<std::string>& sets, int width, int height) {
+                          const std::vector<std::string>& sets, int width, int height,
+                          double time) {
   const auto fail = [&](int status, const std::string& message) {
     std::fprintf(stderr, "penumbra %s: %s\n", command.c_str(), message.c_str());
     return status;
@@ -38,7 +42,17 @@ int HeadlessSession::open(const std::string& command, const std::string& sceneNa
   // 1. Input first, so bad input fails fast without touching OpenGL.
   std::vector<std::string> warnings;
   try {
-    scene = loadScene(sceneNameOrPath, warnings);
+    const Scene rest = loadScene(sceneNameOrPath, warnings);
+    if (!std::isfinite(time) || std::abs(time) > 1e9)
+      return fail(2, "--time must be finite and within +-1e9 seconds");
+    if (std::string problem = posedSceneProblem(rest, time); !problem.empty())
+      return fail(2, printable(sceneNameOrPath, 200) + ": " + problem);
+    scene = poseAt(rest, time);
+    if (!rest.animation.empty())
+      std::fprintf(stderr, "penumbra %s: scene '%s' posed at time %g s (%g s into its %g s %s)\n",
+                   command.c_str(), printable(scene.name).c_str(), time,
+                   rest.animation.cycleTime(time), rest.animation.duration,
+                   repeatName(rest.animation.repeat));
   } catch (const std::exception& error) {
     return fail(2, error.what());
   }

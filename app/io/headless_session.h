@@ -21,12 +21,14 @@ std::string disabledSelection(const Pipeline& pipeline, const std::vector<std::s
 class HeadlessSession {
 public:
   // Returns 0 when ready, else the exit status (the message is printed).
+  // The scene is posed at `time` (seconds, scene/animation.h); a pose that fails
+  // validateScene() is bad input.
   int open(const std::string& command, const std::string& sceneNameOrPath,
-           const std::vector<std::string>& sets, int width, int height);
+           const std::vector<std::string>& sets, int width, int height, double time = 0);
 
   // The context first: members die in reverse order, so every GL object dies before it.
   std::unique_ptr<GlContext> context;
-  Scene scene;
+  Scene scene;  // posed at the time given to open()
   Pipeline pipeline;
   std::unique_ptr<GpuScene> gpuScene;
   std::unique_ptr<Frame> frame;

@@ -3,6 +3,8 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include "scene/animation.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -69,6 +71,11 @@ struct Scene {
   // What loading did that the objects do not show, in words ("bunny.glb: file units x [...]
   // scaled by 0.0161 to 2.5 across"), for the scene summary (scene/scene_frame.h).
   std::vector<std::string> notes;
+  // The objects and the light above are at rest; poseAt(scene, t) applies this
+  // (scene/animation.h). Empty for a static scene.
+  Animation animation;
+  // The time (seconds) poseAt posed this scene at; 0 for a scene at rest.
+  double time = 0;
 
   Bounds bounds(bool occludersOnly = false) const;
   size_t triangleCount() const;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "scene/mesh_builders.h"
+#include "scene/scene_animated.h"
 #include "scene/scene_file.h"
 #include "scene/scene_frame.h"
 #include "scene/scene_gltf.h"
@@ -77,7 +78,8 @@ Scene spheres() {
 
 // Puts loaded objects on the ground: scaled so the largest side is `size`, resting on y = 0.
 // Returns the scale applied.
-float placeOnGround(std::vector<SceneObject>& objects, float size, Bounds* fileBounds = nullptr) {
+float placeOnGround(std::vector<SceneObject>& objects, float size, Bounds* fileBounds = nullptr,
+                    glm::mat4* placed = nullptr) {
   Bounds bounds;
   for (const SceneObject& object : objects)
     for (const glm::vec3& p : object.mesh.positions) bounds.extend(p);
@@ -88,6 +90,7 @@ float placeOnGround(std::vector<SceneObject>& objects, float size, Bounds* fileB
   glm::mat4 place = glm::scale(glm::mat4(1), glm::vec3(scale));
   place = glm::translate(place, {-center.x, -bounds.min.y, -center.z});
   for (SceneObject& object : objects) transformMesh(object.mesh, place);
+  if (placed) *placed = place;
   return scale;
 }
 
@@ -98,9 +101,18 @@ float placeOnGround(std::vector<SceneObject>& objects, float size, Bounds* fileB
 Scene bareGltf(const std::string& path, std::vector<std::string>& warnings) {
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
-  std::vector<SceneObject> loaded = loadGltf(path, glm::mat4(1), warnings);
+  GltfAnimation animation;
+  std::vector<SceneObject> loaded = loadGltf(path, glm::mat4(1), warnings, nullptr, &animation);
   Bounds fileBounds;
-  const float scale = placeOnGround(loaded, 2.5f, &fileBounds);
+  glm::mat4 place(1);
+  const float scale = placeOnGround(loaded, 2.5f, &fileBounds, &place);
+  // The file's node animation, moved with the model onto the ground, after the ground.
+  for (ObjectMotion& motion : animation.motions) {
+    placeMotion(motion, glm::dmat4(place));
+    for (size_t& object : motion.objects) object += 1;
+    scene.animation.objects.push_back(std::move(motion));
+  }
+  scene.animation.duration = scene.animation.endTime();
   char factor[32];
   std::snprintf(factor, sizeof factor, "%.4g", scale);
   scene.notes.push_back(std::filesystem::path(path).filename().string() + " in file units: " +
@@ -150,7 +162,9 @@ Scene dragon(std::vector<std::string>& warnings) {
 }  // namespace
 
 std::vector<std::string> builtinSceneNames() {
-  return {"cube", "plate", "spheres", "engine", "dragon"};
+  std::vector<std::string> names = {"cube", "plate", "spheres", "engine", "dragon"};
+  for (const std::string& animated : animatedSceneNames()) names.push_back(animated);
+  return names;
 }
 
 bool isBuiltinScene(const std::string& name) {
@@ -165,6 +179,7 @@ Scene makeBuiltinScene(const std::string& name) {
   if (name == "spheres") return spheres();
   if (name == "engine") return gltfOnGround(kEnginePath, "engine", warnings);
   if (name == "dragon") return dragon(warnings);
+  if (isAnimatedScene(name)) return makeAnimatedScene(name, warnings);
   std::string valid;
   for (const std::string& each : builtinSceneNames()) valid += (valid.empty() ? "" : ", ") + each;
   throw InputError("unknown scene '" + printable(name, 200) + "'; built-in scenes: " + valid +
@@ -181,8 +196,9 @@ Scene loadSceneOrThrow(const std::string& nameOrPath, std::vector<std::string>& 
     scene = makeStressScene(nameOrPath);
   else if (isBuiltinScene(nameOrPath))
     scene = nameOrPath == "engine"   ? gltfOnGround(kEnginePath, "engine", warnings)
-            : nameOrPath == "dragon" ? dragon(warnings)
-                                     : makeBuiltinScene(nameOrPath);
+            : nameOrPath == "dragon"   ? dragon(warnings)
+            : isAnimatedScene(nameOrPath) ? makeAnimatedScene(nameOrPath, warnings)
+                                          : makeBuiltinScene(nameOrPath);
   else if (extension == ".json") {
     scene = loadSceneFile(nameOrPath, warnings);
     for (std::string& warning : cameraWarnings(scene)) warnings.push_back(std::move(warning));
@@ -190,8 +206,9 @@ Scene loadSceneOrThrow(const std::string& nameOrPath, std::vector<std::string>& 
     scene = bareGltf(nameOrPath, warnings);
   else
     scene = makeBuiltinScene(nameOrPath);  // throws with the list of valid names
-  if (std::string problem = validateScene(scene); !problem.empty())
-    throw InputError(printable(nameOrPath, 200) + ": " + problem);
+  std::string problem = validateScene(scene);
+  if (problem.empty() && !scene.animation.empty()) problem = posedSceneProblem(scene, 0);
+  if (!problem.empty()) throw InputError(printable(nameOrPath, 200) + ": " + problem);
   return scene;
 }
 

@@ -7,6 +7,7 @@
 #include "scene/scene_gltf.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -153,6 +154,118 @@ glm::mat4 placement(const Reader& r, const json& object, const std::string& poin
   return glm::scale(m, scale);
 }
 
+// The rotation of rotate_degrees (x, y, z): about X, then Y, then Z (world axes), as the
+// placement above.
+glm::dquat eulerDegrees(const glm::dvec3& degrees) {
+  const glm::dvec3 r = glm::radians(degrees);
+  return glm::angleAxis(r.z, glm::dvec3(0, 0, 1)) * glm::angleAxis(r.y, glm::dvec3(0, 1, 0)) *
+         glm::angleAxis(r.x, glm::dvec3(1, 0, 0));
+}
+
+// {"times": [t0, t1, ...], "values": [v0, v1, ...], "interpolation": "linear" | "step"}:
+// times finite, not negative, strictly increasing; one value per time, each read by `value`
+// (which names its own pointer in a refusal).
+template <class T, class ReadValue>
+Track<T> readTrack(const Reader& r, const json& track, const std::string& at, ReadValue value) {
+  r.expectObject(track, at, {"times", "values", "interpolation"});
+  Track<T> result;
+  const json& times = r.required(track, at, "times");
+  const std::string timesAt = at + "/times";
+  if (!times.is_array() || times.empty())
+    r.fail(timesAt, "expected a non-empty array of times (seconds), got " + typeOf(times));
+  for (size_t i = 0; i < times.size(); ++i) {
+    const std::string keyAt = timesAt + "/" + std::to_string(i);
+    const double time = r.number(times[i], keyAt);
+    if (time < 0) r.fail(keyAt, "must not be negative, got " + times[i].dump());
+    if (i > 0 && !(time > result.times.back()))
+      r.fail(keyAt, "times must increase: " + times[i].dump() + " is not after " +
+                        times[i - 1].dump());
+    result.times.push_back(time);
+  }
+  const json& values = r.required(track, at, "values");
+  const std::string valuesAt = at + "/values";
+  if (!values.is_array())
+    r.fail(valuesAt, "expected an array of values, got " + typeOf(values));
+  if (values.size() != times.size())
+    r.fail(valuesAt, std::to_string(values.size()) + " values for " +
+                         std::to_string(times.size()) + " times (one value per time)");
+  for (size_t i = 0; i < values.size(); ++i)
+    result.values.push_back(value(values[i], valuesAt + "/" + std::to_string(i)));
+  if (track.contains("interpolation")) {
+    const std::string mode = r.string(track["interpolation"], at + "/interpolation");
+    if (mode == "linear" || mode == "LINEAR")
+      result.interpolation = Interpolation::Linear;
+    else if (mode == "step" || mode == "STEP")
+      result.interpolation = Interpolation::Step;
+    else
+      r.fail(at + "/interpolation", "unknown interpolation '" + printable(mode) +
+                                        "' (valid: linear, step)");
+  }
+  return result;
+}
+
+glm::dvec3 positiveScale(const Reader& r, const json& s, const std::string& at) {
+  const glm::dvec3 scale = s.is_number() ? glm::dvec3(r.number(s, at)) : glm::dvec3(r.vec3(s, at));
+  for (int i = 0; i < 3; ++i)
+    if (!(scale[i] > 0)) r.fail(at, "must be positive (a number or an array of 3 positive numbers)");
+  return scale;
+}
+
+// An object's "animation": a TRS about `pivot` (default: the centre of the object's rest
+// bounds), on top of its placement: translate(pivot + translate(t)) R(t) S(t) translate(-pivot).
+ObjectMotion readObjectMotion(const Reader& r, const json& animation, const std::string& at,
+                              const Scene& scene, size_t first) {
+  r.expectObject(animation, at, {"pivot", "translate", "rotate_degrees", "scale"});
+  Bounds rest;
+  for (size_t i = first; i < scene.objects.size(); ++i)
+    for (const glm::vec3& p : scene.objects[i].mesh.positions) rest.extend(p);
+  glm::dvec3 pivot = rest.empty() ? glm::dvec3(0) : 0.5 * (glm::dvec3(rest.min) + glm::dvec3(rest.max));
+  if (animation.contains("pivot")) pivot = r.point(animation["pivot"], at + "/pivot");
+  ChainLink trs;
+  trs.animated = true;
+  if (animation.contains("translate"))
+    trs.trs.translationKeys = readTrack<glm::dvec3>(
+        r, animation["translate"], at + "/translate",
+        [&](const json& v, const std::string& p) { return glm::dvec3(r.point(v, p)); });
+  if (animation.contains("rotate_degrees"))
+    trs.trs.rotationKeys = readTrack<glm::dquat>(
+        r, animation["rotate_degrees"], at + "/rotate_degrees",
+        [&](const json& v, const std::string& p) { return eulerDegrees(r.vec3(v, p)); });
+  if (animation.contains("scale"))
+    trs.trs.scaleKeys = readTrack<glm::dvec3>(
+        r, animation["scale"], at + "/scale",
+        [&](const json& v, const std::string& p) { return positiveScale(r, v, p); });
+  ObjectMotion motion;
+  for (size_t i = first; i < scene.objects.size(); ++i) motion.objects.push_back(i);
+  ChainLink toPivot, fromPivot;
+  toPivot.fixed = glm::translate(glm::dmat4(1), pivot);
+  fromPivot.fixed = glm::translate(glm::dmat4(1), -pivot);
+  motion.chain = {toPivot, trs, fromPivot};
+  return motion;
+}
+
+LightMotion readLightMotion(const Reader& r, const json& animation, const std::string& at) {
+  r.expectObject(animation, at, {"center", "rotate_degrees", "width", "height"});
+  LightMotion motion;
+  if (animation.contains("center"))
+    motion.center = readTrack<glm::dvec3>(
+        r, animation["center"], at + "/center",
+        [&](const json& v, const std::string& p) { return glm::dvec3(r.point(v, p)); });
+  if (animation.contains("rotate_degrees"))
+    motion.orientation = readTrack<glm::dquat>(
+        r, animation["rotate_degrees"], at + "/rotate_degrees",
+        [&](const json& v, const std::string& p) { return eulerDegrees(r.vec3(v, p)); });
+  auto size = [&](const json& v, const std::string& p) {
+    r.bounded(v, p, 2 * kMaxCoordinate);
+    return r.positive(v, p);
+  };
+  if (animation.contains("width"))
+    motion.width = readTrack<double>(r, animation["width"], at + "/width", size);
+  if (animation.contains("height"))
+    motion.height = readTrack<double>(r, animation["height"], at + "/height", size);
+  return motion;
+}
+
 void readObject(const Reader& r, const json& object, const std::string& pointer,
                 const fs::path& baseDir, Scene& scene, std::vector<std::string>& warnings,
                 SceneBudget& budget) {
@@ -164,7 +277,7 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
   const size_t first = scene.objects.size();
 
   if (isGround) {
-    r.expectObject(object, pointer, {"ground", "name", "color", "receiver_only"});
+    r.expectObject(object, pointer, {"ground", "name", "color", "receiver_only", "animation"});
     const std::string at = pointer + "/ground";
     r.expectObject(object["ground"], at, {"size", "y"});
     r.bounded(r.required(object["ground"], at, "size"), at + "/size", 2 * kMaxCoordinate);
@@ -185,7 +298,8 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
   } else {
     r.expectObject(
         object, pointer,
-        {"gltf", "name", "translate", "rotate_degrees", "scale", "color", "receiver_only"});
+        {"gltf", "name", "translate", "rotate_degrees", "scale", "color", "receiver_only",
+         "animation"});
     const std::string at = pointer + "/gltf";
     const std::string file = r.string(object["gltf"], at);
     if (file.empty()) r.fail(at, "empty path");
@@ -193,10 +307,16 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     if (modelPath.is_relative()) modelPath = (baseDir / modelPath).lexically_normal();
     const glm::mat4 world = placement(r, object, pointer);
     std::vector<SceneObject> loaded;
+    GltfAnimation fileAnimation;
     try {
-      loaded = loadGltf(modelPath.string(), world, warnings, &budget);
+      loaded = loadGltf(modelPath.string(), world, warnings, &budget, &fileAnimation);
     } catch (const std::exception& e) {
       r.fail(at, e.what());
+    }
+    // The file's own node animation plays first, then the object's "animation" (below).
+    for (ObjectMotion& motion : fileAnimation.motions) {
+      for (size_t& index : motion.objects) index += first;
+      scene.animation.objects.push_back(std::move(motion));
     }
     for (SceneObject& o : loaded) {
       if (!name.empty()) o.name = name + "/" + o.name;
@@ -210,12 +330,17 @@ void readObject(const Reader& r, const json& object, const std::string& pointer,
     if (object.contains("receiver_only"))
       o.receiverOnly = r.boolean(object["receiver_only"], pointer + "/receiver_only");
   }
+  if (object.contains("animation"))
+    scene.animation.objects.push_back(
+        readObjectMotion(r, object["animation"], pointer + "/animation", scene, first));
 }
 
-AreaLight readLight(const Reader& r, const json& root, std::vector<std::string>& warnings) {
+AreaLight readLight(const Reader& r, const json& root, std::vector<std::string>& warnings,
+                    LightMotion& motion) {
   const json& light = r.required(root, "", "light");
   const std::string at = "/light";
-  r.expectObject(light, at, {"center", "forward", "up", "width", "height"});
+  r.expectObject(light, at, {"center", "forward", "up", "width", "height", "animation"});
+  if (light.contains("animation")) motion = readLightMotion(r, light["animation"], at + "/animation");
   AreaLight result;
   result.center = r.point(r.required(light, at, "center"), at + "/center");
   // Directions in double: no overflow for any finite input.
@@ -263,6 +388,31 @@ Camera readCamera(const Reader& r, const json& root) {
   return result;
 }
 
+// "animation": {"duration": seconds, "repeat": "loop" | "ping_pong" | "once"}; the duration
+// defaults to the last key of any track (the file's glTF animations included).
+void readAnimationTiming(const Reader& r, const json& root, Animation& animation) {
+  animation.duration = animation.endTime();
+  if (!root.contains("animation")) return;
+  const json& timing = root["animation"];
+  r.expectObject(timing, "/animation", {"duration", "repeat"});
+  if (timing.contains("duration")) {
+    r.bounded(timing["duration"], "/animation/duration", 1e6);
+    animation.duration = r.positive(timing["duration"], "/animation/duration");
+  }
+  if (timing.contains("repeat")) {
+    const std::string repeat = r.string(timing["repeat"], "/animation/repeat");
+    if (repeat == "loop")
+      animation.repeat = Repeat::Loop;
+    else if (repeat == "ping_pong")
+      animation.repeat = Repeat::PingPong;
+    else if (repeat == "once")
+      animation.repeat = Repeat::Once;
+    else
+      r.fail("/animation/repeat",
+             "unknown repeat '" + printable(repeat) + "' (valid: loop, ping_pong, once)");
+  }
+}
+
 }  // namespace
 
 Scene loadSceneFile(const std::string& path, std::vector<std::string>& warnings) {
@@ -275,7 +425,7 @@ Scene parseSceneFile(const std::string& text, const std::string& path,
   const Reader r(path);
   // The limits every JSON input shares: depth, size, string length, repeated keys.
   const json root = parseJsonText(text, path);
-  r.expectObject(root, "", {"name", "objects", "light", "camera"});
+  r.expectObject(root, "", {"name", "objects", "light", "camera", "animation"});
 
   Scene scene;
   scene.name =
@@ -287,10 +437,12 @@ Scene parseSceneFile(const std::string& text, const std::string& path,
   SceneBudget budget;  // shared by every object of the file
   for (size_t i = 0; i < objects.size(); ++i)
     readObject(r, objects[i], "/objects/" + std::to_string(i), baseDir, scene, warnings, budget);
-  scene.light = readLight(r, root, warnings);
+  scene.light = readLight(r, root, warnings, scene.animation.light);
   scene.camera = readCamera(r, root);
+  readAnimationTiming(r, root, scene.animation);
 
-  const std::string problem = validateScene(scene);
+  std::string problem = validateScene(scene);
+  if (problem.empty() && !scene.animation.empty()) problem = posedSceneProblem(scene, 0);
   if (!problem.empty()) throw InputError(path + ": " + problem);
   return scene;
 }

@@ -98,6 +98,8 @@ class Importer {
       : path_(path), model_(model), warnings_(warnings), budget_(budget) {}
 
   std::vector<SceneObject> run(const glm::dmat4& worldFromFile);
+  // Per loaded object, the nodes from its root to its mesh's node (for its animation).
+  const std::vector<std::vector<int>>& objectNodePaths() const { return objectPaths_; }
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
@@ -133,6 +135,8 @@ class Importer {
   size_t skippedPrimitives_ = 0;
   size_t singularInstances_ = 0;
   std::vector<SceneObject> objects_;
+  std::vector<int> nodePath_;
+  std::vector<std::vector<int>> objectPaths_;
 };
 
 std::vector<SceneObject> Importer::run(const glm::dmat4& worldFromFile) {
@@ -194,10 +198,12 @@ void Importer::visit(int node, int parent, const glm::dmat4& parentWorld, int de
     fail("more than " + std::to_string(kMaxNodeVisits) +
          " node instances (nodes shared by several parents?)");
   onPath_[node] = 1;
+  nodePath_.push_back(node);
   const glm::dmat4 world = parentWorld * localTransform(node);
   const tinygltf::Node& n = model_.nodes[node];
   if (n.mesh != -1) addMeshInstance(node, n.mesh, world);
   for (int child : n.children) visit(child, node, world, depth + 1);
+  nodePath_.pop_back();
   onPath_[node] = 0;
 }
 
@@ -506,6 +512,7 @@ bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,
   object.mesh = std::move(out);
   object.baseColor = materialColor(p.material, where);
   objects_.push_back(std::move(object));
+  objectPaths_.push_back(nodePath_);
   return true;
 }
 
@@ -519,7 +526,8 @@ std::string lowerExtension(const std::string& path) {
 }  // namespace
 
 std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worldFromFile,
-                                  std::vector<std::string>& warnings, SceneBudget* budget) {
+                                  std::vector<std::string>& warnings, SceneBudget* budget,
+                                  GltfAnimation* animation) {
   auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
   std::error_code error;
   // A FIFO, directory, device or symlink loop says what it is (not "no such file").
@@ -536,12 +544,13 @@ std::vector<SceneObject> loadGltf(const std::string& path, const glm::mat4& worl
   std::vector<unsigned char> bytes;
   std::string problem;
   if (!readRegularFile(&bytes, &problem, path, nullptr)) fail(oneLine(problem));
-  return loadGltfFromMemory(bytes, path, worldFromFile, warnings, &shared);
+  return loadGltfFromMemory(bytes, path, worldFromFile, warnings, &shared, animation);
 }
 
 std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& bytes,
                                             const std::string& path, const glm::mat4& worldFromFile,
-                                            std::vector<std::string>& warnings, SceneBudget* budget) {
+                                            std::vector<std::string>& warnings, SceneBudget* budget,
+                                            GltfAnimation* animation) {
   auto fail = [&](const std::string& what) { throw InputError(path + ": " + what); };
   for (int c = 0; c < 4; ++c)
     if (!finite(glm::dvec3(worldFromFile[c])) || !std::isfinite(worldFromFile[c][3]))
@@ -593,5 +602,9 @@ std::vector<SceneObject> loadGltfFromMemory(const std::vector<unsigned char>& by
   if (!warn.empty()) warnings.push_back(path + ": tinygltf: " + printable(oneLine(warn), 400));
 
   Importer importer(path, model, warnings, shared);
-  return importer.run(glm::dmat4(worldFromFile));
+  std::vector<SceneObject> objects = importer.run(glm::dmat4(worldFromFile));
+  if (animation)
+    *animation = readGltfAnimation(model, importer.objectNodePaths(), glm::dmat4(worldFromFile),
+                                   path, warnings);
+  return objects;
 }

@@ -43,7 +43,10 @@ Session::Session() {
 void Session::adoptScene(Scene loaded, const std::string& source) {
   frame.reset();
   gpuScene.reset();
-  scene = std::move(loaded);
+  rest = std::move(loaded);
+  time = 0;
+  playing = false;
+  scene = poseAt(rest, 0);
   sceneSource = source;
   initialCamera = scene.camera;
   initialLight = scene.light;
@@ -56,6 +59,32 @@ void Session::adoptScene(Scene loaded, const std::string& source) {
 
 // 2. Parameters go through Param::set, which range-checks and names the valid range; the
 //    pipeline's revision changes with the value, so the next frame runs.
+std::string Session::setTime(double seconds) {
+  if (!std::isfinite(seconds) || std::abs(seconds) > 1e9) return "time must be finite and within +-1e9 s";
+  if (!animated()) {
+    time = seconds;
+    scene.time = seconds;
+    return "";
+  }
+  rest.camera = scene.camera;
+  if (rest.animation.light.empty()) rest.light = scene.light;
+  Scene posed = poseAt(rest, seconds);
+  if (std::string problem = validateScene(posed); !problem.empty())
+    return "the scene at time " + std::to_string(seconds) + " s: " + problem;
+  const std::uint32_t frameKey = frame ? frame->frameKey : 0;
+  const int width = frame ? frame->eyeWidth : eye.width, height = frame ? frame->eyeHeight : eye.height;
+  frame.reset();
+  gpuScene.reset();
+  scene = std::move(posed);
+  gpuScene = std::make_unique<GpuScene>(scene);
+  frame = std::make_unique<Frame>(scene, *gpuScene, pipeline);
+  frame->eyeWidth = width;
+  frame->eyeHeight = height;
+  frame->frameKey = frameKey;
+  time = seconds;
+  return "";
+}
+
 std::string Session::setParameter(const std::string& stageDotKey, const std::string& value) {
   try {
     if (std::string problem = pipeline.param(stageDotKey).set(value); !problem.empty())
@@ -92,6 +121,7 @@ RunKey Session::currentKey(std::vector<std::string> requested) const {
   key.scene = sceneFingerprint(scene, sceneLoads);
   key.eye = eyeFor(requestedEye);
   if (frame) key.frameKey = frame->frameKey;
+  key.time = time;
   key.shaders = shaderReloads;
   std::sort(requested.begin(), requested.end());
   key.requested = std::move(requested);

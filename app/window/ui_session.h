@@ -29,6 +29,7 @@ struct RunKey {
   std::uint64_t scene = 0;     // which scene (loads counted), its camera and light
   glm::ivec2 eye{0, 0};
   std::uint32_t frameKey = 0;
+  double time = 0;                     // seconds into the scene's animation
   int shaders = 0;                     // shader reloads
   std::vector<std::string> requested;  // the outputs shown (Pipeline::run's `requested`), sorted
   bool operator==(const RunKey&) const = default;
@@ -68,7 +69,18 @@ struct Session {
   double budgetEstimate = 0;
 
   // 3. Scenes and parameters; "" or a message naming what is valid.
-  void adoptScene(Scene loaded, const std::string& source);  // GpuScene and Frame rebuilt
+  void adoptScene(Scene loaded, const std::string& source);  // GpuScene and Frame rebuilt,
+                                                             // the time back to 0
+  // Time (scene/animation.h): `scene` is `rest` posed at `time`. setTime poses it again
+  // (GpuScene and Frame rebuilt, the frame key kept), the camera and a light the animation
+  // does not move staying where the user put them; every stage then runs on the new pose.
+  // "" or why the pose is refused (the scene is then unchanged).
+  Scene rest;
+  double time = 0;
+  bool playing = false;  // the main loop advances `time` by speed x the seconds drawn
+  double speed = 1;
+  bool animated() const { return !rest.animation.empty(); }
+  std::string setTime(double seconds);
   std::string setParameter(const std::string& stageDotKey, const std::string& value);
   const Output* outputOf(const std::string& stageDotOutput) const;
   std::vector<std::string> outputKeys() const;  // every declared output, in pipeline order

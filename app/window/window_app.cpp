@@ -37,6 +37,7 @@
 #include "window/panels/ui_speed_error.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
+#include "window/ui_timeline.h"
 #include "window/views/ui_texture_view.h"
 #include "window/views/ui_ssm_pick.h"
 #include "window/views/ui_trace_source.h"
@@ -413,11 +414,13 @@ struct FrameLoop {
   bool draggingSlider = false;
   int result = 0;
   FrameChange change;
+  TimelineClock timeline;
 
   bool frame() {
     // 7a. Events: wait when idle, so an idle window costs no CPU.
     const bool busy = (runner && !state.lesson.waiting) || !options.screenshot.empty() ||
-                      state.needsRun() || !state.script.syntheticInput.empty();
+                      state.needsRun() || !state.script.syntheticInput.empty() ||
+                      state.session.playing;
     if (busy) glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
     const auto woken = std::chrono::steady_clock::now();
@@ -448,6 +451,12 @@ struct FrameLoop {
     state.keepPickInEye(glm::ivec2(state.views.panels[0].eyeRegion));
     recordPickedPixel(state);
     pickSoftShadowMapTexels(state);
+    // The timeline: a playing animation poses the scene at its new time (ui_timeline.h).
+    if (std::string problem = advanceTimeline(
+            state.session, timeline,
+            std::chrono::duration<double>(woken.time_since_epoch()).count());
+        !problem.empty())
+      state.status = problem;
     const bool ran = state.runIfNeeded(glm::ivec2(state.views.panels[0].eyeRegion));
     // 7d. The UI (fonts rebuilt first when the UI scale changed).
     applyUiScale(state.uiScale);
@@ -464,6 +473,8 @@ struct FrameLoop {
     // A slider dragged since its press counts as moving too: preview until released.
     if (!ImGui::IsAnyItemActive()) draggingSlider = false;
     else if (state.currentKey() != before) draggingSlider = true;
+    if (std::string problem = drawTimeline(state.session, state.uiScale); !problem.empty())
+      state.status = problem;
     state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera);
     ImGui::Render();
     ++framesRendered;

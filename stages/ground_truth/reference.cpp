@@ -131,6 +131,7 @@ private:
     if (!tracer_ || key != tracerKey_) {
       tracer_ = std::make_shared<ReferenceTracer>(scene);
       tracerKey_ = key;
+      ++tracerBuilds_;
     }
     return *tracer_;
   }
@@ -143,6 +144,9 @@ private:
   std::optional<std::vector<float>> compute(Frame& frame, ReferenceRequest request,
                                             const std::string& cacheKey) {
     tracer(frame.scene);
+    // Embree's BVH is rebuilt only when an occluder moved (an animated scene's new pose), not
+    // when only the camera or the light did: the builds so far, for people and tests.
+    frame.counters["reference.bvhBuilds"] = tracerBuilds_;
     frame.counters["reference.occluderTriangles"] = double(tracer_->occluderTriangles());
     // Before tracing, its cost (reference_cost.h): refused over the budget (core/run_control.h).
     const ReferenceCostEstimate cost = estimateReferenceCost(request, tracer_->occluderTriangles());
@@ -256,6 +260,7 @@ private:
 
   std::shared_ptr<ReferenceTracer> tracer_;
   std::string tracerKey_;
+  int tracerBuilds_ = 0;
   std::string memoryKey_;
   std::vector<float> memory_;
   std::unique_ptr<Job> job_;

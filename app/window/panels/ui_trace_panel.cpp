@@ -217,7 +217,8 @@ void describeTraceCommand(const UiState& state, RayTraceInfo& trace) {
         continue;
       sets.push_back(key + "=" + param.toString());
     }
-  trace.commandLine = traceCommandLine(session.sceneSource, image.x, image.y, width, height, sets);
+  trace.commandLine = traceCommandLine(session.sceneSource, image.x, image.y, width, height, sets,
+                                       session.time);
   const Camera& c = session.scene.camera;
   const Camera& c0 = session.initialCamera;
   const AreaLight& l = session.scene.light;

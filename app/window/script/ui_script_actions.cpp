@@ -350,6 +350,13 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"eye_size", pairOr(16, 8192, {"fit"}), [](S& s, const json& a, C&) { return eyeSize(s, a); }},
       {"scene", kString, [=](S& s, const json& a, C&) { return s.loadScene(text(a)); }},
+      // The scene's time (scene/animation.h): posed there, every stage run again.
+      {"time", number(-1e9, 1e9), [](S& s, const json& a, C&) { return s.session.setTime(a.get<double>()); }},
+      {"play", kBool,
+       [](S& s, const json& a, C&) {
+         s.session.playing = a.get<bool>();
+         return std::string();
+       }},
       {"frame_scene", kBool, [](S& s, const json&, C&) { return frameLoadedScene(s); }},
       {"colormap", kString, [](S& s, const json& a, C&) { return colormap(s, a); }},
       {"channels", kString, [](S& s, const json& a, C&) { return channels(s, a); }},

@@ -229,12 +229,17 @@ void printTiming(const UiState& state, const std::string& label) {
 // 5. The camera, the ground and the light fitted to the loaded model (the scene panel's
 //    "Frame scene" button and the frame_scene action): a copy is framed and adopted, so the
 //    GPU scene is rebuilt with the moved ground and "Reset camera" returns to the framing.
+//    An animated scene is framed at rest and keeps its animation and its time.
 std::string frameLoadedScene(UiState& state) {
-  Scene framed = state.session.scene;
+  const bool animated = state.session.animated();
+  const double time = state.session.time;
+  Scene framed = animated ? state.session.rest : state.session.scene;
   frameScene(framed);
   if (std::string problem = validateScene(framed); !problem.empty()) return "frame scene: " + problem;
   const std::string source = state.session.sceneSource;
   state.adoptScene(std::move(framed), source);
+  if (animated)
+    if (std::string problem = state.session.setTime(time); !problem.empty()) return "frame scene: " + problem;
   state.status = "framed: " + boundsText(framedBounds(state.session.scene));
   return "";
 }

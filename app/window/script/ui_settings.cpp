@@ -75,6 +75,7 @@ json settingsJson(const UiState& state) {
   json root;
   root["penumbra_settings"] = 1;
   root["scene"] = state.session.sceneSource;
+  root["time"] = state.session.time;  // seconds into the scene's animation
   root["eye"] = state.session.eye.fitView ? json("fit") : json::array({state.session.eye.width, state.session.eye.height});
   const Camera& camera = state.session.scene.camera;
   root["camera"] = {{"position", vec3Json(camera.position)}, {"target", vec3Json(camera.target)},
@@ -106,7 +107,7 @@ json settingsJson(const UiState& state) {
 // 2. Read and check into copies; commit only when all of it is valid.
 std::string applySettingsJson(UiState& state, const json& root) {
   try {
-    onlyKeys(root, "", {"penumbra_settings", "scene", "eye", "camera", "light", "parameters", "ui_scale", "views"});
+    onlyKeys(root, "", {"penumbra_settings", "scene", "eye", "camera", "light", "parameters", "ui_scale", "views", "time"});
     // 2a. Parameters, checked on copies of the declarations.
     std::vector<std::pair<Param*, Param>> parameters;
     if (root.contains("parameters")) {
@@ -172,6 +173,11 @@ std::string applySettingsJson(UiState& state, const json& root) {
       if (l.contains("height")) light.height = float(number(l["height"], "/light/height"));
     }
     if (std::string problem = validateScene(candidate); !problem.empty()) fail("", problem);
+    std::optional<double> time;
+    if (root.contains("time")) {
+      time = number(root["time"], "/time");
+      if (std::abs(*time) > 1e9) fail("/time", "must be within +-1e9 seconds");
+    }
     // 2c. UI scale and views (checked whole, applied last).
     std::vector<std::function<void(UiState&)>> interface;
     try {
@@ -187,6 +193,7 @@ std::string applySettingsJson(UiState& state, const json& root) {
     state.session.eye = eye;
     for (auto& [declared, value] : parameters) *declared = value;
     for (const auto& apply : interface) apply(state);
+    if (time) return state.session.setTime(*time);
     return "";
   } catch (const SettingsError& error) {
     return error.message;

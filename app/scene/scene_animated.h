@@ -1,0 +1,18 @@
+// The built-in animated scenes (scene/animation.h): what the papers show moving.
+//   dragon_turntable  the dragon turning once every 8 s on the ground, the wall behind it
+//                     (the thesis's "fully dynamic scenes"; Wang's moving geometry);
+//   light_sweep       the elongated cube under a light that sweeps across it and grows from
+//                     0.4 to 2.4 wide and back (Atty's "dynamic area light sources"; the
+//                     penumbra widens and the classification follows it);
+//   toys              several objects moving at once, after Wang et al.'s Toys: a box
+//                     spinning, a ball bouncing, a ball circling, a plank rocking.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+std::vector<std::string> animatedSceneNames();
+bool isAnimatedScene(const std::string& name);
+// Throws InputError for an unknown name (or the dragon's glTF problem).
+Scene makeAnimatedScene(const std::string& name, std::vector<std::string>& warnings);

@@ -1,0 +1,23 @@
+// The timeline of an animated scene (scene/animation.h): play / pause, step, scrub, speed
+// and the repeat mode, in a small window shown only while the scene is animated. The main
+// loop advances the time while playing; every stage then runs on the new pose
+// (Session::setTime).
+#pragma once
+#include <string>
+
+struct Session;
+
+// The wall clock of the last advance (seconds, steady clock; < 0: none yet).
+struct TimelineClock {
+  double last = -1;
+};
+
+// While playing: the session's time advanced by speed x the seconds since the last call.
+// Returns "" or why the new pose was refused (playing then stops).
+std::string advanceTimeline(Session& session, TimelineClock& clock, double nowSeconds);
+
+// One frame step: 1/24 s, the frame rate of exported animations.
+inline constexpr double kTimelineStep = 1.0 / 24;
+
+// Draws the timeline window (nothing for a static scene). Returns "" or a refused pose.
+std::string drawTimeline(Session& session, float uiScale);
