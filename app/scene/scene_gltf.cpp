@@ -6,8 +6,8 @@
 #include <tiny_gltf.h>
 #include <nlohmann/json.hpp>
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 #include "scene/gltf_file_access.h"
 
 #include <glm/gtc/matrix_transform.hpp>

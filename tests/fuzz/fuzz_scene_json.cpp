@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "scene/scene_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
