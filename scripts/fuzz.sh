@@ -46,7 +46,7 @@ if [ "${FUZZ_COVERAGE:-1}" != 0 ] && command -v llvm-profdata-14 >/dev/null &&
     echo "line coverage, corpus of fuzz_$harness:"
     llvm-cov-14 report "$build/coverage/fuzz_$harness" -instr-profile="$build/coverage/$harness.profdata" \
       app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/gltf_declared.cpp app/scene/scene.cpp \
-      app/io/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/gltf_/p;/json_input/p;/output_path/p;/TOTAL/p'
+      app/base/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/gltf_/p;/json_input/p;/output_path/p;/TOTAL/p'
   done
 fi
 exit $status

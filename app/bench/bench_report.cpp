@@ -14,7 +14,7 @@
 #include "bench/bench_configs.h"
 #include "bench/bench_measure.h"
 #include "bench/bench_output.h"
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "core/pipeline.h"
 #include "gl/gl_context.h"
 #include "io/output_path.h"

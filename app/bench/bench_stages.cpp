@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "bench/bench_measure.h"
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "gl/gl_context.h"
 #include "io/image_export.h"
 #include "io/output_path.h"

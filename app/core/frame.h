@@ -12,9 +12,8 @@
 
 #include "core/stage.h"
 #include "gl/gl_texture.h"
-#include "gl/gpu_layout_trace.h"
+#include "gl/gpu_layout.h"
 #include "gl/gpu_scene.h"
-#include "scene/auto_settings.h"
 #include "scene/light_frame.h"
 
 class Pipeline;
@@ -33,8 +32,14 @@ struct Frame {
 
   std::map<std::string, GlTexture> textures;  // "stage.output"
   std::map<std::string, double> counters;     // statistics for people: "trace.rays", ...
-  AutoSettings autoSettings;  // what `auto` parameters chose (stage `light`)
-  std::vector<gpu::TraceStep> traceSteps;     // every step of the recorded pixel's rays
+  // One sentence per `auto` parameter decided this run (the light stage's choices, then the
+  // pipeline's choice slots); the numbers behind them are the light stage's
+  // (stages/shared_inputs/auto_settings.h).
+  std::vector<std::string> autoReasons;
+  // CPU copies of GPU data a stage read back after the run (Frame::readAfterFrame), by
+  // "stage.name": the bytes as the stage's layout header lays them out (the trace's recorded
+  // steps: "trace.steps", read through stages/monte_carlo/trace_steps.h).
+  std::map<std::string, std::vector<unsigned char>> readBack;
   std::map<std::string, std::unique_ptr<GlBuffer>> buffers;  // buffer outputs, "stage.output"
   // Demand (docs/decisions/014-outputs-nobody-asked-for.md): the outputs this run was asked for
   // (Pipeline::run; empty: all), and those a stage wrote only where the stages after it read them
@@ -46,7 +51,7 @@ struct Frame {
   // Counts the GPU wrote into buffers, read back after the last stage of the run
   // (Pipeline::run, all at once), so no stage waits for the GPU inside the frame: a stage
   // asks for `bytes` at `offset` of `buffer` and gets them in `use`, which fills counters
-  // (or traceSteps). The buffer must outlive the run (a stage's own member, or an output).
+  // (or readBack). The buffer must outlive the run (a stage's own member, or an output).
   struct Readback {
     GLuint buffer;
     GLintptr offset;

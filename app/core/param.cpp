@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 Param Param::boolean(std::string key, std::string doc, bool value) {
   return {std::move(key), std::move(doc), Type::Bool, double(value), 0, 1, {}};

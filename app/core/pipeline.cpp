@@ -519,7 +519,7 @@ bool Pipeline::decideAutoChoices(Frame& frame, const std::string& after,
                                chosen.option + "', which is not an option");
       choice.value = double(option - choice.options.begin());
       undecided.erase(choiceKey(owner->name(), input));
-      frame.autoSettings.reasons.push_back(chosen.reason);
+      frame.autoReasons.push_back(chosen.reason);
       decided = true;
     }
   return decided;

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 // Over budget: bad input in the sense of main() (exit 2), with what it would cost.
 struct RunBudgetExceeded : InputError {

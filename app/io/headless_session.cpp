@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 #include "scene/scene_builtin.h"
 #include "scene/scene_checks.h"

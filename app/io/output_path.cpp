@@ -9,7 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <map>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 namespace {
 

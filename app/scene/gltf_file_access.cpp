@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 #include "scene/scene.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 Bounds Scene::bounds(bool occludersOnly) const {
   Bounds result;

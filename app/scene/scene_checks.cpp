@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 namespace {
 

@@ -2,8 +2,8 @@
 
 #include "scene/mesh_builders.h"
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 #include "scene/scene_gltf.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -23,7 +23,7 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// RFC 6901 escaping, bounded, control characters escaped (io/json_input.h).
+// RFC 6901 escaping, bounded, control characters escaped (base/json_input.h).
 std::string pointerTo(const std::string& parent, const std::string& key) {
   return jsonPointer(parent, key);
 }

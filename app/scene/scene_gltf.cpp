@@ -5,8 +5,8 @@
 // declares, not the library), and without TINYGLTF_IMPLEMENTATION.
 #include <tiny_gltf.h>
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 #include "scene/gltf_file_access.h"
 
 #include <glm/gtc/matrix_transform.hpp>

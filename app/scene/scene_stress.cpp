@@ -1,6 +1,6 @@
 #include "scene/scene_stress.h"
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>

@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "window/ui_graph.h"
-#include "window/ui_state.h"
 
 double estimateRaster4dMs(long long eyePixels, int samplesPerSide, long long occluderTriangles) {
   constexpr double kMs = 93, kPixels = 128 * 128, kSamples = 32, kTriangles = 12, kPower = 0.55;
@@ -40,9 +39,7 @@ long long eyePixels(const Session& session) {
 
 // 1. The prediction: the last measured run on this scene scaled to this eye size and m (the
 //    paper's Table 4: linear in rows), else the estimate.
-void predict(UiState& state, const std::string& fast) {
-  LiveTruth& truth = state.liveTruth;
-  const Session& session = state.session;
+void predict(LiveTruth& truth, const Session& session, const std::string& fast) {
   const int m = samplesOf(session.pipeline, fast);
   truth.fromMeasurement = truth.measuredScene == session.sceneLoads && truth.measuredPixels > 0;
   truth.predictedMs =
@@ -60,12 +57,11 @@ std::string currentTruth(const Pipeline& pipeline) {
 }  // namespace
 
 // 2. The rule, while automatic. The slow truth is the comparison's declared default (Embree).
-std::string applyLiveTruthRule(UiState& state) {
-  LiveTruth& truth = state.liveTruth;
-  Pipeline& pipeline = state.session.pipeline;
+std::string applyLiveTruthRule(LiveTruth& truth, Session& session) {
+  Pipeline& pipeline = session.pipeline;
   const std::string key = groundTruthChoiceKey(pipeline), fast = gpuGroundTruth(pipeline);
   if (!truth.automatic || key.empty() || fast.empty()) return "";
-  predict(state, fast);
+  predict(truth, session, fast);
   const std::string methodKey = measuredMethodKey(pipeline);
   const bool measuringFast = !methodKey.empty() && pipeline.param(methodKey).asEnum() == fast;
   std::string slow;
@@ -91,43 +87,41 @@ std::string applyLiveTruthRule(UiState& state) {
   return changed ? chosen : "";
 }
 
-void keepUserTruth(UiState& state) {
-  state.liveTruth.automatic = false;
-  state.liveTruth.reason = "your choice; automatic off";
+void keepUserTruth(LiveTruth& truth) {
+  truth.automatic = false;
+  truth.reason = "your choice; automatic off";
 }
 
 // 3. Each frame, before the run: a change of the choice that the rule did not make is the
 //    user's; the rule follows the scene, the eye size and the measurements while the
 //    comparison is shown.
-void updateLiveTruth(UiState& state) {
-  LiveTruth& truth = state.liveTruth;
-  const std::string now = currentTruth(state.session.pipeline);
+void updateLiveTruth(LiveTruth& truth, Session& session, const std::vector<std::string>& shown,
+                     std::string& status) {
+  const std::string now = currentTruth(session.pipeline);
   if (now.empty()) return;
-  if (truth.automatic && !truth.seen.empty() && now != truth.seen) keepUserTruth(state);
+  if (truth.automatic && !truth.seen.empty() && now != truth.seen) keepUserTruth(truth);
   truth.seen = now;
-  const std::string comparison = comparisonOutput(state.session.pipeline);
-  const std::vector<std::string> shown = state.requestedOutputs();
+  const std::string comparison = comparisonOutput(session.pipeline);
   if (!truth.automatic || std::find(shown.begin(), shown.end(), comparison) == shown.end()) return;
-  if (!applyLiveTruthRule(state).empty()) state.status = "live error " + liveTruthLine(state);
+  if (!applyLiveTruthRule(truth, session).empty())
+    status = "live error " + liveTruthLine(truth, session.pipeline);
 }
 
 // 4. After each run: raster4d's own time (not at preview resolution: it would scale badly).
-void recordLiveTruthRun(UiState& state) {
-  const Session& session = state.session;
+void recordLiveTruthRun(LiveTruth& truth, const Session& session) {
   const std::string fast = gpuGroundTruth(session.pipeline);
   if (fast.empty() || session.previewing) return;
   const StageTime& time = session.pipeline.lastTime(fast);
   if (!time.ran || time.milliseconds <= 0) return;
-  LiveTruth& truth = state.liveTruth;
   truth.measuredMs = time.milliseconds;
   truth.measuredPixels = eyePixels(session);
   truth.measuredSamples = samplesOf(session.pipeline, fast);
   truth.measuredScene = session.sceneLoads;
 }
 
-std::string liveTruthLine(const UiState& state) {
-  const std::string now = currentTruth(state.session.pipeline);
+std::string liveTruthLine(const LiveTruth& truth, const Pipeline& pipeline) {
+  const std::string now = currentTruth(pipeline);
   if (now.empty()) return "";
-  const std::string& reason = state.liveTruth.reason;
+  const std::string& reason = truth.reason;
   return "against " + now + (reason.empty() ? "" : " (" + reason + ")");
 }

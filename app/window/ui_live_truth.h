@@ -7,8 +7,9 @@
 // the panel, by --set, a config or a script) is kept and never overridden.
 #pragma once
 #include <string>
+#include <vector>
 
-class UiState;
+#include "window/ui_session.h"
 
 // The rule: raster4d when its predicted milliseconds per run are at most this (4 runs a
 // second), and it is not itself the method measured.
@@ -36,13 +37,15 @@ struct LiveTruth {
 
 // Before every run: notices a choice the user made; while automatic and the comparison is
 // shown, applies the rule (the status line says when the choice changes).
-void updateLiveTruth(UiState& state);
+// `shown`: the outputs the window shows; `status`: the status line.
+void updateLiveTruth(LiveTruth& truth, Session& session, const std::vector<std::string>& shown,
+                     std::string& status);
 // After every run: remembers raster4d's time at full resolution.
-void recordLiveTruthRun(UiState& state);
+void recordLiveTruthRun(LiveTruth& truth, const Session& session);
 // While automatic: sets the comparison's ground truth by the rule (and enables it); returns
 // what it chose ("" when nothing changed).
-std::string applyLiveTruthRule(UiState& state);
+std::string applyLiveTruthRule(LiveTruth& truth, Session& session);
 // The user's choice counts as such from now on (--set error.against=..., the panel's combo).
-void keepUserTruth(UiState& state);
+void keepUserTruth(LiveTruth& truth);
 // "against raster4d (automatic: predicted 12 ms <= 250 ms, measured)".
-std::string liveTruthLine(const UiState& state);
+std::string liveTruthLine(const LiveTruth& truth, const Pipeline& pipeline);

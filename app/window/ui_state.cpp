@@ -174,10 +174,10 @@ void UiState::keepPickInEye(glm::ivec2 viewRegion) {
 
 bool UiState::runIfNeeded(glm::ivec2 viewRegion) {
   checkLight();
-  updateLiveTruth(*this);
+  updateLiveTruth(liveTruth, session, requestedOutputs(), status);
   std::string problem;
   const bool ran = session.runIfNeeded(viewRegion, requestedOutputs(), problem);
   fail("pipeline", problem);
-  if (ran) recordLiveTruthRun(*this);
+  if (ran) recordLiveTruthRun(liveTruth, session);
   return ran;
 }

@@ -20,6 +20,14 @@ public:
   ScriptIo script;
   LessonState lesson;
   LiveTruth liveTruth;  // the live error's ground truth (ui_live_truth.h)
+  // What the panels keep from one UI frame to the next (here, not in function statics, so
+  // that each UiState, a test's included, starts from the defaults).
+  struct PanelMemory {
+    int shownTab = -1;        // the side panel's tab on screen (window_app.cpp); -1: none yet
+    bool wasStacked = false;  // the side panel was one column last frame
+    std::string scenePath;    // the scene panel's typed path
+    std::string settingsPath = "penumbra_settings.json", exportDirectory;  // the tools' paths
+  } panelMemory;
 
   // Messages.
   std::string status;     // the status line: what happened last

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "core/auto_params.h"
+#include "shared_inputs/auto_params.h"
 
 // 1. The (?) marker.
 void helpMarker(const std::string& text) {
@@ -25,7 +25,7 @@ void helpMarker(const std::string& text) {
 //    for the line (narrow panel, large UI scale) goes on its own line above the widget.
 std::optional<double> autoChosenValue(const std::string& stage, const Param& param, const Frame* frame) {
   if (!param.allowsAuto || !param.automatic || !frame) return {};
-  const AutoSettings& chosen = frame->autoSettings;
+  const AutoSettings& chosen = lightAutoSettings(*frame);
   if (stage == "light" && param.key == "resolution") return effectiveResolution(param, chosen);
   if (stage == "light" && param.key == "layers") return double(chosen.layers - 1);  // options: one, two, three
   if (stage == "trace" && param.key == "rays") return effectiveRays(param, chosen);
@@ -39,7 +39,7 @@ double shownParamValue(const Param& param, std::optional<double> autoValue) {
 
 bool drawParam(Param& param, std::optional<double> autoValue) {
   bool changed = false;
-  // `auto` (app/scene/auto_settings.h): a checkbox before the widget, which is then greyed.
+  // `auto` (stages/shared_inputs/auto_settings.h): a checkbox before the widget, which is then greyed.
   const ImGuiStyle& style = ImGui::GetStyle();
   const float autoWidth = param.allowsAuto ? ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
                                                  ImGui::CalcTextSize("auto").x + style.ItemSpacing.x

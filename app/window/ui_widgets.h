@@ -20,7 +20,7 @@ void helpMarker(const std::string& text);
 //    "(auto)"; the parameter's own value, set by hand, is kept and returns when auto is
 //    unticked.
 bool drawParam(Param& param, std::optional<double> autoValue = {});
-// 2b. What `auto` chose for parameter `stage`.`param` in `frame` (app/core/auto_params.h):
+// 2b. What `auto` chose for parameter `stage`.`param` in `frame` (stages/shared_inputs/auto_params.h):
 //     the map size, the layers (as the option index) and the rays per side from the frame's
 //     AutoSettings; a choice the pipeline decides (Pipeline::decideAutoChoices) holds its
 //     choice in its value. Empty when the parameter is not under auto or nothing ran yet.

@@ -14,7 +14,7 @@
 #include <memory>
 
 #include "gl/gl_context.h"
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "io/headless_session.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
@@ -32,7 +32,7 @@
 #include "window/panels/ui_scene_panel.h"
 #include "window/script/ui_script.h"
 #include "window/watchdog.h"
-#include "io/json_input.h"
+#include "base/json_input.h"
 #include "window/script/ui_settings.h"
 #include "window/panels/ui_speed_error.h"
 #include "window/ui_graph.h"
@@ -224,13 +224,13 @@ void drawSidePanel(UiState& state, const Layout& layout) {
   else ImGui::SetNextWindowPos({layout.width - layout.right, 0});
   ImGui::SetNextWindowSize({layout.stacked ? layout.left : layout.right, layout.panelHeight()});
   ImGui::Begin("##side", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar);
-  static int shownTab = -1;  // none yet
+  int& shownTab = state.panelMemory.shownTab;
   int wanted = shownTab;
   if (state.showSpeedError) wanted = kChart;
   else if (wanted == kChart) wanted = kInspector;  // the chart's request withdrawn: the inspector again
   else if (wanted < 0) wanted = layout.stacked ? kPipeline : kInspector;
   if (!layout.stacked && wanted == kPipeline) wanted = kInspector;  // the pipeline has its own panel
-  static bool wasStacked = false;  // collapsing (a larger UI scale): the pipeline stays in sight
+  bool& wasStacked = state.panelMemory.wasStacked;  // collapsing (a larger UI scale): the pipeline stays in sight
   if (layout.stacked && !wasStacked && wanted == kInspector) wanted = kPipeline;
   wasStacked = layout.stacked;
   const bool pending = wanted != shownTab;
@@ -340,7 +340,7 @@ int checkOptions(const WindowOptions& options, Scene& scene, std::vector<std::st
       std::fprintf(stderr, "penumbra: --set %s\n", problem.c_str());
       return 2;
     }
-  // The readers' rule (io/json_input.h): a FIFO or device is refused here, never waited on.
+  // The readers' rule (base/json_input.h): a FIFO or device is refused here, never waited on.
   if (!options.config.empty()) try {
       readJsonFile(options.config);
     } catch (const InputError& error) {
@@ -388,7 +388,7 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene,
     bool chosen = truth.value != state.session.parameterDefaults[truthKey];
     for (const std::string& assignment : options.sets)
       chosen |= assignment.rfind(truthKey + "=", 0) == 0;
-    if (chosen) keepUserTruth(state);
+    if (chosen) keepUserTruth(state.liveTruth);
   }
   if (!state.views.panels[0].output.empty()) return 0;  // the views of --config
   if (const std::string image = finalImageOutput(state.session.pipeline); !image.empty()) state.selectOutput(image);

@@ -5,7 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/auto_params.h"
+#include "monte_carlo/trace_steps.h"
+#include "shared_inputs/auto_params.h"
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/gpu_layout_trace.h"
@@ -23,7 +24,7 @@ namespace gpu {
 // light.layers' index + 1 the layer count: the option lists below are in this order.
 static_assert(SEARCH_LINEAR == 0 && SEARCH_LINEAR_BINARY == 1 && SEARCH_HIERARCHICAL == 2);
 static_assert(SAMPLING_JITTERED == 0 && SAMPLING_RANDOM == 1);
-// trace.rays' upper bound (auto's too: app/scene/auto_settings.cpp stops at 8): a pixel's
+// trace.rays' upper bound (auto's too: stages/shared_inputs/auto_settings.cpp stops at 8): a pixel's
 // counts of rays, searched rays and early outs fit the record's fields (trace_layout.h).
 constexpr int kMaxRaysPerSide = 8;
 static_assert(kMaxRaysPerSide * kMaxRaysPerSide < (1 << TRACE_COUNT_BITS));
@@ -175,8 +176,8 @@ public:
     gpu::TraceParams params{};
     const int recordY = param("record_y").asInt();
     bindLightInput(frame, *this);
-    // `auto` rays: what the scene and view need (stage `light`, scene/auto_settings.h).
-    const int rays = effectiveRays(param("rays"), frame.autoSettings);
+    // `auto` rays: what the scene and view need (stage `light`, stages/shared_inputs/auto_settings.h).
+    const int rays = effectiveRays(param("rays"), lightAutoSettings(frame));
     params.config = {rays, param("sampling").asInt(), param("search").asInt(), frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
                        param("early_out_region").asBool(), param("shorten_rays").asBool()};
@@ -348,7 +349,7 @@ private:
   }
 
   void readRecords(Frame& frame) {
-    frame.traceSteps.clear();
+    frame.readBack.erase(kTraceStepsKey);
     if (param("record_x").asInt() < 0 || param("record_y").asInt() < 0) return;
     frame.readAfterFrame(recordsBuffer_, 0, 16 + kRecordCapacity * sizeof(gpu::TraceStep),
                          [](const std::vector<unsigned char>& bytes, Frame& frame) {
@@ -356,9 +357,9 @@ private:
                            std::memcpy(header, bytes.data(), sizeof header);
                            const std::uint32_t count =
                                std::min<std::uint32_t>(header[0], kRecordCapacity);
-                           frame.traceSteps.resize(count);
-                           std::memcpy(frame.traceSteps.data(), bytes.data() + 16,
-                                       count * sizeof(gpu::TraceStep));
+                           frame.readBack[kTraceStepsKey].assign(
+                               bytes.begin() + 16,
+                               bytes.begin() + 16 + count * sizeof(gpu::TraceStep));
                            frame.counters["trace.recordedSteps"] = header[0];
                          });
   }

@@ -3,9 +3,11 @@
 // point behind the light's centre, field of view, map resolution), the bias group of Eq 3.2,
 // the number of depth layers that model the occluders (§3.2-3.4, read by classification and
 // the trace) and the hash that picks light samples (§3.1, Appendix A). Its output is the uniform block
-// of shaders/shared/light_block.h; a CPU copy goes to frame.light for the CPU-side readers.
-#include "core/auto_params.h"
+// of shaders/shared/light_block.h; a CPU copy goes to frame.light for the CPU-side readers; what `auto` chose stays with this stage
+// (lightAutoSettings()).
+#include "shared_inputs/auto_params.h"
 #include "core/frame.h"
+#include "core/pipeline.h"
 #include "gl/gpu_layout.h"
 #include "gl/hash_kind.h"
 
@@ -24,7 +26,7 @@ public:
             "depth-map method's maps. auto (the default): so that 98% of the penumbra area in "
             "view spans 6 texels, but no larger than the map whose build costs what the trace "
             "does unless the narrow penumbrae hold half the shadow (a contact shadow), in "
-            "[256, 2048] (app/scene/auto_settings.h; the choice and its reasons: the auto.* "
+            "[256, 2048] (stages/shared_inputs/auto_settings.h; the choice and its reasons: the auto.* "
             "counters and the inspector). The limit of every "
             "depth-map method (thesis §4.1, Atty 2006 §4.2): a penumbra narrower than a few "
             "texels is lost. A plate 0.06 above the ground under a 1x1 light 3 units up casts "
@@ -98,10 +100,11 @@ public:
     const Scene& scene = frame.scene;
     frame.light = computeLightFrame(scene.light, scene.bounds(), param("fov_degrees").asFloat());
     const LightFrame& l = frame.light;
-    // `auto` (app/scene/auto_settings.h): the resolution and layers this scene and view
+    // `auto` (stages/shared_inputs/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
-    frame.autoSettings = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
-    const AutoSettings& chosen = frame.autoSettings;
+    chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
+    const AutoSettings& chosen = chosen_;
+    frame.autoReasons = chosen.reasons;
     frame.light.mapSize = effectiveResolution(param("resolution"), chosen);
     frame.light.layers = param("layers").automatic ? chosen.layers : param("layers").asInt() + 1;
     frame.light.hashKind = param("hash").asInt();
@@ -137,8 +140,20 @@ public:
     u.sampling = glm::uvec4(unsigned(frame.light.hashKind), 0, 0, 0);
     frame.outputBuffer(*this, "light").upload(&u, sizeof u);
   }
+
+  const AutoSettings& chosen() const { return chosen_; }
+
+private:
+  AutoSettings chosen_;  // what `auto` chose in the last run
 };
 
 }  // namespace
+
+const AutoSettings& lightAutoSettings(const Frame& frame) {
+  static const AutoSettings defaults;
+  for (const auto& stage : frame.pipeline.stages())
+    if (const auto* light = dynamic_cast<const LightStage*>(stage.get())) return light->chosen();
+  return defaults;
+}
 
 std::unique_ptr<Stage> makeLightStage() { return std::make_unique<LightStage>(); }

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "shared_inputs/auto_settings.h"
 #include "support/analytic_scenes.h"
 #include "support/gl_test.h"
 
@@ -31,10 +32,10 @@ TEST(AccuracySuite, DefaultsHoldOnEveryCase) {
     }
     PipelineRun run(makeAnalyticScene(name), sets, 256, 192);
     const std::vector<double> exact = analyticImage(run);
-    const AutoSettings& chosen = run.frame->autoSettings;
+    const AutoSettings& chosen = lightAutoSettings(*run.frame);
     std::printf("%-15s auto: map %d, %d layers, %dx%d rays", name.c_str(), chosen.resolution,
                 chosen.layers, chosen.raysPerSide, chosen.raysPerSide);
-    for (const std::string& reason : chosen.reasons) std::printf("; %s", reason.c_str());
+    for (const std::string& reason : run.frame->autoReasons) std::printf("; %s", reason.c_str());
     std::printf("\n");
     for (const char* output :
          {"filter.visibility", "trace.visibility", "reference.visibility", "hard_shadow.visibility"}) {

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "cli/trace_command.h"
+#include "export/trace_json.h"
 #include "support/command.h"
 #include "support/temp_directory.h"
 

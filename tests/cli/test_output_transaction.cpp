@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
 #include "support/scene_writer.h"

@@ -1,6 +1,6 @@
 // Scripts, lessons and settings are inputs too (README "Scripts and lessons"): the output
 // rule (io/output_path.h: nothing emptied or written outside its folder, a lesson's folder
-// one transaction) and the reader rule (io/json_input.h: limits, FIFOs, messages), run as a
+// one transaction) and the reader rule (base/json_input.h: limits, FIFOs, messages), run as a
 // user runs them. Most cases are refused before the window opens, so they take no time.
 #include <gtest/gtest.h>
 

@@ -274,7 +274,7 @@ TEST(StageGraph, TheAutoHierarchyIsDecidedFromTheMapAndTheEye) {
   EXPECT_TRUE(small.pipeline->param("trace.hierarchy").automatic);
   EXPECT_EQ(small.pipeline->param("trace.hierarchy").asEnum(), "minmax");
   EXPECT_EQ(small.pipeline->revision(), revision);  // a decision is not a change of settings
-  const auto& reasons = small.frame->autoSettings.reasons;
+  const auto& reasons = small.frame->autoReasons;
   EXPECT_TRUE(std::any_of(reasons.begin(), reasons.end(), [](const std::string& reason) {
     return reason.rfind("hierarchy minmax", 0) == 0;
   }));

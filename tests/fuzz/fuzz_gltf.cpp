@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "scene/scene_gltf.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

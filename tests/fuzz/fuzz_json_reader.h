@@ -1,6 +1,6 @@
 // The shared part of the JSON readers' libFuzzer harnesses (fuzz_script.cpp, fuzz_lesson.cpp,
 // fuzz_settings.cpp): the reader every script, lesson and settings file goes through
-// (io/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary bytes, the
+// (base/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary bytes, the
 // document copied and compared as actions and settings are, then every value visited with the
 // harness's own check of each string. Every input must be read or refused with an InputError;
 // anything else (a crash, a stack overflow, a sanitizer report, a hang) is a finding.
@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <string>
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 
 namespace fuzz_json {
 

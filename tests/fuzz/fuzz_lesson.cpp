@@ -1,5 +1,5 @@
 // libFuzzer harness (make fuzz, docs/reliability.md): the reader every lesson file goes
-// through (io/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary
+// through (base/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary
 // bytes, then what the lesson reader does with any document before its own checks:
 // the texts for the terminal and the lesson panel (plainText) and the paths of its
 // figures through the output rule (checkScriptPath). Every input must be read or refused with an

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "scene/animation.h"
 #include "scene/scene_file.h"
 

@@ -1,5 +1,5 @@
 // libFuzzer harness (make fuzz, docs/reliability.md): the reader every script file goes
-// through (io/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary
+// through (base/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary
 // bytes, then what the script reader does with any document before its own checks:
 // one-key actions, their names and arguments into messages (cut), every string through the
 // output rule for paths (checkScriptPath). Every input must be read or refused with an

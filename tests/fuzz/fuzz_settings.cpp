@@ -1,5 +1,5 @@
 // libFuzzer harness (make fuzz, docs/reliability.md): the reader every settings file goes
-// through (io/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary
+// through (base/json_input.h: limits on size, depth, strings, repeated keys) on arbitrary
 // bytes, then what the settings reader does with any document before its own checks:
 // every key into a JSON pointer and every value into a message, as its checks
 // report them. Every input must be read or refused with an

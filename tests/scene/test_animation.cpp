@@ -12,7 +12,7 @@
 #include <iterator>
 #include <string>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "scene/animation.h"
 #include "scene/scene_builtin.h"
 #include "scene/scene_file.h"

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "scene/scene_gltf.h"
 #include "support/refusal.h"
 #include "support/temp_directory.h"

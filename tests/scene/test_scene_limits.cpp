@@ -9,7 +9,7 @@
 #include <chrono>
 #include <string>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "scene/mesh_builders.h"
 #include "scene/scene_builtin.h"
 #include "scene/scene_checks.h"
@@ -111,7 +111,7 @@ TEST(SceneLimits, HostileKeysAreShortPrintableAndDuplicatesRefused) {
   json scene = groundAndPlateScene();
   scene["light"][std::string(10'000'000, 'k')] = 1;
   const std::string huge = refusal(dir.write("huge.json", scene.dump()));
-  // The reader's limit on keys (io/json_input.h), the key cut in the pointer.
+  // The reader's limit on keys (base/json_input.h), the key cut in the pointer.
   EXPECT_TRUE(contains(huge, "/light/kkkk")) << huge.substr(0, 300);
   EXPECT_TRUE(contains(huge, "a key of 9 MiB (at most 4096 bytes)")) << huge.substr(0, 300);
   EXPECT_LT(huge.size(), 1000u) << "the 10 MB key was echoed";

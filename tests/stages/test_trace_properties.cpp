@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "monte_carlo/trace_steps.h"
 #include "scene/scene_builtin.h"
 #include "scene/scene_stress.h"
 #include "support/gl_test.h"
@@ -60,7 +61,7 @@ TEST_P(TraceRecords, DecisionsAddUpToTheVisibilityAndSteppingNeverDecreases) {
   EXPECT_EQ(pixelVisibility, first.read("trace.visibility")[size_t(159 - y) * 160 + x]);
 
   std::map<int, std::vector<gpu::TraceStep>> byRay;
-  for (const gpu::TraceStep& step : run.frame->traceSteps) byRay[step.header.x].push_back(step);
+  for (const gpu::TraceStep& step : recordedTraceSteps(*run.frame)) byRay[step.header.x].push_back(step);
   ASSERT_EQ(byRay.size(), 9u) << "every one of the 3 x 3 rays leaves a record";
   int unblocked = 0;
   for (const auto& [ray, steps] : byRay) {
@@ -106,8 +107,8 @@ TEST(TraceRecording, RecordingAPixelChangesNoOutputAndNoCount) {
     sets.push_back("trace.record_x=" + std::to_string(x));
     sets.push_back("trace.record_y=" + std::to_string(y));
     PipelineRun recorded(makeBuiltinScene("cube"), sets, 120, 120);
-    EXPECT_GT(recorded.frame->traceSteps.size(), 4u) << where;
-    EXPECT_TRUE(plain.frame->traceSteps.empty()) << where;
+    EXPECT_GT(recordedTraceSteps(*recorded.frame).size(), 4u) << where;
+    EXPECT_TRUE(recordedTraceSteps(*plain.frame).empty()) << where;
     EXPECT_EQ(recorded.read("trace.visibility"), plain.read("trace.visibility")) << where;
     EXPECT_EQ(recorded.read("trace.cost"), plain.read("trace.cost")) << where;
     for (const char* counter : {"trace.rays", "trace.raysSearched", "trace.fetches",
@@ -128,7 +129,7 @@ TEST(TraceRecording, APixelOffTheImageRecordsNothing) {
     offImage.push_back("trace.record_x=500");
     offImage.push_back("trace.record_y=20");
     PipelineRun recorded(makeBuiltinScene("cube"), offImage, 120, 120);
-    EXPECT_TRUE(recorded.frame->traceSteps.empty()) << classification;
+    EXPECT_TRUE(recordedTraceSteps(*recorded.frame).empty()) << classification;
     EXPECT_EQ(recorded.read("trace.visibility"), plain.read("trace.visibility")) << classification;
     EXPECT_EQ(recorded.frame->counters.at("trace.rays"), plain.frame->counters.at("trace.rays"))
         << classification;
@@ -207,14 +208,14 @@ TEST(TraceDemand, CostNotAskedForIsNotWrittenAndChangesNoResult) {
     const auto visibility = run.read("trace.visibility");
     const auto counters = traceCounters(*run.frame);
     ASSERT_GT(counters.at("trace.fetches"), 0.0);
-    const size_t steps = run.frame->traceSteps.size();
+    const size_t steps = recordedTraceSteps(*run.frame).size();
     ASSERT_TRUE(run.frame->has("trace.cost"));
     run.pipeline->run(*run.frame, {"composite.color"});
     EXPECT_FALSE(run.frame->has("trace.cost")) << record;
     EXPECT_EQ(run.read("composite.color"), composite) << record;
     EXPECT_EQ(run.read("trace.visibility"), visibility) << record;
     EXPECT_EQ(traceCounters(*run.frame), counters) << record;
-    EXPECT_EQ(run.frame->traceSteps.size(), steps) << record;
+    EXPECT_EQ(recordedTraceSteps(*run.frame).size(), steps) << record;
     run.pipeline->run(*run.frame, {"trace.cost"});
     EXPECT_TRUE(run.frame->has("trace.cost")) << record;
   }

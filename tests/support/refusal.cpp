@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 std::string refusalOf(const std::string& what, const std::function<void()>& load) {
   try {

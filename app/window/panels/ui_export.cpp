@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cli/export_command.h"
+#include "export/frame_export.h"
 #include "figures/annotate.h"
 #include "io/image_export.h"
 #include "window/panels/ui_export_annotation.h"

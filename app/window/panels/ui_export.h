@@ -1,6 +1,6 @@
 // Exports from the window (docs/design.md#exports): a view "as displayed" (PNG, the view's current
 // channels, range, colormap and overlay) or raw (EXR), and "export all stages", which writes
-// exactly what `penumbra export` writes for the same settings (app/cli/export_command.h).
+// exactly what `penumbra export` writes for the same settings (app/export/frame_export.h).
 // File names say the scene, the output, the eye size and the stage's non-default parameters.
 #pragma once
 #include <map>

@@ -129,10 +129,10 @@ void drawCounters(const UiState& state) {
 }
 
 // What the parameters set to `auto` chose for this scene and view, and why
-// (app/scene/auto_settings.h; docs/decisions/043-auto-map-resolution.md). Whether there are reasons
+// (stages/shared_inputs/auto_settings.h; docs/decisions/043-auto-map-resolution.md). Whether there are reasons
 // to show.
 bool hasAutoReasons(const UiState& state) {
-  return state.session.frame && !state.session.frame->autoSettings.reasons.empty();
+  return state.session.frame && !state.session.frame->autoReasons.empty();
 }
 // The choices `auto` made; a parameter the user (or a lesson) set by hand overrides its
 // choice, so the panel says which ones do not apply.
@@ -145,7 +145,7 @@ void drawAutoReasons(const UiState& state) {
   }
   if (!byHand.empty())
     ImGui::TextWrapped("Set by hand, so these choices do not apply to it: %s.", byHand.c_str());
-  for (const std::string& reason : state.session.frame->autoSettings.reasons)
+  for (const std::string& reason : state.session.frame->autoReasons)
     ImGui::TextWrapped("%s", reason.c_str());
 }
 

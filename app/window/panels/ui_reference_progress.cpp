@@ -12,7 +12,7 @@
 std::string compareWithReference(UiState& state) {
   const std::string comparison = comparisonOutput(state.session.pipeline);
   if (comparison.empty()) return "no comparison stage registered";
-  applyLiveTruthRule(state);  // while automatic: raster4d when interactive, else Embree
+  applyLiveTruthRule(state.liveTruth, state.session);  // while automatic: raster4d when interactive, else Embree
   const Stage* truth = groundTruthStage(state.session.pipeline);
   if (!truth) return "no ground truth chosen in " + groundTruthChoiceKey(state.session.pipeline);
   if (std::string problem = state.session.setParameter(truth->name() + ".enabled", "true"); !problem.empty())
@@ -29,7 +29,7 @@ void drawReferenceProgress(UiState& state) {
   if (ImGui::Button("compare with ground truth")) {
     const std::string problem = compareWithReference(state);
     state.status = problem.empty() ? "view B shows " + comparisonOutput(state.session.pipeline) +
-                                         " " + liveTruthLine(state)
+                                         " " + liveTruthLine(state.liveTruth, state.session.pipeline)
                                    : problem;
   }
   if (ImGui::IsItemHovered())
@@ -38,11 +38,11 @@ void drawReferenceProgress(UiState& state) {
   // The ground truth in use, and whether the window chose it.
   LiveTruth& truth = state.liveTruth;
   ImGui::PushTextWrapPos(0);
-  ImGui::TextDisabled("live error %s", liveTruthLine(state).c_str());
+  ImGui::TextDisabled("live error %s", liveTruthLine(state.liveTruth, state.session.pipeline).c_str());
   ImGui::PopTextWrapPos();
   if (ImGui::Checkbox("auto ground truth", &truth.automatic)) {
-    if (truth.automatic) applyLiveTruthRule(state);
-    else keepUserTruth(state);
+    if (truth.automatic) applyLiveTruthRule(state.liveTruth, state.session);
+    else keepUserTruth(state.liveTruth);
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(

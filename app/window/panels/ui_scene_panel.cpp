@@ -22,7 +22,7 @@ namespace {
 
 // 1. Scene: built-ins in a combo, or a typed path to a scene JSON / glTF.
 void drawScenePicker(UiState& state) {
-  static std::string path;
+  std::string& path = state.panelMemory.scenePath;
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.4f);  // room for "91216 tris"
   if (ImGui::BeginCombo("scene", state.session.scene.name.c_str())) {
     for (const std::string& name : builtinSceneNames())
@@ -142,7 +142,8 @@ void pathField(const char* id, std::string& path, const char* hint, std::initial
 
 // 4. Files and tools: settings, shaders, export all, how the pipeline re-runs.
 void drawTools(UiState& state) {
-  static std::string settingsPath = "penumbra_settings.json", exportDirectory;
+  std::string& settingsPath = state.panelMemory.settingsPath;
+  std::string& exportDirectory = state.panelMemory.exportDirectory;
   pathField("##settings", settingsPath, "", {"Save", "Load", "(?)"});
   if (ImGui::Button("Save")) {
     const std::string result = saveSettingsFile(state, settingsPath);

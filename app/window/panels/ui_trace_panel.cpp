@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "cli/trace_command.h"
+#include "export/trace_json.h"
 #include "window/ui_state.h"
 
 RayTraceSource& rayTraceSource() {

@@ -5,7 +5,7 @@
 // neighbourhood's [zNearMin, zFarMax] band, and the visited windows as rectangles (plus the
 // ray's projected path) over views of light-map size (the layers, the N-buffer levels).
 // The steps come from rayTraceSource(); app/window/views/ui_trace_source.cpp installs the one that reads
-// Frame::traceSteps (recorded for trace.record_x / record_y, which the window sets from the
+// the recorded steps (stages/monte_carlo/trace_steps.h) (recorded for trace.record_x / record_y, which the window sets from the
 // pick). Another search can install its own:
 //
 //     rayTraceSource() = [](const Frame& frame, glm::ivec2 pixel, int ray) {
@@ -48,7 +48,7 @@ struct RayTraceInfo {
 
 struct UiState;
 // The `penumbra trace` command of the picked pixel at the view's eye size, the loaded scene
-// and every parameter set away from its default (cli/trace_command.h); a note when the camera
+// and every parameter set away from its default (app/export/trace_json.h); a note when the camera
 // or the light moved since the scene loaded (the command uses the scene's).
 void describeTraceCommand(const UiState& state, RayTraceInfo& trace);
 

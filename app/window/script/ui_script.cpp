@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 
 #include "window/panels/ui_speed_error.h"
 #include "window/script/ui_lesson_export.h"
@@ -20,7 +20,7 @@ std::string describe(const ScriptAction& action) {
 
 }  // namespace
 
-// 1. Reading: the file under the limits every JSON input shares (io/json_input.h: a
+// 1. Reading: the file under the limits every JSON input shares (base/json_input.h: a
 // regular file, depth, size, string length, no repeated key), then every action checked
 // against its row of the table (ui_script_actions.h): a list of one-key objects with
 // arguments of the right shape and range. Messages: "<pointer>: script action N (name): ..."

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "io/headless_session.h"
-#include "io/json_input.h"
+#include "base/json_input.h"
 #include "io/output_path.h"
 
 #include "window/panels/ui_export.h"
@@ -114,7 +114,7 @@ const ScriptCheck kZoom = [](const json& v) -> std::string {
              ? ""
              : "expected a zoom factor in (0, 1e6], \"fit\" or \"1:1\"";
 };
-// A text the terminal and the lesson panel show (bounded by the reader: io/json_input.h).
+// A text the terminal and the lesson panel show (bounded by the reader: base/json_input.h).
 const ScriptCheck kText = kString;
 // A file or folder a script writes: checked again with the export folder when it runs.
 const ScriptCheck kOutput = [](const json& v) -> std::string {
@@ -185,7 +185,7 @@ std::string setParameters(UiState& state, const json& a) {
     // even when it equals the current one (before, "error.against": "reference" set before
     // the first run was overridden by the automatic raster4d on a cheap scene, and a
     // lesson's "against the Embree reference" numbers were against raster4d).
-    if (key == truthKey) keepUserTruth(state);
+    if (key == truthKey) keepUserTruth(state.liveTruth);
   }
   // A choice naming a disabled stage (composite.shadow = raster4d with raster4d off) is
   // warned about: a later action may still enable it, so it is not refused here.
@@ -454,7 +454,7 @@ std::vector<ScriptActionSpec> makeTable() {
        [](S& s, const json& a, C&) {
          if (!a.get<bool>()) return std::string();
          const std::string problem = compareWithReference(s);
-         if (problem.empty()) std::printf("penumbra: live error %s\n", liveTruthLine(s).c_str());
+         if (problem.empty()) std::printf("penumbra: live error %s\n", liveTruthLine(s.liveTruth, s.session.pipeline).c_str());
          return problem;
        },
        true},
@@ -469,7 +469,7 @@ std::vector<ScriptActionSpec> makeTable() {
        }},
       {"print_truth", kString,
        [=](S& s, const json& a, C&) {
-         std::printf("truth %s: %s\n", label(a).c_str(), liveTruthLine(s).c_str());
+         std::printf("truth %s: %s\n", label(a).c_str(), liveTruthLine(s.liveTruth, s.session.pipeline).c_str());
          std::fflush(stdout);
          return std::string();
        }},

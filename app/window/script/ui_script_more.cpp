@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "scene/scene_frame.h"
-#include "io/json_input.h"
+#include "base/json_input.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_script_actions.h"
 #include "window/ui_graph.h"
@@ -149,7 +149,7 @@ std::string showRay(UiState& state, const json& a) {
 // 5. Lessons: the title and each "say" for the lesson panel and stdout.
 std::string startLesson(UiState& state, const json& a, ScriptContext& context) {
   // Texts from the file reach the terminal and the lesson panel: no control characters
-  // (an ESC or BEL would act on the terminal), bounded (io/json_input.h).
+  // (an ESC or BEL would act on the terminal), bounded (base/json_input.h).
   state.lesson.title = context.lessonTitle = plainText(a.get<std::string>(), 200);
   state.lesson.steps = context.says;
   std::printf("lesson: %s\n", state.lesson.title.c_str());

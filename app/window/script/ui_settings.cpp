@@ -7,9 +7,9 @@
 #include <optional>
 #include <sstream>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "io/image_export.h"
-#include "io/json_input.h"
+#include "base/json_input.h"
 #include "io/output_path.h"
 #include "scene/scene_builtin.h"
 #include "window/script/ui_settings_views.h"
@@ -227,7 +227,7 @@ std::string saveSettingsFile(const UiState& state, const std::string& path) {
   }
 }
 
-// The reader rule every JSON input shares (io/json_input.h): a regular file (a FIFO is
+// The reader rule every JSON input shares (base/json_input.h): a regular file (a FIFO is
 // refused, never waited on), bounded depth, size and strings, no repeated key.
 std::string loadSettingsFile(UiState& state, const std::string& path, bool& ok) {
   ok = false;

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/input_error.h"
-#include "io/json_input.h"
+#include "base/input_error.h"
+#include "base/json_input.h"
 #include "window/ui_scale.h"
 #include "window/ui_state.h"
 

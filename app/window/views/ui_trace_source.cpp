@@ -1,9 +1,10 @@
 #include "window/views/ui_trace_source.h"
-#include "core/auto_params.h"
+#include "monte_carlo/trace_steps.h"
+#include "shared_inputs/auto_params.h"
 
 #include <cstdio>
 
-#include "cli/trace_command.h"
+#include "export/trace_json.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/panels/ui_trace_panel.h"
@@ -65,7 +66,7 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
   RayTraceInfo info;
   const Stage* recorder = recordingStage(frame.pipeline);
   if (!recorder) return info;
-  const int n = effectiveRays(recorder->param("rays"), frame.autoSettings);
+  const int n = effectiveRays(recorder->param("rays"), lightAutoSettings(frame));
   info.raysPerPixel = n * n;
   const int recordX = recorder->param("record_x").asInt();
   const int recordY = recorder->param("record_y").asInt();
@@ -73,7 +74,7 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
     info.result = "recording this pixel on the next run";
     return info;
   }
-  for (const gpu::TraceStep& step : frame.traceSteps)
+  for (const gpu::TraceStep& step : recordedTraceSteps(frame))
     if (step.header.x == ray) info.steps.push_back(convert(step));
   addLayerBands(frame, info.steps);
   const std::string visibility = frame.pipeline.methodOutput(recorder->name());

@@ -1,4 +1,4 @@
-#include "scene/auto_settings.h"
+#include "shared_inputs/auto_settings.h"
 
 #include <embree3/rtcore.h>
 

@@ -1,4 +1,4 @@
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 #include <cstdio>
 

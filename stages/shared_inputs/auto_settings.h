@@ -72,3 +72,8 @@ inline constexpr double kTexelLevelsPerPixelRay = 8.0;
 // Embree scene is rebuilt only when the scene's geometry changes.
 AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
                                 int eyeHeight);
+
+// What the `light` stage of `frame`'s pipeline chose in its last run (the defaults before it
+// ran, or where the pipeline has no light stage); stages/shared_inputs/light.cpp.
+struct Frame;
+const AutoSettings& lightAutoSettings(const Frame& frame);

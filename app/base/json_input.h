@@ -3,7 +3,7 @@
 // so nothing hangs), at most kMaxJsonBytes, nested at most kMaxJsonDepth deep, no string or
 // key longer than kMaxJsonString, no key given twice in an object. Problems are InputError
 // "<file>: <JSON pointer>: <problem>" (or "<file>: not valid JSON: <where, what>"), with
-// keys and values cut and control characters escaped (printable(), core/input_error.h).
+// keys and values cut and control characters escaped (printable(), base/input_error.h).
 // The limits are checked by a SAX pass before the document is built, so a hostile file
 // never reaches code that recurses over the document (dump, copy, comparison).
 #pragma once

@@ -1,10 +1,10 @@
-#include "gl/shader_dump.h"
+#include "io/shader_dump.h"
 
 #include <cstdio>
 #include <fstream>
 #include <system_error>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 #include "core/pipeline.h"
 #include "gl/shader_program.h"
 

@@ -1,4 +1,4 @@
-#include "io/json_input.h"
+#include "base/json_input.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 #include <set>
 #include <vector>
 
-#include "core/input_error.h"
+#include "base/input_error.h"
 
 using nlohmann::json;
 
