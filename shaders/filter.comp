@@ -10,10 +10,16 @@
 // alone let a plate's lit top 0.06 above the ground bleed into the dark strip under its edge
 // (the eye sees both at nearly the same distance); the tangent plane separates them.
 // Penumbra width: a screen-space blur wider than the penumbra smears a sharp
-// shadow (contact, a tiny light). Each shadowed pixel estimates its penumbra's width from
-// classify's bounds as PCSS does (Fernando 2005): w = light size x (d_r - d_b) / d_b, with d
-// the distance from the light plane of the receiver and of the nearest occluder its rays can
-// meet (zNearMin), in pixels at the receiver; a pair's Gaussian sigma is at most
+// shadow (contact, a tiny light, a small occluder). Each shadowed pixel bounds its
+// penumbra's width from classify's bounds with PCSS's formula (Fernando 2005): w = light
+// size x (d_r - d_b) / d_b, d the distance from the light plane of the receiver and of an
+// occluder, in pixels at the receiver. The kernel needs the narrowest penumbra an occluder
+// its rays can meet may cast there: the deepest one, the far layer's zFarMax (a box's
+// bottom, not its top), where it lies in front of the receiver; else (the receiver is one
+// of the casters, so its own far side is deeper) the nearest, zNearMin, as PCSS does. The
+// nearest alone made the cap several times too wide under a small box, where the ground's
+// penumbra beside it is cast by its bottom edges, and it never bound
+// (docs/decisions/096-filter-width-from-the-deepest-occluder.md). A pair's Gaussian sigma is at most
 // uPenumbraScale x the smaller width of the two pixels (lit pixels set no limit), and the
 // Gaussian is cut at 2 sigma (the radius, without that limit). A tap farther than the
 // penumbra is wide lies on its lit or umbra side: a penumbra narrower than a pixel (a contact
@@ -49,11 +55,12 @@ shared vec4 tapPosition[FILTER_TILE_SIZE * kRowTaps];  // xyz world position, w 
 shared vec4 tapNormal[FILTER_TILE_SIZE * kRowTaps];    // xyz normal, w penumbra width (pixels)
 shared vec2 tapValue[FILTER_TILE_SIZE * kRowTaps];     // x visibility, y 1: a receiver, 0: not
 
-// Estimated penumbra width at a pixel, in pixels (1e30: no limit: lit, or nothing known).
+// The narrowest penumbra width at a pixel, in pixels (1e30: no limit: lit, or nothing known).
 float penumbraPixels(ivec2 at, vec3 wsPosition) {
   vec4 zRange = texelFetch(zRangeImage, at, 0);
-  float occluder = zRange.x, receiver = zRange.w;
+  float occluder = zRange.x, deepest = zRange.z, receiver = zRange.w;
   if (!(occluder > 0.0 && occluder < receiver)) return 1e30;
+  if (deepest > occluder && deepest < receiver) occluder = deepest;  // the narrowest penumbra
   float lightSize = 2.0 * max(light.wsLightRight.w, light.wsLightUp.w);
   float wsWidth = lightSize * (receiver - occluder) / occluder;
   return wsWidth / (distance(wsPosition, frame.wsEyePosition.xyz) * uPixelAngle);

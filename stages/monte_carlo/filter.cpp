@@ -43,7 +43,7 @@ public:
         Input::texture("wsPosition", "Receivers: depth differences weight the taps.", GL_RGBA32F),
         Input::texture("wsNormal", "Receiver normals (normal_sensitive, plane_sigma).", GL_RGBA32F),
         Input::texture("zRange", "Occluder depth bounds per pixel (classify): the penumbra "
-                                 "width estimate of penumbra_scale.", GL_RGBA32F),
+                                 "width of penumbra_scale.", GL_RGBA32F),
         lightInput(),
     };
     outputs_ = {
@@ -72,8 +72,9 @@ public:
                     1.0, 0, 100),
         Param::real("penumbra_scale",
                     "Penumbra width: a pair of pixels is blurred with sigma at most penumbra_scale "
-                    "x the smaller of their estimated penumbra widths in pixels (PCSS's estimate "
-                    "from classify's nearest occluder); 0: off. Keeps a sharp contact or "
+                    "x the smaller of their penumbra widths in pixels (PCSS's formula from "
+                    "classify's deepest occluder in front of the receiver: the narrowest "
+                    "penumbra there); 0: off. Keeps a sharp contact, small-occluder or "
                     "tiny-light shadow sharp.",
                     0.5, 0, 100),
         Param::real("normal_power", "Exponent of max(n_c . n_s, 0) when normal_sensitive.", 8, 1,
