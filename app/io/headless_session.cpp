@@ -1,5 +1,7 @@
 #include "io/headless_session.h"
 
+#include "gl/renderer_calibration_measure.h"
+
 #include <cstdio>
 
 #include "scene/scene_builtin.h"
@@ -57,6 +59,8 @@ int HeadlessSession::open(const std::string& command, const std::string& sceneNa
   std::string error;
   context = GlContext::createHeadless(error);
   if (!context) return fail(1, error);
+  // `auto` per renderer: this context's calibration (gl/renderer_calibration.h).
+  if (int status = applyRendererCalibration(command); status != 0) return status;
   gpuScene = std::make_unique<GpuScene>(scene);
   frame = std::make_unique<Frame>(scene, *gpuScene, pipeline);
   frame->eyeWidth = width;

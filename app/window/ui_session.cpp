@@ -1,5 +1,7 @@
 #include "window/ui_session.h"
 
+#include "gl/renderer_calibration.h"
+
 #include "core/run_control.h"
 
 #include <algorithm>
@@ -93,6 +95,7 @@ RunKey Session::currentKey(std::vector<std::string> requested) const {
   key.eye = eyeFor(requestedEye);
   if (frame) key.frameKey = frame->frameKey;
   key.shaders = shaderReloads;
+  key.calibration = rendererCalibrationGeneration();
   std::sort(requested.begin(), requested.end());
   key.requested = std::move(requested);
   return key;

@@ -30,6 +30,7 @@ struct RunKey {
   glm::ivec2 eye{0, 0};
   std::uint32_t frameKey = 0;
   int shaders = 0;                     // shader reloads
+  int calibration = 0;                 // rendererCalibrationGeneration(): `auto` re-decides
   std::vector<std::string> requested;  // the outputs shown (Pipeline::run's `requested`), sorted
   bool operator==(const RunKey&) const = default;
 };
