@@ -11,6 +11,9 @@
 #   BEFORE=main BEFORE_BIN=/tmp/penumbra-main/build/penumbra bash scripts/check_outputs.sh
 # (build the before side from `git archive $BEFORE | tar -x -C /tmp/penumbra-main`).
 BEFORE=${BEFORE:-main} AFTER=${AFTER:-HEAD}
+# `auto` with the constants on both sides, not a measurement of this machine's load
+# (docs/decisions/071-auto-calibrated-per-renderer.md).
+export PENUMBRA_CALIBRATION=fallback
 P=$(pwd)/build/penumbra
 BEFORE_BIN=${BEFORE_BIN:-$P}
 TMP=$(mktemp -d)

@@ -16,7 +16,10 @@
 #include "shared/bias.glsl"
 #include "shared/hash.glsl"
 #include "shared/pcss_layout.h"
+#include "shared/ssm_layout.h"
 layout(std140, binding = PCSS_PARAMS_BINDING) uniform PcssBlock { PcssParams pcss; };
+// The near layer's depth bounds (depth_bounds.comp, run just before on the same layer).
+layout(std430, binding = DEPTH_BOUNDS_BINDING) readonly buffer Bounds { DepthBounds nearBounds; };
 layout(std430, binding = PCSS_TAPS_BINDING) readonly buffer Taps { vec2 taps[]; };
 layout(binding = PCSS_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;
 layout(binding = PCSS_WS_NORMAL_UNIT) uniform sampler2D wsNormalImage;
@@ -92,7 +95,12 @@ void main() {
     // Step 1: the search region, the cone cut at the nearest occluder. It holds the cuts at
     // every depth between that occluder and the receiver (they shrink towards the receiver's
     // own uv, which it contains), so no blocker lies outside it.
-    float zNearest = pcss.search.x;
+    // The nearest occluder's z (lsDepthToZ of the smallest depth; the far plane when the map
+    // holds no surface). `precise`: the same rounding wherever it is computed.
+    precise float zNearest = light.lightDepthRange.y;
+    if (nearBounds.count != 0u)
+      zNearest = light.lightDepthRange.x + uintBitsToFloat(nearBounds.minBits)
+                 * (light.lightDepthRange.y - light.lightDepthRange.x);
     vec3 search = zNearest < map.z ? coneCut(map.xy, map.z, zNearest) : vec3(map.xy, 0.0);
     searchHalf = search.z;
     // Step 2: average blocker depth over the taps (taps off the map find nothing).

@@ -17,6 +17,7 @@
 #include "base/input_error.h"
 #include "core/pipeline.h"
 #include "gl/gl_context.h"
+#include "io/renderer_calibration_measure.h"
 #include "io/output_path.h"
 #include "reference/reference_cache.h"
 #include "reference/reference_request.h"
@@ -96,6 +97,8 @@ int runBench(const BenchOptions& options) {
     std::fprintf(stderr, "penumbra bench: %s\n", error.c_str());
     return 1;
   }
+  // `auto` per renderer (gl/renderer_calibration.h).
+  if (int status = applyRendererCalibration("bench"); status != 0) return status;
 
   BenchRunInfo info;
   info.scene = scene.name;

@@ -9,6 +9,7 @@
 #include "bench/bench_measure.h"
 #include "base/input_error.h"
 #include "gl/gl_context.h"
+#include "io/renderer_calibration_measure.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
 #include "core/pipeline.h"
@@ -80,6 +81,8 @@ int runBenchStages(const BenchStagesOptions& options) {
     std::fprintf(stderr, "penumbra bench-stages: %s\n", error.c_str());
     return 1;
   }
+  // `auto` per renderer (gl/renderer_calibration.h).
+  if (int status = applyRendererCalibration("bench-stages"); status != 0) return status;
   // 2. Every row measured first (the columns are the stages any row's method needs).
   struct Row {
     std::string scene, label;

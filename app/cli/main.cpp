@@ -15,6 +15,7 @@
 #include "bench/bench_hierarchy.h"
 #include "bench/bench_compare.h"
 #include "bench/bench_stages.h"
+#include "cli/calibrate_command.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
 #include "cli/hash_stats_command.h"
@@ -256,6 +257,10 @@ int main(int argc, char** argv) {
   graphCommand->add_flag("--markdown", graphMarkdown, "print the README's stage table as Markdown "
                          "instead (scripts/stage_docs.sh)");
 
+  CalibrateOptions calibrating;
+  CLI::App* calibrateCommand = app.add_subcommand(
+      "calibrate", "measure (or show the cached) crossovers `auto` uses on this renderer");
+  calibrateCommand->add_flag("--refresh", calibrating.refresh, "measure again, rewrite the cache");
   CLI::App* shadersCommand = app.add_subcommand(
       "shaders", "write the final GLSL source of every program variant the pipeline can build "
                  "(one file per shader stage, and programs.txt), for checking with any compiler");
@@ -299,6 +304,7 @@ int main(int argc, char** argv) {
                   shaderDumpDirectory.c_str());
       return 0;
     }
+    if (*calibrateCommand) return runCalibrateCommand(calibrating);
     if (*exportCommand) return runExport(exporting);
     if (*traceCommand) return runTraceCommand(tracing);
     if (*benchStagesCommand) return runBenchStages(benching);

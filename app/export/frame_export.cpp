@@ -6,6 +6,7 @@
 
 #include "base/input_error.h"
 #include "figures/categories.h"
+#include "gl/renderer_calibration.h"
 #include "io/colormap.h"
 #include "io/headless_session.h"
 #include "io/image_export.h"
@@ -91,6 +92,14 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
   for (const auto& [name, value] : frame.counters) run["counters"][name] = value;
   // What the parameters left at `auto` chose this frame, and why (the inspector's list).
   run["auto_choices"] = frame.autoReasons;
+  // The crossovers `auto` weighed costs with (gl/renderer_calibration.h).
+  const RendererCalibration calibration = activeRendererCalibration();
+  run["calibration"] = {{"source", calibration.source},
+                        {"file", calibration.file},
+                        {"measured_at", calibration.measuredAt},
+                        {"texel_levels_per_pixel_ray", calibration.texelLevelsPerPixelRay},
+                        {"nbuffer_texel_levels_per_eye_pixel", calibration.nbufferTexelLevelsPerEyePixel},
+                        {"describe", calibration.describe()}};
   writeTextFile(directory / "run.json", run.dump(2) + "\n");
   written.push_back((transaction.target() / "run.json").string());
   transaction.commit();

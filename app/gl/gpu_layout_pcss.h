@@ -6,4 +6,4 @@ namespace gpu {
 #include "shared/pcss_layout.h"
 }  // namespace gpu
 
-static_assert(offsetof(gpu::PcssParams, search) == 16 && sizeof(gpu::PcssParams) == 32);
+static_assert(sizeof(gpu::PcssParams) == 16);

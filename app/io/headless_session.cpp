@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "base/input_error.h"
+#include "io/renderer_calibration_measure.h"
 
 #include "scene/scene_builtin.h"
 #include "scene/scene_checks.h"
@@ -71,6 +72,8 @@ int HeadlessSession::open(const std::string& command, const std::string& sceneNa
   std::string error;
   context = GlContext::createHeadless(error);
   if (!context) return fail(1, error);
+  // `auto` per renderer: this context's calibration (gl/renderer_calibration.h).
+  if (int status = applyRendererCalibration(command); status != 0) return status;
   gpuScene = std::make_unique<GpuScene>(scene);
   frame = std::make_unique<Frame>(scene, *gpuScene, pipeline);
   frame->eyeWidth = width;

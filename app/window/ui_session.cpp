@@ -1,5 +1,7 @@
 #include "window/ui_session.h"
 
+#include "gl/renderer_calibration.h"
+
 #include "core/run_control.h"
 
 #include <algorithm>
@@ -123,6 +125,7 @@ RunKey Session::currentKey(std::vector<std::string> requested) const {
   if (frame) key.frameKey = frame->frameKey;
   key.time = time;
   key.shaders = shaderReloads;
+  key.calibration = rendererCalibrationGeneration();
   std::sort(requested.begin(), requested.end());
   key.requested = std::move(requested);
   return key;

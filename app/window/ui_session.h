@@ -31,6 +31,7 @@ struct RunKey {
   std::uint32_t frameKey = 0;
   double time = 0;                     // seconds into the scene's animation
   int shaders = 0;                     // shader reloads
+  int calibration = 0;                 // rendererCalibrationGeneration(): `auto` re-decides
   std::vector<std::string> requested;  // the outputs shown (Pipeline::run's `requested`), sorted
   bool operator==(const RunKey&) const = default;
 };

@@ -15,6 +15,7 @@
 
 #include "gl/gl_context.h"
 #include "base/input_error.h"
+#include "io/renderer_calibration_measure.h"
 #include "io/headless_session.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
@@ -423,6 +424,9 @@ struct FrameLoop {
                       state.session.playing;
     if (busy) glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
+    // The inspector's "measure again": between frames, outside any run (its own pipeline).
+    if (takeRecalibrationRequest() && applyRendererCalibration("window", "refresh") != 0)
+      state.log.error("calibration", "measuring failed: the previous calibration stays");
     const auto woken = std::chrono::steady_clock::now();
     // 7b. Script actions, once the first run and the layout have settled.
     if (runner && framesRendered >= 2 && state.session.pipelineRuns > 0) {
@@ -573,6 +577,8 @@ int runWindow(const WindowOptions& options) {
                  error.c_str(), options.scene.c_str());
     return 1;
   }
+  // `auto` per renderer (gl/renderer_calibration.h), before the first run.
+  if (int status = applyRendererCalibration("window"); status != 0) return status;
   GLFWwindow* window = context->window();
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();

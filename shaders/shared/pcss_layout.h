@@ -1,6 +1,8 @@
 // PCSS (stages/baselines/pcss.cpp), read by C++ (app/gl/gpu_layout_pcss.h) and GLSL.
 #define PCSS_PARAMS_BINDING 4  // uniform: PcssParams
 #define PCSS_TAPS_BINDING 7    // storage: vec2 taps[]: blocker-search taps, then filter taps
+// storage DEPTH_BOUNDS_BINDING (shared/ssm_layout.h): the near layer's DepthBounds, whose
+// nearest occluder cuts the search cone (step 1): read on the GPU, never by the CPU
 // The G-buffer and the near layer are read with texelFetch; the outputs written as images.
 #define PCSS_NEAR_UNIT 2
 #define PCSS_WS_POSITION_UNIT 0
@@ -12,5 +14,4 @@
 
 struct PcssParams {
   ivec4 taps;    // x = blocker-search taps, y = filter taps, z = per-pixel shift (0/1), w unused
-  vec4 search;   // x = z of the nearest occluder in the map (the search plane), yzw unused
 };

@@ -10,8 +10,6 @@
 //    in the whole map (a reduction), so it holds every texel that can block; what the taps
 //    still miss (blockers thinner than their spacing) the searchRadius view shows, and the
 //    per-pixel shift turns into noise rather than bands.
-#include <cstring>
-
 #include "core/frame.h"
 #include "gl/gpu_layout_pcss.h"
 #include "gl/gpu_layout_ssm.h"
@@ -24,8 +22,7 @@
 // Bindings (shaders/shared/pcss_layout.h), within GL 4.5's minimums.
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, PCSS_PARAMS_BINDING},
                                  gpu::kUniformBindings));
-static_assert(gpu::distinctBelow({PCSS_TAPS_BINDING}, gpu::kStorageBindings) &&
-              gpu::distinctBelow({DEPTH_BOUNDS_BINDING}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({PCSS_TAPS_BINDING, DEPTH_BOUNDS_BINDING}, gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({PCSS_NEAR_UNIT, PCSS_WS_POSITION_UNIT, PCSS_WS_NORMAL_UNIT},
                                  gpu::kTextureUnits));
 static_assert(gpu::distinctBelow({PCSS_VISIBILITY_IMAGE, PCSS_SEARCH_RADIUS_IMAGE,
@@ -76,20 +73,16 @@ public:
   void run(Frame& frame) override {
     const GlTexture& nearLayer = frame.input(*this, "near");
     bindLightInput(frame, *this);
-    // The nearest occluder in the map: the plane that cuts the search cone (step 1).
-    gpu::DepthBounds bounds{0x7f7fffffu, 0u, 0u, 0u};
+    // The nearest occluder in the map: the plane that cuts the search cone (step 1). Its
+    // bounds stay on the GPU: pcss.comp reads them (no wait for the GPU inside the frame).
+    const gpu::DepthBounds bounds{0x7f7fffffu, 0u, 0u, 0u};
     boundsBuffer_.upload(&bounds, sizeof bounds);
     boundsProgram_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, boundsBuffer_.id());
     glBindTextureUnit(DEPTH_BOUNDS_MAP_UNIT, nearLayer.id());
     glUniform1f(DEPTH_BOUNDS_EMPTY_LOCATION, 1.0f);
     glDispatchCompute(GLuint((nearLayer.width() + 7) / 8), GLuint((nearLayer.height() + 7) / 8), 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(boundsBuffer_.id(), 0, sizeof bounds, &bounds);
-    float nearestLsDepth;
-    std::memcpy(&nearestLsDepth, &bounds.minBits, sizeof nearestLsDepth);
-    const float zNearest = bounds.count == 0 ? frame.light.zFar
-                                             : frame.light.zNear + nearestLsDepth * (frame.light.zFar - frame.light.zNear);
+    glMemoryBarrier(kBufferResults);
 
     const TapPattern pattern = param("pattern").asEnum() == "regular" ? TapPattern::Regular : TapPattern::Poisson;
     std::vector<glm::vec2> taps = squareTaps(pattern, param("search_taps").asInt());
@@ -100,13 +93,13 @@ public:
 
     gpu::PcssParams params{};
     params.taps = {searchCount, int(filter.size()), param("shift").asBool() ? 1 : 0, 0};
-    params.search = {zNearest, 0, 0, 0};
     paramBuffer_.upload(&params, sizeof params);
 
     ShaderProgram& program = programs_[hashSpecialization(frame.light.hashKind)];
     program.use();
     glBindBufferBase(GL_UNIFORM_BUFFER, PCSS_PARAMS_BINDING, paramBuffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, PCSS_TAPS_BINDING, tapBuffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, boundsBuffer_.id());
     bindTextureForReading(PCSS_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));
     bindTextureForReading(PCSS_WS_NORMAL_UNIT, frame.input(*this, "wsNormal"));
     glBindTextureUnit(PCSS_NEAR_UNIT, nearLayer.id());

@@ -8,6 +8,7 @@
 #include "monte_carlo/trace_steps.h"
 #include "shared_inputs/auto_params.h"
 #include "core/frame.h"
+#include "gl/renderer_calibration.h"
 #include "shared_inputs/light_input.h"
 #include "gl/gpu_layout_trace.h"
 
@@ -51,7 +52,8 @@ Input hierarchyInput() {
 // eye pixel and below, min-max faster from 19 up) and keeps the window's default view of
 // spheres (11.0) on the N-buffer, where the min-max mipmap measured 1.36-1.56x slower:
 // docs/decisions/027-auto-hierarchy-rule.md has the runs and the command.
-constexpr double kNBufferTexelLevelsPerEyePixel = 12.0;
+// The fallback: `auto` uses the crossover measured on its renderer (gl/renderer_calibration.h).
+constexpr double kNBufferTexelLevelsPerEyePixel = kFallbackNBufferTexelLevelsPerEyePixel;
 
 class TraceStage final : public Stage {
 public:
@@ -147,14 +149,17 @@ public:
     const double size = frame.light.mapSize;
     const double texelLevels = size * size * nbufferLevelCount(int(size), int(size));
     const double eyePixels = double(frame.eyeWidth) * frame.eyeHeight;
-    const bool minmax = texelLevels > kNBufferTexelLevelsPerEyePixel * eyePixels;
-    char reason[256];
+    const RendererCalibration calibration = activeRendererCalibration();
+    const double crossover = calibration.nbufferTexelLevelsPerEyePixel;
+    const bool minmax = texelLevels > crossover * eyePixels;
+    char reason[320];
     std::snprintf(reason, sizeof reason,
                   "hierarchy %s: the N-buffer of a %d^2 map is %.3g M texel-levels, %.1f per "
-                  "eye pixel (%dx%d), %s the %.0f above which the min-max mipmap is faster",
+                  "eye pixel (%dx%d), %s the %.3g above which the min-max mipmap is faster (%s)",
                   minmax ? "minmax" : "nbuffer", int(size), texelLevels / 1e6,
                   texelLevels / eyePixels, frame.eyeWidth, frame.eyeHeight,
-                  minmax ? "above" : "not above", kNBufferTexelLevelsPerEyePixel);
+                  minmax ? "above" : "not above", crossover,
+                  calibration.source == "fallback" ? "the constant" : "calibrated");
     return {minmax ? "minmax" : "nbuffer", reason};
   }
 

@@ -13,6 +13,7 @@
 // Lists of any length (bands of FB rows when they exceed max_entries): nothing is dropped.
 // Receivers and occluders follow the reference's conventions (origin offset along the
 // normal, receiver-only objects cast nothing, samples behind the tangent plane blocked).
+#include <cstring>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -143,6 +144,10 @@ public:
     glBindTextureUnit(1, frame.input(*this, "wsNormal").id());
     receiversProgram_.use();
     dispatchGrid(w, h);
+    // The three waits for the GPU inside this stage's run, each before work whose size or
+    // placement it sets on the CPU: here the plane P and the FB window (every later pass's
+    // parameters), after STEP 4 the list totals (the lists' buffer sizes, the bands) and the
+    // longest triangle list (STEP 5's chunks). The counts for people are read after the frame.
     state = readBuffer<gpu::Raster4dState>(state_, 1)[0];
     placePlane(params, state, fb);
     upload(params);
@@ -181,7 +186,6 @@ public:
       countInWindows(params, fb, windowRows,
                      [&] { dispatchLinear(std::uint64_t(occluders_.triangles())); });
       scan(triangleCounts_, triangleStarts_, params, cells);
-      state = readBuffer<gpu::Raster4dState>(state_, 1)[0];  // with the occluder counts
     }
     double step4 = millisecondsSince(start);
 
@@ -254,7 +258,7 @@ public:
     dispatchGrid(w, h);
     const double resolve = millisecondsSince(start);
     writeCellViews(frame, fb);
-    writeCounters(frame, state, bands, chunks, cells, {step2, step3, step4, step5, resolve});
+    writeCounters(frame, bands, chunks, cells, {step2, step3, step4, step5, resolve});
   }
 
 private:
@@ -373,25 +377,38 @@ private:
 
   // Tables 2, 3 and 7 of the paper: samples stored (redundancy), pairs considered, kept
   // after the early rejection, really occluding (relevant), milliseconds per step.
-  void writeCounters(Frame& frame, const gpu::Raster4dState& state,
-                     const std::vector<Raster4dBand>& bands, int chunks, size_t cells,
-                     const std::vector<double>& ms) const {
-    double considered = 0, kept = 0, occluding = 0, samplesStored = 0, triangleEntries = 0;
-    for (const glm::uvec4& pairs : readBuffer<glm::uvec4>(cellPairs_, cells))
-      considered += pairs.x, kept += pairs.y, occluding += pairs.z;
+  // The GPU's counts (the state's, the pairs per FB pixel) are read after the frame.
+  void writeCounters(Frame& frame, const std::vector<Raster4dBand>& bands, int chunks,
+                     size_t cells, const std::vector<double>& ms) const {
+    double samplesStored = 0, triangleEntries = 0;
     for (const Raster4dBand& band : bands)
       samplesStored += band.sampleEntries, triangleEntries += band.triangleEntries;
+    frame.readAfterFrame(state_, 0, sizeof(gpu::Raster4dState),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::Raster4dState state{};
+                           std::memcpy(&state, bytes.data(), sizeof state);
+                           auto& c = frame.counters;
+                           c["raster4d.receivers"] = state.counts.x;
+                           c["raster4d.behindLight"] = state.counts.y;
+                           c["raster4d.occludersBinned"] = state.counts.z;
+                           c["raster4d.occludersCrossingLight"] = state.counts.w;
+                         });
+    frame.readAfterFrame(cellPairs_, 0, GLsizeiptr(cells * sizeof(glm::uvec4)),
+                         [cells](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           double considered = 0, kept = 0, occluding = 0;
+                           for (size_t i = 0; i < cells; ++i) {
+                             glm::uvec4 pairs;
+                             std::memcpy(&pairs, bytes.data() + i * sizeof pairs, sizeof pairs);
+                             considered += pairs.x, kept += pairs.y, occluding += pairs.z;
+                           }
+                           frame.counters["raster4d.pairsConsidered"] = considered;
+                           frame.counters["raster4d.pairsKept"] = kept;
+                           frame.counters["raster4d.pairsOccluding"] = occluding;
+                         });
     auto& c = frame.counters;
-    c["raster4d.receivers"] = state.counts.x;
-    c["raster4d.behindLight"] = state.counts.y;
     c["raster4d.occluders"] = occluders_.triangles();
-    c["raster4d.occludersBinned"] = state.counts.z;
-    c["raster4d.occludersCrossingLight"] = state.counts.w;
     c["raster4d.samplesStored"] = samplesStored;
     c["raster4d.triangleEntries"] = triangleEntries;
-    c["raster4d.pairsConsidered"] = considered;
-    c["raster4d.pairsKept"] = kept;
-    c["raster4d.pairsOccluding"] = occluding;
     c["raster4d.bands"] = double(bands.size());
     c["raster4d.step5Chunks"] = chunks;
     const char* steps[] = {"step2Ms", "step3Ms", "step4Ms", "step5Ms", "resolveMs"};

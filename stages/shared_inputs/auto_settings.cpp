@@ -1,5 +1,7 @@
 #include "shared_inputs/auto_settings.h"
 
+#include "gl/renderer_calibration.h"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -195,7 +197,9 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   const double needed = resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.02));
   out.neededResolution = roundUp(needed);
   out.halfAreaResolution = roundUp(resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.5)));
-  const double traceWork = kTexelLevelsPerPixelRay * double(eyeWidth) * double(eyeHeight) *
+  // The crossover measured on this renderer (gl/renderer_calibration.h; kTexelLevelsPerPixelRay
+  // where it is not calibrated).
+  const double traceWork = activeRendererCalibration().texelLevelsPerPixelRay * double(eyeWidth) * double(eyeHeight) *
                            double(out.raysPerSide * out.raysPerSide);
   out.affordableResolution = 256;
   while (out.affordableResolution < 2048 && mapBuildWork(out.affordableResolution + 128) <= traceWork)
@@ -275,7 +279,8 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
   std::vector<float> key = {c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
                             c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDegrees, l.center.x,
                             l.center.y, l.center.z, l.forward.x, l.forward.y, l.forward.z,
-                            l.width, l.height, light.tanHalfFovX, float(eyeWidth), float(eyeHeight)};
+                            l.width, l.height, light.tanHalfFovX, float(eyeWidth), float(eyeHeight),
+                            float(activeRendererCalibration().texelLevelsPerPixelRay)};
   if (key != cache.key) {
     cache.settings = analyze(scene, *cache.rays, light, eyeWidth, eyeHeight);
     cache.key = key;

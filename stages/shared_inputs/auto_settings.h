@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/renderer_calibration.h"
 #include "scene/light_frame.h"
 #include "scene/scene.h"
 
@@ -64,7 +65,8 @@ inline constexpr int kMaxProbes = 20000;
 // `penumbra bench --scene spheres --width 128 --height 96` (quiet machine): light layers +
 // N-buffer 6.5e-6 ms per texel-level at map 512 (20.5 ms) and 2048 (383 ms); the trace
 // 5.5e-5 ms per eye pixel and ray at 2x2, 4.0e-5 at 4x4, 6.3e-5 at 5x5 (ratios 6-10).
-inline constexpr double kTexelLevelsPerPixelRay = 8.0;
+// The fallback: `auto` uses the value measured on its renderer (gl/renderer_calibration.h).
+inline constexpr double kTexelLevelsPerPixelRay = kFallbackTexelLevelsPerPixelRay;
 
 // The choice for this scene, light frame (Eq 3.1) and view (eye size in pixels). Cached:
 // the same geometry (a hash of its positions, indices and flags), light, camera and size

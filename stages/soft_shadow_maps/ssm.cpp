@@ -130,9 +130,16 @@ public:
     renderDepth(frame, receiverMap, GL_LESS, 1.0f, /*receivers=*/true);
     renderDepth(frame, occluderMap, GL_LESS, 1.0f, false);
     renderDepth(frame, occluderBack, GL_GREATER, 0.0f, false);
-    const gpu::DepthBounds occluders = depthBounds(occluderMap, 1.0f, occluderBounds_);
+    // The bounds stay on the GPU (the patch pass sizes its quads with the receivers'); the
+    // occluder texels (micro-patches) are counted after the frame.
+    depthBounds(occluderMap, 1.0f, occluderBounds_);
     depthBounds(receiverMap, 1.0f, receiverBounds_);
-    frame.counters["ssm.patches"] = occluders.count;
+    frame.readAfterFrame(occluderBounds_, 0, sizeof(gpu::DepthBounds),
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::DepthBounds read{};
+                           std::memcpy(&read, bytes.data(), sizeof read);
+                           frame.counters["ssm.patches"] = read.count;
+                         });
 
     gpu::SsmParams params{};
     const int h = frame.eyeHeight, pickY = param("pick_y").asInt();
@@ -250,17 +257,15 @@ private:
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
-  gpu::DepthBounds depthBounds(const GlTexture& map, float empty, GlBuffer& buffer) {
-    gpu::DepthBounds bounds{0x7f7fffffu, 0u, 0u, 0u};
+  void depthBounds(const GlTexture& map, float empty, GlBuffer& buffer) {
+    const gpu::DepthBounds bounds{0x7f7fffffu, 0u, 0u, 0u};
     buffer.upload(&bounds, sizeof bounds);
     boundsProgram_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, buffer.id());
     glBindTextureUnit(DEPTH_BOUNDS_MAP_UNIT, map.id());
     glUniform1f(DEPTH_BOUNDS_EMPTY_LOCATION, empty);
     glDispatchCompute(GLuint((map.width() + 7) / 8), GLuint((map.height() + 7) / 8), 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glGetNamedBufferSubData(buffer.id(), 0, sizeof bounds, &bounds);
-    return bounds;
+    glMemoryBarrier(kBufferResults);
   }
 
   // Colour attachment 0 (and 1) cleared to 0, summed into with additive blending.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "gl/renderer_calibration.h"
 #include "window/views/ui_categories.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
@@ -147,6 +148,13 @@ void drawAutoReasons(const UiState& state) {
     ImGui::TextWrapped("Set by hand, so these choices do not apply to it: %s.", byHand.c_str());
   for (const std::string& reason : state.session.frame->autoReasons)
     ImGui::TextWrapped("%s", reason.c_str());
+  // The crossovers these choices weighed costs with (gl/renderer_calibration.h).
+  ImGui::TextWrapped("Calibration: %s.", activeRendererCalibration().describe().c_str());
+  if (ImGui::SmallButton("Measure again")) requestRecalibration();
+  ImGui::SameLine();
+  helpMarker("Times a few frames of the spheres scene on this renderer (a few seconds) and "
+             "caches the crossovers `auto` uses; PENUMBRA_CALIBRATION=fallback uses the "
+             "constants instead.");
 }
 
 // 4. The ray trace hook: the picked eye pixel, ray i of n x n.
