@@ -45,8 +45,8 @@ if [ "${FUZZ_COVERAGE:-1}" != 0 ] && command -v llvm-profdata-14 >/dev/null &&
     llvm-profdata-14 merge -sparse "$build/coverage/$harness.profraw" -o "$build/coverage/$harness.profdata"
     echo "line coverage, corpus of fuzz_$harness:"
     llvm-cov-14 report "$build/coverage/fuzz_$harness" -instr-profile="$build/coverage/$harness.profdata" \
-      app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/gltf_declared.cpp app/scene/scene.cpp \
-      app/base/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/gltf_/p;/json_input/p;/output_path/p;/TOTAL/p'
+      app/scene/scene_file.cpp app/scene/scene_gltf.cpp app/scene/gltf_file_access.cpp app/scene/gltf_declared.cpp app/scene/gltf_animation.cpp app/scene/animation.cpp app/scene/scene.cpp \
+      app/base/json_input.cpp app/io/output_path.cpp | sed -n '1,2p;/scene_/p;/gltf_/p;/animation/p;/json_input/p;/output_path/p;/TOTAL/p'
   done
 fi
 exit $status

@@ -329,7 +329,7 @@ TEST(Animation, GltfBadSamplersRefused) {
 
 // The built-in animated scenes: valid at every quarter of their cycle, and moving.
 TEST(Animation, BuiltinAnimatedScenesMoveAndStayValid) {
-  for (const std::string& name : {"dragon_turntable", "light_sweep", "toys"}) {
+  for (const char* name : {"dragon_turntable", "light_sweep", "toys"}) {
     std::vector<std::string> warnings;
     const Scene scene = loadScene(name, warnings);
     ASSERT_FALSE(scene.animation.empty()) << name;
@@ -343,7 +343,9 @@ TEST(Animation, BuiltinAnimatedScenesMoveAndStayValid) {
       for (size_t i = 0; i < posed.objects.size(); ++i)
         moved = moved || posed.objects[i].mesh.positions != start.objects[i].mesh.positions;
       // A loop's end is its start again; ping-pong's end is the far end.
-      if (quarter < 4 || scene.animation.repeat != Repeat::Loop) EXPECT_TRUE(moved) << name << " at " << t;
+      if (quarter < 4 || scene.animation.repeat != Repeat::Loop) {
+        EXPECT_TRUE(moved) << name << " at " << t;
+      }
     }
   }
   // The light sweep widens the light from 0.4 to 2.4 over its 3 s and back.
