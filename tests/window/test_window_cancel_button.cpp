@@ -4,42 +4,19 @@
 // SSM tile, the window stays open with its settings, and Ctrl+Q closes it with status 0.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <cstdlib>
-#include <sys/wait.h>
 
 #include "support/command.h"
 #include "support/temp_directory.h"
-
-namespace {
-
-struct Shell {
-  int status = -1;
-  std::string output;
-};
-
-Shell shell(const std::string& command) {
-  Shell result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  while (size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-}  // namespace
 
 TEST(WindowCancelButton, AClickOnCancelStopsALongRunAndTheWindowStays) {
   if (std::system("command -v xdotool >/dev/null && command -v xvfb-run >/dev/null") != 0)
     GTEST_SKIP() << "xdotool or xvfb-run is not installed (scripts/setup.sh installs both)";
   const TempDirectory dir("penumbra_cancel_button");
-  const Shell result = shell("xvfb-run -a -s '-screen 0 1280x800x24' bash " PENUMBRA_SOURCE_DIR
+  const CommandResult result = runShell("xvfb-run -a -s '-screen 0 1280x800x24' bash " PENUMBRA_SOURCE_DIR
                              "/tests/window/real_input_cancel.sh " + penumbraBinary() + " " +
                              dir.path().string());
-  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_EQ(result.output.find("FAILED"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("overlay shown after"), std::string::npos) << result.output;
   // Stopped by the click, between two SSM tiles.

@@ -5,11 +5,8 @@
 // shows each output picked, ignores Esc and closes on Ctrl+Q with status 0.
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <regex>
-#include <sys/wait.h>
 
 #include "support/command.h"
 #include "support/gl_test.h"
@@ -17,22 +14,6 @@
 #include "window/ui_session.h"
 
 namespace {
-
-struct Shell {
-  int status = -1;
-  std::string output;
-};
-
-Shell shell(const std::string& command) {
-  Shell result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer;
-  while (size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
 
 int count(const std::string& text, const std::regex& pattern) {
   return int(std::distance(std::sregex_iterator(text.begin(), text.end(), pattern), std::sregex_iterator()));
@@ -51,10 +32,10 @@ TEST(WindowRealInput, OutputsPickedOverTheImageKeepTheWindowOpen) {
   // Each pair: an upstream output, then one the run for it did not compute.
   const std::string pairs =
       "gbuffer.albedo>composite.color light_layers.near>composite.color classify.mask>trace.visibility";
-  const Shell result = shell("xvfb-run -a -s '-screen 0 1280x800x24' bash " PENUMBRA_SOURCE_DIR
+  const CommandResult result = runShell("xvfb-run -a -s '-screen 0 1280x800x24' bash " PENUMBRA_SOURCE_DIR
                          "/tests/window/real_input_combo.sh " + penumbraBinary() + " " +
                          dir.path().string() + " '" + outputs + "' '" + pairs + "'");
-  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(result.exitCode, 0) << result.output;
   EXPECT_EQ(result.output.find("FAILED"), std::string::npos) << result.output;
   // The downstream picks lay over the image, as in the report, and each was shown.
   EXPECT_EQ(count(result.output, std::regex("shown composite\\.color at [0-9]+ [0-9]+ \\(over the image: yes\\)")), 2)
