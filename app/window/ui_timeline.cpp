@@ -20,16 +20,23 @@ std::string advanceTimeline(Session& session, TimelineClock& clock, double now) 
   return problem;
 }
 
-std::string drawTimeline(Session& session, float uiScale) {
+float timelineHeight(const Session& session) {
+  if (!session.animated()) return 0;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return 2 * style.WindowPadding.y + ImGui::GetFrameHeightWithSpacing() +
+         ImGui::GetTextLineHeightWithSpacing();
+}
+
+std::string drawTimeline(Session& session, float uiScale, float x, float y, float width, float height) {
   if (!session.animated()) return "";
   Animation& animation = session.rest.animation;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float width = 560 * uiScale;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f - width * 0.5f, display.y - 90 * uiScale),
-                          ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos({x, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({width, height}, ImGuiCond_Always);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar;
   std::string problem;
-  if (ImGui::Begin("Timeline", nullptr, ImGuiWindowFlags_NoCollapse)) {
+  if (ImGui::Begin("###timeline", nullptr, flags)) {
     double next = session.time;
     if (ImGui::Button(session.playing ? "Pause" : "Play")) session.playing = !session.playing;
     ImGui::SameLine();

@@ -1,5 +1,6 @@
 // The timeline of an animated scene (scene/animation.h): play / pause, step, scrub, speed
-// and the repeat mode, in a small window shown only while the scene is animated. The main
+// and the repeat mode, in a strip below the views (never over them) shown only while the
+// scene is animated. The main
 // loop advances the time while playing; every stage then runs on the new pose
 // (Session::setTime).
 #pragma once
@@ -19,5 +20,9 @@ std::string advanceTimeline(Session& session, TimelineClock& clock, double nowSe
 // One frame step: 1/24 s, the frame rate of exported animations.
 inline constexpr double kTimelineStep = 1.0 / 24;
 
-// Draws the timeline window (nothing for a static scene). Returns "" or a refused pose.
-std::string drawTimeline(Session& session, float uiScale);
+// The height the timeline strip takes below the views: 0 for a static scene.
+float timelineHeight(const Session& session);
+
+// Draws the timeline strip at (x, y), width x height (nothing for a static scene).
+// Returns "" or a refused pose.
+std::string drawTimeline(Session& session, float uiScale, float x, float y, float width, float height);

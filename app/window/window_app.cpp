@@ -60,12 +60,13 @@ constexpr float kMinViewsShare = 0.5f;
 struct Layout {
   float width, height, left, right, status, lesson;
   bool stacked;  // one side column (left) with every side tab; right == 0
+  float timeline = 0;  // an animated scene's timeline strip, between the views and the lesson
   float centerWidth() const { return width - left - right; }
   float panelHeight() const { return height - status; }
-  float viewsHeight() const { return panelHeight() - lesson; }
+  float viewsHeight() const { return panelHeight() - lesson - timeline; }
 };
 
-Layout layoutFor(float width, float height, float uiScale, float lessonHeight) {
+Layout layoutFor(float width, float height, float uiScale, float lessonHeight, float timelineHeight) {
   Layout layout{width, height, std::clamp(width * 0.27f, 220.0f * uiScale, 360.0f * uiScale),
                 std::clamp(width * 0.23f, 220.0f * uiScale, 330.0f * uiScale), ImGui::GetFrameHeight() + 6,
                 0, false};
@@ -75,6 +76,7 @@ Layout layoutFor(float width, float height, float uiScale, float lessonHeight) {
     layout.right = 0;
   }
   layout.lesson = std::min(lessonHeight, 0.35f * layout.panelHeight());
+  layout.timeline = std::min(timelineHeight, 0.15f * layout.panelHeight());
   return layout;
 }
 
@@ -296,7 +298,14 @@ bool drawUi(UiState& state, const Layout& layout) {
   drawSidePanel(state, layout);
 
   drawStatusLine(state, layout);
-  if (layout.lesson > 0) drawLessonWindow(state, layout.left, layout.viewsHeight(), layout.centerWidth(), layout.lesson);
+  if (layout.timeline > 0)
+    if (std::string problem = drawTimeline(state.session, state.uiScale, layout.left, layout.viewsHeight(),
+                                           layout.centerWidth(), layout.timeline);
+        !problem.empty())
+      state.status = problem;
+  if (layout.lesson > 0)
+    drawLessonWindow(state, layout.left, layout.viewsHeight() + layout.timeline, layout.centerWidth(),
+                     layout.lesson);
   stepSpeedErrorPanel();
   drawHelpWindow(state);
   drawShaderLogWindow(state);
@@ -473,12 +482,10 @@ struct FrameLoop {
     const RunKey before = state.currentKey();
     state.shownContent = 0;
     const bool moving = drawUi(state, layoutFor(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y, state.uiScale,
-                                                 lessonPanelHeight(state)));
+                                                 lessonPanelHeight(state), timelineHeight(state.session)));
     // A slider dragged since its press counts as moving too: preview until released.
     if (!ImGui::IsAnyItemActive()) draggingSlider = false;
     else if (state.currentKey() != before) draggingSlider = true;
-    if (std::string problem = drawTimeline(state.session, state.uiScale); !problem.empty())
-      state.status = problem;
     state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera);
     ImGui::Render();
     ++framesRendered;

@@ -43,7 +43,7 @@ void drawLessonWindow(UiState& state, float x, float y, float width, float heigh
       ImGui::PopTextWrapPos();
     } else if (lesson.finished) {
       ImGui::PushTextWrapPos(0);
-      ImGui::TextDisabled("End of the lesson. The window stays open; Esc quits.");
+      ImGui::TextDisabled("End of the lesson. The window stays open; Ctrl+Q quits.");
       ImGui::PopTextWrapPos();
     } else {
       ImGui::NewLine();
