@@ -128,6 +128,8 @@ std::string number(const UiState& state, const ScriptContext& context, const std
     if (!cropNumber(state, context.crop, name, value, problem)) return "";
     return value == std::floor(value) ? formatted(value, "%.0f") : formatted(value, "%.4g");
   }
+  if (name == "triangles" && state.session.frame)  // the loaded scene's, every object's
+    return formatted(double(state.session.frame->scene.triangleCount()), "%.0f");
   if (state.session.frame) {
     const auto& counters = state.session.frame->counters;
     if (const auto counter = counters.find(name); counter != counters.end())
@@ -136,7 +138,7 @@ std::string number(const UiState& state, const ScriptContext& context, const std
                  : formatted(counter->second, "%.4g");
   }
   problem = "{" + name + "}: no such number in this run (ms, ms:stage, crop.*, pixels:, share:, min:, "
-            "max:, p99:, pick:, pct:a/b, ratio:a/b, a kept name, or a counter such as error.rmse)";
+            "max:, p99:, pick:, pct:a/b, ratio:a/b, triangles, a kept name, or a counter such as error.rmse)";
   return "";
 }
 
