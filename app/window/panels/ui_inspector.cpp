@@ -214,8 +214,8 @@ void drawRayTrace(UiState& state) {
   }
   // A larger, movable window for the step table.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos({display.x * 0.28f, display.y * 0.5f}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({display.x * 0.4f, display.y * 0.46f}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos({display.x * 0.28f, display.y * 0.3f}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({display.x * 0.4f, display.y * 0.66f}, ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Ray trace of the picked pixel", &state.views.traceWindow)) {
     ImGui::SetNextItemWidth(uiPixels(200));
     ImGui::SliderInt("ray##window", &state.views.selectedRay, 0, std::max(trace.raysPerPixel - 1, 0));
