@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "scene/mesh_normals.h"
 #include "scene/scene.h"
 
 namespace {
@@ -128,21 +129,6 @@ double Animation::cycleTime(double t) const {
 }
 
 namespace {
-
-// Positions by m, normals by its inverse transpose; a mirroring m flips the winding back.
-void transformMesh(Mesh& mesh, const glm::dmat4& m) {
-  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
-  for (glm::vec3& p : mesh.positions) p = glm::vec3(m * glm::dvec4(glm::dvec3(p), 1.0));
-  for (glm::vec3& n : mesh.normals) {
-    const glm::dvec3 w = normalMatrix * glm::dvec3(n);
-    const double length = glm::length(w);
-    // A singular pose (scaled to zero) has no surface to shade; keep the normal as it was.
-    if (length > 0 && std::isfinite(length)) n = glm::vec3(w / length);
-  }
-  if (glm::determinant(glm::dmat3(m)) < 0)
-    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-      std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
-}
 
 bool isIdentity(const glm::dmat4& m) { return m == glm::dmat4(1); }
 

@@ -8,6 +8,7 @@
 #include "base/input_error.h"
 #include "base/json_input.h"
 #include "scene/gltf_file_access.h"
+#include "scene/mesh_normals.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -368,47 +369,6 @@ glm::vec3 Importer::materialColor(int material, const std::string& where) {
     return kDefaultColor;
   }
   return glm::clamp(glm::vec3(f[0], f[1], f[2]), 0.0f, 1.0f);
-}
-
-// Unnormalized face normals, so that summing them weights by area.
-glm::dvec3 faceNormal(const Mesh& mesh, size_t triangle) {
-  const glm::dvec3 a = mesh.positions[mesh.indices[3 * triangle]];
-  const glm::dvec3 b = mesh.positions[mesh.indices[3 * triangle + 1]];
-  const glm::dvec3 c = mesh.positions[mesh.indices[3 * triangle + 2]];
-  return glm::cross(b - a, c - a);
-}
-
-glm::vec3 unitOr(const glm::dvec3& n, const glm::vec3& fallback) {
-  const double length = glm::length(n);
-  return length > 0 && std::isfinite(length) ? glm::vec3(n / length) : fallback;
-}
-
-// The spec asks for flat normals when a primitive has none: one vertex per corner.
-void makeFlatNormals(Mesh& mesh) {
-  Mesh flat;
-  flat.positions.reserve(mesh.indices.size());
-  flat.normals.reserve(mesh.indices.size());
-  flat.indices.reserve(mesh.indices.size());
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const glm::vec3 n = unitOr(faceNormal(mesh, t), {0, 1, 0});  // degenerate: any unit
-    for (int k = 0; k < 3; ++k) {
-      flat.indices.push_back(static_cast<std::uint32_t>(flat.positions.size()));
-      flat.positions.push_back(mesh.positions[mesh.indices[3 * t + k]]);
-      flat.normals.push_back(n);
-    }
-  }
-  mesh = std::move(flat);
-}
-
-// Replaces each flagged normal by the area-weighted normal of the faces around it.
-void repairNormals(Mesh& mesh, const std::vector<char>& bad) {
-  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0));
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-    const glm::dvec3 n = faceNormal(mesh, t);
-    for (int k = 0; k < 3; ++k) sum[mesh.indices[3 * t + k]] += n;
-  }
-  for (size_t i = 0; i < mesh.normals.size(); ++i)
-    if (bad[i]) mesh.normals[i] = unitOr(sum[i], {0, 1, 0});
 }
 
 bool Importer::addPrimitive(const tinygltf::Mesh& mesh, size_t primitiveIndex,

@@ -38,6 +38,7 @@
 #include "window/panels/ui_speed_error.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
+#include "window/ui_layout.h"
 #include "window/ui_timeline.h"
 #include "window/views/ui_texture_view.h"
 #include "window/views/ui_ssm_pick.h"
@@ -50,35 +51,7 @@ constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
     ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-// 1. Fixed layout: panels scale with the window, within limits, and the views keep at
-//    least half the window's width (kMinViewsShare). When the two side panels, each at least
-//    220 px x the UI scale, would leave the views less, they collapse into one column on the
-//    left whose tabs hold the pipeline, the inspector and the chart. A playing lesson's panel
-//    sits below the views (its height taken from theirs), never over them.
-constexpr float kMinViewsShare = 0.5f;
-
-struct Layout {
-  float width, height, left, right, status, lesson;
-  bool stacked;  // one side column (left) with every side tab; right == 0
-  float timeline = 0;  // an animated scene's timeline strip, between the views and the lesson
-  float centerWidth() const { return width - left - right; }
-  float panelHeight() const { return height - status; }
-  float viewsHeight() const { return panelHeight() - lesson - timeline; }
-};
-
-Layout layoutFor(float width, float height, float uiScale, float lessonHeight, float timelineHeight) {
-  Layout layout{width, height, std::clamp(width * 0.27f, 220.0f * uiScale, 360.0f * uiScale),
-                std::clamp(width * 0.23f, 220.0f * uiScale, 330.0f * uiScale), ImGui::GetFrameHeight() + 6,
-                0, false};
-  // One pixel of slack: at the panels' own shares (0.27 + 0.23) the views get exactly half.
-  if (layout.centerWidth() < kMinViewsShare * width - 1) {
-    layout.stacked = true;
-    layout.right = 0;
-  }
-  layout.lesson = std::min(lessonHeight, 0.35f * layout.panelHeight());
-  layout.timeline = std::min(timelineHeight, 0.15f * layout.panelHeight());
-  return layout;
-}
+// 1. Fixed layout: window/ui_layout.h (panels, views, the timeline and lesson strips).
 
 void saveScreenshot(GLFWwindow* window, const std::string& path) {
   int width = 0, height = 0;

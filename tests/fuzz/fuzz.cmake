@@ -13,7 +13,8 @@ endif()
 add_library(penumbra_fuzz_scene STATIC
   app/base/input_error.cpp app/scene/scene.cpp app/scene/scene_file.cpp app/scene/scene_gltf.cpp
   app/scene/gltf_file_access.cpp app/scene/gltf_declared.cpp app/base/json_input.cpp app/io/output_path.cpp
-  app/scene/mesh_builders.cpp app/scene/animation.cpp app/scene/gltf_animation.cpp)
+  app/scene/mesh_builders.cpp app/scene/animation.cpp app/scene/gltf_animation.cpp
+  app/scene/mesh_normals.cpp)
 target_include_directories(penumbra_fuzz_scene PUBLIC app)
 target_compile_definitions(penumbra_fuzz_scene PUBLIC GLM_FORCE_RADIANS)
 target_compile_options(penumbra_fuzz_scene PUBLIC ${FUZZ_COMPILE})
