@@ -63,6 +63,7 @@ TemporalSummary summarizeTemporal(const std::vector<TemporalChange>& changes) {
     summary.meanReferenceChange += pair.referenceChange;
     summary.meanMethodChange += pair.methodChange;
     summary.worstChange = std::max(summary.worstChange, pair.change);
+    summary.worstPixel = std::max(summary.worstPixel, pair.maxChange);
   }
   if (summary.pairs) {
     summary.meanChange /= summary.pairs;

@@ -41,12 +41,13 @@ std::vector<std::uint8_t> bothCounted(const std::vector<std::uint8_t>& a,
                                       const std::vector<std::uint8_t>& b, std::size_t pixels);
 
 // Over a run of frames (one TemporalChange per consecutive pair; undefined pairs skipped):
-//   meanChange, worstChange: mean and largest `change`;
+//   meanChange, worstChange: mean and largest `change`; worstPixel: largest `maxChange` (one
+//   pixel's jump: a texel popping shows here long before it moves the mean);
 //   meanReferenceChange: mean `referenceChange` over the same pairs;
 //   ratio = meanChange / meanReferenceChange, defined only when that is > 0.
 struct TemporalSummary {
   int pairs = 0;  // pairs with a defined change
-  double meanChange = 0, worstChange = 0, meanReferenceChange = 0, meanMethodChange = 0;
+  double meanChange = 0, worstChange = 0, worstPixel = 0, meanReferenceChange = 0, meanMethodChange = 0;
   bool hasRatio() const { return pairs > 0 && meanReferenceChange > 0; }
   double ratio() const { return hasRatio() ? meanChange / meanReferenceChange : 0; }
 };

@@ -50,22 +50,25 @@ TEST(BenchTemporal, StaticSceneZeroForFixedKeyPositiveForMonteCarloPerFrame) {
       "--side trace --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
   const std::string table = readText(out);
-  // Columns: side, key, map, pairs, mean change, worst change, reference change, ratio, error.
+  // Columns: side, key, map, pairs, mean change, worst change, worst pixel change, reference
+  // change, ratio, error.
   const auto hardFixed = row(table, "hard_shadow, key fixed", "fixed");
-  ASSERT_EQ(hardFixed.size(), 9u) << table;
+  ASSERT_EQ(hardFixed.size(), 10u) << table;
   EXPECT_EQ(hardFixed[2], "256");
   EXPECT_EQ(hardFixed[3], "3") << "4 frames: 3 pairs";
   EXPECT_EQ(hardFixed[4], "0.000000");
   EXPECT_EQ(hardFixed[5], "0.000000");
-  EXPECT_EQ(hardFixed[6], "0.000000") << "a static scene: the reference never changes";
-  EXPECT_EQ(hardFixed[7], "-") << "no ratio without the reference's change";
+  EXPECT_EQ(hardFixed[6], "0.0000");
+  EXPECT_EQ(hardFixed[7], "0.000000") << "a static scene: the reference never changes";
+  EXPECT_EQ(hardFixed[8], "-") << "no ratio without the reference's change";
   const auto traceFixed = row(table, "trace, key fixed", "fixed");
-  ASSERT_EQ(traceFixed.size(), 9u) << table;
+  ASSERT_EQ(traceFixed.size(), 10u) << table;
   EXPECT_EQ(traceFixed[4], "0.000000") << "the same key draws the same light samples";
   const auto tracePerFrame = row(table, "trace, key per frame", "per frame");
-  ASSERT_EQ(tracePerFrame.size(), 9u) << table;
+  ASSERT_EQ(tracePerFrame.size(), 10u) << table;
   EXPECT_GT(std::stod(tracePerFrame[4]), 0.0) << table;
   EXPECT_GT(std::stod(tracePerFrame[5]), 0.0) << table;
+  EXPECT_GT(std::stod(tracePerFrame[6]), 1.0 / 64) << "one of at most 8 x 8 rays changing moves a pixel by 1/64";
   // The CSV: a header and 3 pairs for each of the 4 rows.
   const std::string csv = readText(scratch.path() / "temporal.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 4 * 3) << csv;
@@ -82,9 +85,9 @@ TEST(BenchTemporal, MovingOccluderChangesTheReferenceAndDefinesTheRatio) {
       "--reference-samples 4 --side 'coarse=ssm:ssm.resolution=128' --out " + out.string());
   ASSERT_EQ(result.exitCode, 0) << result.output;
   const auto cells = row(readText(out), "coarse", "fixed");
-  ASSERT_EQ(cells.size(), 9u) << readText(out);
-  EXPECT_GT(std::stod(cells[6]), 0.0) << "the reference's shadow moved";
-  EXPECT_NE(cells[7], "-");
+  ASSERT_EQ(cells.size(), 10u) << readText(out);
+  EXPECT_GT(std::stod(cells[7]), 0.0) << "the reference's shadow moved";
+  EXPECT_NE(cells[8], "-");
   unsetenv("PENUMBRA_CACHE");
 }
 

@@ -84,12 +84,14 @@ TEST(Temporal, SizesMustAgree) {
 
 TEST(Temporal, SummaryOverPairs) {
   TemporalChange a, b, undefined;
-  a.change = 0.5 / 3, a.referenceChange = 0.25, a.stable = 3, a.methodChange = 0.375;
-  b.change = 0.5, b.referenceChange = 0, b.stable = 4, b.methodChange = 0.5;
+  a.change = 0.5 / 3, a.referenceChange = 0.25, a.stable = 3, a.methodChange = 0.375, a.maxChange = 0.5;
+  b.change = 0.5, b.referenceChange = 0, b.stable = 4, b.methodChange = 0.5, b.maxChange = 0.75;
+  undefined.maxChange = 1;  // no stable pixel: not counted
   const TemporalSummary s = summarizeTemporal({a, b, undefined});
   EXPECT_EQ(s.pairs, 2);
   EXPECT_DOUBLE_EQ(s.meanChange, (0.5 / 3 + 0.5) / 2);
   EXPECT_DOUBLE_EQ(s.worstChange, 0.5);
+  EXPECT_DOUBLE_EQ(s.worstPixel, 0.75);
   EXPECT_DOUBLE_EQ(s.meanReferenceChange, 0.125);
   ASSERT_TRUE(s.hasRatio());
   EXPECT_DOUBLE_EQ(s.ratio(), ((0.5 / 3 + 0.5) / 2) / 0.125);
@@ -125,7 +127,7 @@ FrameArrays runFrame(PipelineRun& run, std::uint32_t key) {
 
 TEST(Temporal, ZeroForEveryMethodWithAFixedKeyPositiveForMonteCarloPerFrameKey) {
   PipelineRun run(makeBuiltinScene("cube"),
-                  {"raster4d.enabled=true", "raster4d.samples=4", "reference.enabled=true",
+                  {"raster4d.enabled=true", "raster4d.samples=8", "reference.enabled=true",
                    "reference.cache=false", "reference.samples=4"},
                   64, 48);
   const FrameArrays first = runFrame(run, 0), again = runFrame(run, 0), nextKey = runFrame(run, 1);

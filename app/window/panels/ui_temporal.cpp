@@ -186,8 +186,8 @@ void drawTemporalPanel(UiState& state) {
     ImGui::TextWrapped("No ground truth this run (show the error view, with the reference or "
                        "raster4d): every counted pixel counts as stable, so real motion counts too.");
   else
-    ImGui::Text("Ground truth: %s; stable pixels %zu of %zu", panel.truthOutput.c_str(), panel.last.stable,
-                panel.last.counted);
+    ImGui::TextWrapped("Ground truth: %s; stable pixels %zu of %zu counted", panel.truthOutput.c_str(),
+                       panel.last.stable, panel.last.counted);
 
   // The plot: one line per method, the ground truth's own change in grey.
   float top = 1e-4f;
@@ -234,19 +234,17 @@ void drawTemporalPanel(UiState& state) {
     if (!series.change.empty()) mean /= double(series.change.size());
     const ImU32 color = colors[c++ % 6];
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(color), "%s", method.c_str());
-    ImGui::SameLine();
-    if (series.change.empty()) ImGui::TextUnformatted("no pair yet");
-    else ImGui::Text("last %.5f  mean %.5f  worst %.5f", double(series.change.back()), mean, worst);
+    if (series.change.empty()) ImGui::TextUnformatted("  no pair yet");
+    else ImGui::TextWrapped("  last %.5f  mean %.5f  worst %.5f", double(series.change.back()), mean, worst);
   }
   if (!panel.truthChange.empty()) {
     double mean = 0;
     for (float v : panel.truthChange) mean += v;
     mean /= double(panel.truthChange.size());
     ImGui::TextColored({0.6f, 0.6f, 0.6f, 1}, "truth's own change");
-    ImGui::SameLine();
-    ImGui::Text("last %.5f  mean %.5f", double(panel.truthChange.back()), mean);
     helpMarker("The ground truth's mean |change| over every counted pixel: what really moved. "
                "The ratio of a method's change to it is in penumbra bench-temporal's table.");
+    ImGui::TextWrapped("  last %.5f  mean %.5f", double(panel.truthChange.back()), mean);
   }
   if (panel.series.empty()) ImGui::TextWrapped("No shadow method shown: show a method's visibility "
                                                "or the final image in a view.");
