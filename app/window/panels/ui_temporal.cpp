@@ -27,6 +27,7 @@ struct PanelState {
   int capacity = 120;            // pairs kept in the plot
   bool perFrameKey = false;      // move the frame key after every run (Monte Carlo swims)
   int lastRuns = -1, sceneLoads = -1;
+  int keyMovedAfterRun = -1;     // the run after which the frame key was last moved
   int width = 0, height = 0;     // eye size of the last recorded run
   bool previousHadTruth = false;
   std::vector<float> previousTruth;
@@ -103,7 +104,15 @@ void stepTemporalPanel(UiState& state) {
     panel.sceneLoads = session.sceneLoads;
     clearPoints();
   }
-  if (!session.frame || session.pipelineRuns == panel.lastRuns || !session.runError.empty()) return;
+  if (!session.frame || !session.runError.empty()) return;
+  // Monte Carlo's swimming: a new key (thesis Appendix A's) once per run, which the changed
+  // run key then asks for. Only while playing, or on a static scene (no timeline).
+  if (panel.perFrameKey && (session.playing || !session.animated()) &&
+      panel.keyMovedAfterRun != session.pipelineRuns) {
+    panel.keyMovedAfterRun = session.pipelineRuns;
+    session.frame->frameKey += 1;
+  }
+  if (session.pipelineRuns == panel.lastRuns) return;
   panel.lastRuns = session.pipelineRuns;
   const Frame& frame = *session.frame;
   const Pipeline& pipeline = session.pipeline;
@@ -153,9 +162,6 @@ void stepTemporalPanel(UiState& state) {
   panel.previousHadTruth = hasTruth;
   panel.previousTruth = std::move(truth);
   panel.previousCounted = std::move(counted);
-  // Monte Carlo's swimming: a new key (thesis Appendix A's) for the next run, which the
-  // changed run key then asks for. Only while playing, or on a static scene (no timeline).
-  if (panel.perFrameKey && (session.playing || !session.animated())) session.frame->frameKey += 1;
 }
 
 void drawTemporalPanel(UiState& state) {
@@ -182,7 +188,9 @@ void drawTemporalPanel(UiState& state) {
   ImGui::SameLine();
   if (ImGui::Button("Clear")) clearPoints();
   helpMarker("Forgets the plotted points (the next run starts a new pair).");
-  if (panel.truthOutput.empty())
+  if (panel.truthChange.empty())
+    ImGui::TextWrapped("No pair of runs measured yet: play the timeline, or tick the key above.");
+  else if (panel.truthOutput.empty())
     ImGui::TextWrapped("No ground truth this run (show the error view, with the reference or "
                        "raster4d): every counted pixel counts as stable, so real motion counts too.");
   else
@@ -197,6 +205,7 @@ void drawTemporalPanel(UiState& state) {
     longest = std::max(longest, series.change.size());
   }
   for (float v : panel.truthChange) top = std::max(top, v);
+  top *= 1.15f;  // headroom: the largest point below the frame's top
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(ImGui::GetContentRegionAvail().x, uiPixels(120)), height = uiPixels(140);
   ImDrawList* draw = ImGui::GetWindowDrawList();
