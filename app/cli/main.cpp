@@ -15,6 +15,7 @@
 #include "bench/bench_hierarchy.h"
 #include "bench/bench_compare.h"
 #include "bench/bench_stages.h"
+#include "bench/bench_temporal.h"
 #include "cli/calibrate_command.h"
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
 
   WindowOptions window;
   app.add_option("--scene", window.scene, "built-in scene (cube, plate, spheres, engine, dragon; animated: "
-                                          "dragon_turntable, light_sweep, toys) or a .json/.gltf/.glb file")->capture_default_str();
+                                          "dragon_turntable, light_sweep, toys, slow_slide) or a .json/.gltf/.glb file")->capture_default_str();
   app.add_option("--set", window.sets, "stage.key=value, repeatable");
   app.add_option("--screenshot", window.screenshot, "save the window to this PNG and exit");
   app.add_option("--frames", window.frames, "frames to render before --screenshot")
@@ -224,6 +225,26 @@ int main(int argc, char** argv) {
   benchCompareCommand->add_option("--error-of", compareBench.errorOf,
                                   "a method whose error against the reference to report");
 
+  BenchTemporalOptions temporalBench;  // app/bench/bench_temporal.h: why its own command
+  CLI::App* benchTemporalCommand = app.add_subcommand(
+      "bench-temporal", "temporal stability per method over a range of frames: mean and worst "
+                        "frame-to-frame change where the reference did not change, and its ratio "
+                        "to the reference's own change (Markdown table + per-frame CSV)");
+  benchTemporalCommand->add_option("--scene", temporalBench.scene)->capture_default_str();
+  benchTemporalCommand->add_option("--out", temporalBench.out, "Markdown file (the CSV beside it)")->capture_default_str();
+  benchTemporalCommand->add_option("--title", temporalBench.title, "the table's heading");
+  benchTemporalCommand->add_option("--time-range", temporalBench.timeRange, "START:END seconds")->capture_default_str();
+  benchTemporalCommand->add_option("--fps", temporalBench.fps, "frames per second of the range")->capture_default_str();
+  benchTemporalCommand->add_option("--keys", temporalBench.keys, "fixed (key 0), per_frame (key = frame), or both")
+      ->delimiter(',')->capture_default_str();
+  benchTemporalCommand->add_option("--width", temporalBench.width)->check(CLI::Range(16, 4096))->capture_default_str();
+  benchTemporalCommand->add_option("--height", temporalBench.height)->check(CLI::Range(16, 4096))->capture_default_str();
+  benchTemporalCommand->add_option("--set", temporalBench.sets, "stage.key=value for every side and the reference");
+  benchTemporalCommand->add_option("--side", temporalBench.sides, "[label=]method[:stage.key=value;...] "
+                                   "(repeatable; default: every method that runs by default)");
+  benchTemporalCommand->add_option("--reference-samples", temporalBench.referenceSamples, "m: m x m light "
+                                   "samples per pixel in the reference")->check(CLI::Range(1, 64))->capture_default_str();
+
   BenchOptions report;
   CLI::App* benchCommand = app.add_subcommand(
       "bench", "speed against error: every configuration timed and compared with the exact "
@@ -311,6 +332,10 @@ int main(int argc, char** argv) {
     if (*benchRaster4dCommand) return runBenchRaster4d(raster4dBench);
     if (*benchHierarchyCommand) return runBenchHierarchy(hierarchyBench);
     if (*benchCompareCommand) return runBenchCompare(compareBench);
+    if (*benchTemporalCommand) {
+      for (int i = 0; i < argc; ++i) temporalBench.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
+      return runBenchTemporal(temporalBench);
+    }
     if (*benchCommand) {
       for (int i = 0; i < argc; ++i) report.commandLine += (i ? " " : "") + std::string(i ? argv[i] : "penumbra");
       return runBench(report);

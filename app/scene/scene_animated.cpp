@@ -142,9 +142,36 @@ Scene toys() {
   return scene;
 }
 
+// A slowly moving occluder, for temporal aliasing (thesis §4.1: "at much lower resolutions
+// temporal aliasing becomes a problem"): a square plate 1 high under a 1 x 1 light 3 above
+// it slides 0.25 along x and turns 5 degrees about the vertical in 4 s, and back. At 24
+// frames a second it moves 0.0026 a frame: 1/24 of a 128^2 map's texel at the plate (the
+// light's 90-degree frustum is about 6 wide there), so its rasterized outline, and every
+// depth-map method's shadow with it, stands still for frames and then jumps a texel.
+Scene slowSlide() {
+  Scene scene;
+  scene.name = "slow_slide";
+  scene.objects.push_back({"ground", makeQuad(8.0f, glm::mat4(1)), glm::vec3(0.85f), true});
+  scene.objects.push_back({"plate",
+                           makeBox({1.0f, 0.04f, 0.7f}, glm::rotate(glm::translate(glm::mat4(1), {-0.1f, 1.0f, 0}),
+                                                                   glm::radians(20.0f), {0, 1, 0})),
+                           {0.3f, 0.5f, 0.9f}, false});
+  TrsTrack slide;
+  slide.translationKeys.times = {0, 4};
+  slide.translationKeys.values = {{0, 0, 0}, {0.25, 0, 0}};
+  slide.rotationKeys.times = {0, 4};
+  slide.rotationKeys.values = {eulerDegrees(0, 0, 0), eulerDegrees(0, 5, 0)};
+  scene.animation.objects.push_back(aboutPivot({1}, {-0.1, 1.0, 0}, slide));
+  scene.light = {{0, 4.0f, 0}, {0, -1, 0}, {0, 0, -1}, 1.0f, 1.0f};
+  scene.camera = {{0, 3.2f, 3.4f}, {0, 0.2f, 0}, {0, 1, 0}, 45};
+  scene.animation.duration = 4;
+  scene.animation.repeat = Repeat::PingPong;
+  return scene;
+}
+
 }  // namespace
 
-std::vector<std::string> animatedSceneNames() { return {"dragon_turntable", "light_sweep", "toys"}; }
+std::vector<std::string> animatedSceneNames() { return {"dragon_turntable", "light_sweep", "toys", "slow_slide"}; }
 
 bool isAnimatedScene(const std::string& name) {
   const auto names = animatedSceneNames();
@@ -155,5 +182,6 @@ Scene makeAnimatedScene(const std::string& name, std::vector<std::string>& warni
   if (name == "dragon_turntable") return dragonTurntable(warnings);
   if (name == "light_sweep") return lightSweep();
   if (name == "toys") return toys();
+  if (name == "slow_slide") return slowSlide();
   throw InputError("unknown animated scene '" + printable(name, 200) + "'");
 }

@@ -5,7 +5,10 @@
 //                     0.4 to 2.4 wide and back (Atty's "dynamic area light sources"; the
 //                     penumbra widens and the classification follows it);
 //   toys              several objects moving at once, after Wang et al.'s Toys: a box
-//                     spinning, a ball bouncing, a ball circling, a plank rocking.
+//                     spinning, a ball bouncing, a ball circling, a plank rocking;
+//   slow_slide        a plate sliding 0.25 and turning 5 degrees in 4 s, and back: slow
+//                     enough that a coarse map's texels crawl (thesis §4.1's temporal
+//                     aliasing; docs/temporal.md).
 #pragma once
 #include <string>
 #include <vector>

@@ -36,6 +36,7 @@
 #include "base/json_input.h"
 #include "window/script/ui_settings.h"
 #include "window/panels/ui_speed_error.h"
+#include "window/panels/ui_temporal.h"
 #include "window/ui_graph.h"
 #include "window/ui_state.h"
 #include "window/ui_layout.h"
@@ -195,7 +196,7 @@ void drawStatusLine(UiState& state, const Layout& layout) {
 //     one column on the left. A script's request (state.showSpeedError) selects the chart; a
 //     click on a tab sets the request.
 void drawSidePanel(UiState& state, const Layout& layout) {
-  enum Tab { kPipeline, kInspector, kChart };
+  enum Tab { kPipeline, kInspector, kChart, kTemporal };
   if (layout.stacked) ImGui::SetNextWindowPos({0, 0});
   else ImGui::SetNextWindowPos({layout.width - layout.right, 0});
   ImGui::SetNextWindowSize({layout.stacked ? layout.left : layout.right, layout.panelHeight()});
@@ -212,8 +213,9 @@ void drawSidePanel(UiState& state, const Layout& layout) {
   const bool pending = wanted != shownTab;
   if (ImGui::BeginTabBar("##side_tabs")) {
     // One column holds three tabs: the chart's goes by a shorter name (its tooltip has the long one).
-    const char* names[3] = {"Pipeline", "Inspector", layout.stacked ? "Chart###chart" : "Speed vs error###chart"};
-    for (int tab = layout.stacked ? kPipeline : kInspector; tab <= kChart; ++tab) {
+    const char* names[4] = {"Pipeline", "Inspector", layout.stacked ? "Chart###chart" : "Speed vs error###chart",
+                            "Temporal"};
+    for (int tab = layout.stacked ? kPipeline : kInspector; tab <= kTemporal; ++tab) {
       const ImGuiTabItemFlags flags = pending && wanted == tab ? ImGuiTabItemFlags_SetSelected : 0;
       const bool open = ImGui::BeginTabItem(names[tab], nullptr, flags);
       if (tab == kChart && layout.stacked && ImGui::IsItemHovered()) ImGui::SetTooltip("Speed vs error");
@@ -225,9 +227,12 @@ void drawSidePanel(UiState& state, const Layout& layout) {
         drawPipelinePanel(state);
       } else if (tab == kInspector) {
         drawInspector(state);
-      } else {
+      } else if (tab == kChart) {
         state.views.overlays.clear();  // the ray's shapes are the inspector's
         drawSpeedErrorPanel(state);
+      } else {
+        state.views.overlays.clear();
+        drawTemporalPanel(state);
       }
       ImGui::EndChild();
       ImGui::EndTabItem();
@@ -280,6 +285,7 @@ bool drawUi(UiState& state, const Layout& layout) {
     drawLessonWindow(state, layout.left, layout.viewsHeight() + layout.timeline, layout.centerWidth(),
                      layout.lesson);
   stepSpeedErrorPanel();
+  stepTemporalPanel(state);  // after this frame's run, whether its tab is shown or not
   drawHelpWindow(state);
   drawShaderLogWindow(state);
   drawLogWindow(state);
