@@ -6,10 +6,12 @@
 #   make bench - regenerate the committed result sets under bench/ and docs/performance.md
 #                (a long run: give it a quiet machine; bench/README.md)
 #   make readme-figures - the README's screenshot and methods figure (docs/images/)
+#   make stage-docs - the README's stage table and docs/stage_graph.{dot,svg}, from the
+#                registry (ctest -R StageDocs fails while they are stale)
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 
-.PHONY: setup configure program build run test bench performance-doc clean fuzz sanitize readme-figures
+.PHONY: setup configure program build run test bench performance-doc clean fuzz sanitize readme-figures stage-docs
 setup:
 	@scripts/setup.sh
 
@@ -43,6 +45,10 @@ performance-doc:
 # docs/images/window.png and docs/images/methods.png (scripts/readme_figures.sh), about 30 s.
 readme-figures: program
 	@scripts/readme_figures.sh $(BUILD)
+
+# The stage table and graph written from the stage declarations (scripts/stage_docs.sh).
+stage-docs: program
+	@scripts/stage_docs.sh $(BUILD)
 
 # Reliability (docs/reliability.md): libFuzzer on the scene JSON reader and the glTF importer
 # (FUZZ_SECONDS each, default 60), and the test suite under ASan + UBSan with leak checking.

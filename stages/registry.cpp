@@ -29,6 +29,19 @@ std::unique_ptr<Stage> makeReceiversStage();
 std::unique_ptr<Stage> makeErrorStage();
 std::unique_ptr<Stage> makeCompositeStage();
 
+namespace {
+// Registered by tests (core/pipeline.h registerTestStage); a function-local static, so a
+// registration at file scope in another translation unit finds it constructed.
+struct TestStage {
+  StageFactory make;
+  std::vector<StageEntry::Edge> edges;
+};
+std::vector<TestStage>& testStages() {
+  static std::vector<TestStage> stages;
+  return stages;
+}
+}  // namespace
+
 std::vector<StageEntry> makeRegistry() {
   std::vector<StageEntry> registry;
   auto add = [&](std::unique_ptr<Stage> stage, std::vector<StageEntry::Edge> edges = {}) {
@@ -52,5 +65,11 @@ std::vector<StageEntry> makeRegistry() {
   add(makeReceiversStage());                         // Atty 2006 §4.2.1: receivers only
   add(makeErrorStage());                             // Atty 2006 §4.2.1
   add(makeCompositeStage());                         // Alg. 1, last step
+  for (const TestStage& test : testStages()) add(test.make(), test.edges);  // none in the program
   return registry;
+}
+
+bool registerTestStage(StageFactory make, std::vector<StageEntry::Edge> edges) {
+  testStages().push_back({make, std::move(edges)});
+  return true;
 }

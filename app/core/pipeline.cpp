@@ -48,6 +48,7 @@ Pipeline::Pipeline(std::vector<StageEntry> registry) {
     if (!entry.stage) throw std::invalid_argument("registry: empty stage entry");
     if (hasStage(entry.stage->name()))
       throw std::invalid_argument("registry: two stages named '" + entry.stage->name() + "'");
+    checkCapabilities(*entry.stage);  // what each declared capability promises is there
     stages_.push_back(std::move(entry.stage));
   }
   wire(registry);

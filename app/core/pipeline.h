@@ -27,6 +27,14 @@ struct StageEntry {
 // Defined in stages/registry.cpp: thesis Algorithm 1 in order, then the other methods.
 std::vector<StageEntry> makeRegistry();
 
+// Tests only: one more registry line, appended by every later makeRegistry() after the
+// registry's own, so that a method defined in a test reaches every pipeline the program
+// builds (the window's, the bench's, a lesson's). A test's registry line is
+//   const bool registered = registerTestStage(makeMyStage);
+// at file scope. Returns true. The program itself registers nothing here.
+using StageFactory = std::unique_ptr<Stage> (*)();
+bool registerTestStage(StageFactory make, std::vector<StageEntry::Edge> edges = {});
+
 struct StageTime {
   std::string stage;
   bool ran = false;          // false: not needed by the requested outputs ("not run")

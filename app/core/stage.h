@@ -1,5 +1,5 @@
 // A stage of the pipeline (docs/design.md#stage-contract; after Falcor's render passes): it
-// declares its inputs, outputs and parameters once, and writes its outputs into the Frame. The
+// declares its inputs, outputs, parameters and capabilities once, and writes its outputs into the Frame. The
 // registry (stages/registry.cpp) wires input slots to other stages' outputs; the pipeline
 // checks the graph, orders it and runs only what the requested outputs depend on. The UI,
 // `--set`, export, bench, lessons and tests all read these declarations; no stage has UI or
@@ -97,6 +97,40 @@ struct Input {
   }
 };
 
+// What a stage offers the window beyond showing its outputs, declared once beside its inputs,
+// outputs and parameters (`capabilities_`). The window finds the stages it drives by these
+// bits, never by a stage's name or by which parameters it happens to declare; each bit is a
+// promise of the parameters and outputs named below, which the pipeline checks when it is
+// built (checkCapabilities; decision 105).
+enum Capability : unsigned {
+  kCapabilityNone = 0,
+  // An eye pick becomes the stage's picked pixel: Int parameters pick_x, pick_y (image
+  // column, row from the top; -1: none). raster4d (pickedMask), ssm (pickedLight).
+  kCapabilityPicksEyePixel = 1,
+  // A pick in a view of the stage's own light-space maps becomes its picked map texel: Int
+  // parameters patch_x, patch_y (GL texel, row 0 at the bottom) on maps of Int parameter
+  // `resolution` texels per side. ssm (pickedFootprint).
+  kCapabilityPicksMapTexel = 2,
+  // Every step of the rays of one eye pixel is recorded for the trace panel: Int parameters
+  // record_x, record_y (image column, row from the top; -1: none) and `rays` (per side), its
+  // input slots `near` and `far` (the layers the rays are drawn over). trace.
+  kCapabilityRecordsRays = 4,
+  // The picked pixel's mask over the light's m x m sample grid, drawn on the light in the
+  // 3D view: a square texture output `pickedMask`; implies kCapabilityPicksEyePixel. raster4d.
+  kCapabilityPickedLightMask = 8,
+};
+
+// The parameter keys and outputs the capabilities promise.
+inline constexpr const char* kPickXParam = "pick_x";
+inline constexpr const char* kPickYParam = "pick_y";
+inline constexpr const char* kPatchXParam = "patch_x";
+inline constexpr const char* kPatchYParam = "patch_y";
+inline constexpr const char* kMapResolutionParam = "resolution";
+inline constexpr const char* kRecordXParam = "record_x";
+inline constexpr const char* kRecordYParam = "record_y";
+inline constexpr const char* kRaysParam = "rays";
+inline constexpr const char* kPickedLightMaskOutput = "pickedMask";
+
 // What an `auto` choice took this frame, and why (one sentence for the inspector).
 struct AutoChoice {
   std::string option;
@@ -123,9 +157,16 @@ public:
   const Param& param(const std::string& key) const;
   const Output& output(const std::string& name) const;
   const Input& input(const std::string& name) const;
+  unsigned capabilities() const { return capabilities_; }  // Capability bits
+  bool can(Capability capability) const { return (capabilities_ & capability) != 0; }
 
 protected:
   std::vector<Input> inputs_;
   std::vector<Output> outputs_;
   std::vector<Param> params_;
+  unsigned capabilities_ = kCapabilityNone;
 };
+
+// Throws std::invalid_argument naming the stage, the capability and what it lacks when a
+// declared capability's parameters (with their types) or outputs are missing.
+void checkCapabilities(const Stage& stage);

@@ -5,12 +5,6 @@
 
 namespace {
 
-bool declaresParam(const Stage& stage, const std::string& key) {
-  for (const Param& param : stage.params())
-    if (param.key == key) return true;
-  return false;
-}
-
 bool hasOutput(const Stage& stage, const std::string& name) {
   for (const Output& output : stage.outputs())
     if (output.name == name) return true;
@@ -82,11 +76,16 @@ std::string gpuGroundTruth(const Pipeline& pipeline) {
   return "";
 }
 
-std::string lightMaskOutput(const Pipeline& pipeline) {
+std::vector<Stage*> stagesThatCan(const Pipeline& pipeline, unsigned capability) {
+  std::vector<Stage*> found;
   for (const auto& stage : pipeline.stages())
-    if (declaresParam(*stage, "pick_x") && declaresParam(*stage, "pick_y") && hasOutput(*stage, "pickedMask"))
-      return stage->name() + ".pickedMask";
-  return "";
+    if ((stage->capabilities() & capability) == capability) found.push_back(stage.get());
+  return found;
+}
+
+std::string lightMaskOutput(const Pipeline& pipeline) {
+  const std::vector<Stage*> stages = stagesThatCan(pipeline, kCapabilityPickedLightMask);
+  return stages.empty() ? "" : stages.front()->name() + "." + kPickedLightMaskOutput;
 }
 
 bool hasLayerOutputs(const Stage& stage) {
@@ -100,11 +99,8 @@ LayerOutputs layerOutputs(const Pipeline& pipeline) {
 }
 
 Stage* recordingStage(const Pipeline& pipeline) {
-  for (const auto& stage : pipeline.stages())
-    if (declaresParam(*stage, "record_x") && declaresParam(*stage, "record_y") &&
-        declaresParam(*stage, "rays"))
-      return stage.get();
-  return nullptr;
+  const std::vector<Stage*> stages = stagesThatCan(pipeline, kCapabilityRecordsRays);
+  return stages.empty() ? nullptr : stages.front();
 }
 
 std::string recordingInput(const Pipeline& pipeline, const std::string& slot) {

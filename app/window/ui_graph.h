@@ -1,7 +1,8 @@
 // What the window asks the stage graph (app/core/pipeline.h), never a stage's name: the
-// image, the comparison with the ground truth, the light's depth layers and the stage that
-// records one pixel's rays are found by what the stages declare (roles, choice slots,
-// output and parameter names), so a new stage shows up without edits here.
+// image, the comparison with the ground truth, the light's depth layers, the stages a pick
+// drives and the stage that records one pixel's rays are found by what the stages declare
+// (roles, choice slots, outputs, capabilities: app/core/stage.h Capability), so a new stage
+// shows up without edits here.
 #pragma once
 #include <string>
 #include <vector>
@@ -26,8 +27,10 @@ std::string measuredMethodKey(const Pipeline& pipeline);
 // A ground truth computed on the GPU inside the frame, so timed like a method: the first
 // stage whose output is both a ground truth and a shadow method ("raster4d"); "" if none.
 std::string gpuGroundTruth(const Pipeline& pipeline);
-// The picked pixel's mask over the light's sample grid: the output "pickedMask" of a stage
-// that declares pick_x and pick_y ("raster4d.pickedMask"); "" if none.
+// The stages that declare `capability` (kCapabilityPicksEyePixel: raster4d, ssm), in order.
+std::vector<Stage*> stagesThatCan(const Pipeline& pipeline, unsigned capability);
+// The picked pixel's mask over the light's sample grid: the output pickedMask of the first
+// stage with kCapabilityPickedLightMask ("raster4d.pickedMask"); "" if none.
 std::string lightMaskOutput(const Pipeline& pipeline);
 // The light's depth layers: the outputs "near" and "far" of the one stage that declares both
 // ("light_layers.near", "light_layers.far"); empty strings if none does.
@@ -36,8 +39,8 @@ struct LayerOutputs {
 };
 LayerOutputs layerOutputs(const Pipeline& pipeline);
 bool hasLayerOutputs(const Stage& stage);
-// The stage whose rays the trace panel shows: it declares the parameters record_x, record_y
-// (image coordinates of the recorded pixel) and rays (the trace).
+// The stage whose rays the trace panel shows: the first with kCapabilityRecordsRays (the
+// trace: record_x, record_y in image coordinates, rays per side); nullptr if none.
 Stage* recordingStage(const Pipeline& pipeline);
 // The producer wired to `slot` of the recording stage ("nbuffer.levels" for "levels"); "" if
 // there is no such stage or slot.

@@ -442,7 +442,7 @@ struct FrameLoop {
     glfwGetFramebufferSize(window, &width, &height);
     state.keepPickInEye(glm::ivec2(state.views.panels[0].eyeRegion));
     recordPickedPixel(state);
-    pickSoftShadowMapTexels(state);
+    pickStageMapTexels(state);
     // The timeline: a playing animation poses the scene at its new time (ui_timeline.h).
     if (std::string problem = advanceTimeline(
             state.session, timeline,

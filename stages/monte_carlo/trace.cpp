@@ -135,6 +135,7 @@ public:
         Param::integer("record_y", "Pixel (y, row from the top) whose steps are recorded.", -1,
                        -1, 8192),
     };
+    capabilities_ = kCapabilityRecordsRays;  // the trace panel: record_x/y, rays, near, far
   }
   std::string name() const override { return "trace"; }
   std::string summary() const override {

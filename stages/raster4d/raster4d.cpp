@@ -111,6 +111,7 @@ public:
                                  "-1: none.", -1, -1, 16383),
         Param::integer("pick_y", "Picked pixel (image row, 0 on top); -1: none.", -1, -1, 16383),
     };
+    capabilities_ = kCapabilityPicksEyePixel | kCapabilityPickedLightMask;  // pickedMask
   }
   std::string name() const override { return "raster4d"; }
   std::string summary() const override {

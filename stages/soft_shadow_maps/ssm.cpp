@@ -106,6 +106,8 @@ public:
         Param::integer("patch_y", "Occluder-map texel (row, 0 at the bottom) of that quad.", -1,
                        -1, 1023),
     };
+    // pickedLight from pick_x/y; pickedFootprint from patch_x/y on the resolution-sized maps.
+    capabilities_ = kCapabilityPicksEyePixel | kCapabilityPicksMapTexel;
   }
   ~SoftShadowMapStage() override {
     if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);

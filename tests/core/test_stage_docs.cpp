@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -16,7 +17,7 @@
 
 namespace {
 
-const std::string kRefresh = "run scripts/stage_docs.sh build (build: your build folder) and commit";
+const std::string kRefresh = "run make stage-docs (or scripts/stage_docs.sh BUILD) and commit";
 
 std::string readSourceFile(const std::string& relative) {
   std::ifstream file(std::string(PENUMBRA_SOURCE_DIR) + "/" + relative, std::ios::binary);
@@ -167,6 +168,31 @@ TEST(StageDocs, EveryStageNamesItsSourceAndSummary) {
     EXPECT_FALSE(stage->thesisSection().empty()) << stage->name() << " names no source";
     EXPECT_FALSE(stage->summary().empty()) << stage->name() << " has no summary";
     EXPECT_FALSE(stage->outputs().empty()) << stage->name() << " declares no output";
+  }
+}
+
+// Each stage has a short README in its own folder, stages/<family>/<stage>/README.md, naming
+// its paper section and every input slot and output it declares (a renamed or added slot
+// fails here until the README says so).
+TEST(StageDocs, EveryStageHasAReadmeNamingItsSlotsAndOutputs) {
+  namespace fs = std::filesystem;
+  const fs::path stages = fs::path(PENUMBRA_SOURCE_DIR) / "stages";
+  const Pipeline pipeline;
+  for (const auto& stage : pipeline.stages()) {
+    std::vector<fs::path> found;
+    for (const auto& family : fs::directory_iterator(stages))
+      if (family.is_directory() && fs::exists(family.path() / stage->name() / "README.md"))
+        found.push_back(family.path() / stage->name() / "README.md");
+    ASSERT_EQ(found.size(), 1u) << stage->name() << ": expected one stages/<family>/" << stage->name()
+                                << "/README.md";
+    const std::string readme = readSourceFile(fs::relative(found[0], PENUMBRA_SOURCE_DIR).string());
+    const std::string where = fs::relative(found[0], PENUMBRA_SOURCE_DIR).string();
+    EXPECT_NE(readme.find(stage->thesisSection()), std::string::npos) << where << ": names no " << stage->thesisSection();
+    for (const Input& input : stage->inputs())
+      EXPECT_NE(readme.find("`" + input.name + "`"), std::string::npos) << where << ": no input `" << input.name << "`";
+    for (const Output& output : stage->outputs())
+      EXPECT_NE(readme.find("`" + output.name + "`"), std::string::npos) << where << ": no output `" << output.name << "`";
+    EXPECT_NE(readme.find("## Numbers"), std::string::npos) << where << ": no numbers";
   }
 }
 

@@ -27,6 +27,7 @@ public:
   std::string summary() const override { return "test stage"; }
   std::string thesisSection() const override { return ""; }
   void run(Frame&) override {}
+  void declareCapabilities(unsigned capabilities) { capabilities_ = capabilities; }
 
 private:
   std::string name_;
@@ -122,6 +123,60 @@ TEST(StageGraph, BadGraphsAreRefusedNamingStageAndSlot) {
   }
 }
 
+// A capability (app/core/stage.h) promises parameters and outputs; a stage that declares one
+// without them is refused when the graph is built, naming the stage and what is missing.
+TEST(StageGraph, ACapabilityIsRefusedWithoutWhatItPromises) {
+  auto build = [](unsigned capabilities, std::vector<Param> params, std::vector<Output> outputs = {texture("v")},
+                  std::vector<Input> inputs = {}) {
+    auto stage = std::make_unique<FakeStage>("picker", std::move(inputs), std::move(outputs), std::move(params));
+    stage->declareCapabilities(capabilities);
+    std::vector<StageEntry> registry;
+    registry.push_back({std::move(stage), {}});
+    return buildError(std::move(registry));
+  };
+  const Param pickX = Param::integer("pick_x", "", -1, -1, 99), pickY = Param::integer("pick_y", "", -1, -1, 99);
+  EXPECT_EQ(build(kCapabilityPicksEyePixel, {pickX, pickY}), "");
+  std::string error = build(kCapabilityPicksEyePixel, {pickX});
+  EXPECT_NE(error.find("'picker'"), std::string::npos) << error;
+  EXPECT_NE(error.find("PicksEyePixel"), std::string::npos) << error;
+  EXPECT_NE(error.find("'pick_y'"), std::string::npos) << error;
+  error = build(kCapabilityPicksEyePixel, {pickX, Param::real("pick_y", "", 0, 0, 1)});
+  EXPECT_NE(error.find("not an integer"), std::string::npos) << error;
+  // The light mask needs its output and an eye pick to be the mask of.
+  EXPECT_NE(build(kCapabilityPicksEyePixel | kCapabilityPickedLightMask, {pickX, pickY}).find("'pickedMask'"),
+            std::string::npos);
+  EXPECT_NE(build(kCapabilityPickedLightMask, {}, {texture("pickedMask")}).find("PicksEyePixel"),
+            std::string::npos);
+  EXPECT_EQ(build(kCapabilityPicksEyePixel | kCapabilityPickedLightMask, {pickX, pickY}, {texture("pickedMask")}), "");
+  // Recording rays: record_x, record_y, rays and the near and far slots.
+  const std::vector<Param> recording = {Param::integer("record_x", "", -1, -1, 99),
+                                        Param::integer("record_y", "", -1, -1, 99),
+                                        Param::integer("rays", "", 2, 1, 8)};
+  EXPECT_NE(build(kCapabilityRecordsRays, recording).find("no input slot 'near'"), std::string::npos);
+  EXPECT_NE(build(kCapabilityPicksMapTexel, {Param::integer("patch_x", "", -1, -1, 9),
+                                             Param::integer("patch_y", "", -1, -1, 9)})
+                .find("'resolution'"),
+            std::string::npos);
+  // The params alone declare nothing: no capability, nothing to check.
+  EXPECT_EQ(build(kCapabilityNone, {pickX}), "");
+}
+
+// The registry's stages declare the capabilities the window drives them by.
+TEST(StageGraph, TheRegistrysCapabilitiesAreWhereTheWindowNeedsThem) {
+  Pipeline pipeline;
+  std::vector<std::string> eyePick, mapPick, records, mask;
+  for (const auto& stage : pipeline.stages()) {
+    if (stage->can(kCapabilityPicksEyePixel)) eyePick.push_back(stage->name());
+    if (stage->can(kCapabilityPicksMapTexel)) mapPick.push_back(stage->name());
+    if (stage->can(kCapabilityRecordsRays)) records.push_back(stage->name());
+    if (stage->can(kCapabilityPickedLightMask)) mask.push_back(stage->name());
+  }
+  EXPECT_EQ(eyePick, (std::vector<std::string>{"ssm", "raster4d"}));
+  EXPECT_EQ(mapPick, (std::vector<std::string>{"ssm"}));
+  EXPECT_EQ(records, (std::vector<std::string>{"trace"}));
+  EXPECT_EQ(mask, (std::vector<std::string>{"raster4d"}));
+}
+
 TEST(StageGraph, ChoiceSlotsListEveryMethodAndFollowTheirParameter) {
   std::vector<StageEntry> r;
   r.push_back(entry("alpha", {}, {texture("visibility", GL_R32F, kRoleShadowMethod)}));
@@ -212,10 +267,28 @@ TEST(StageGraph, TheRegistryIsAValidGraphAndAlgorithmOneRunsInOrder) {
   EXPECT_LT(at("classify"), at("trace"));
   EXPECT_LT(at("trace"), at("filter"));
   EXPECT_LT(at("filter"), at("composite"));
-  EXPECT_EQ(pipeline.methods(),
-            (std::vector<std::string>{"trace", "filter", "hard_shadow", "pcss", "ssm", "raster4d"}));
-  EXPECT_EQ(pipeline.methods(kRoleGroundTruth),
-            (std::vector<std::string>{"raster4d", "reference"}));
+  // The methods are whatever the stages declare (no list to edit when one is added): the
+  // stages, in execution order, with an output carrying the role, each an R32F visibility.
+  for (const unsigned role : {unsigned(kRoleShadowMethod), unsigned(kRoleGroundTruth)}) {
+    std::vector<std::string> declared;
+    for (const auto& stage : pipeline.stages())
+      for (const Output& output : stage->outputs())
+        if (output.roles & role) {
+          declared.push_back(stage->name());
+          EXPECT_EQ(output.format, GLenum(GL_R32F)) << stage->name() << "." << output.name;
+          EXPECT_EQ(pipeline.methodOutput(stage->name()), stage->name() + "." + output.name);
+          break;
+        }
+    EXPECT_EQ(pipeline.methods(role), declared) << "role " << role;
+  }
+  // Among them the thesis's unfiltered and filtered rays, in Algorithm 1's order, and the
+  // Embree reference as a ground truth.
+  const std::vector<std::string> methods = pipeline.methods();
+  const auto trace = std::find(methods.begin(), methods.end(), "trace");
+  EXPECT_LT(trace, std::find(methods.begin(), methods.end(), "filter"));
+  EXPECT_NE(trace, methods.end());
+  const std::vector<std::string> truths = pipeline.methods(kRoleGroundTruth);
+  EXPECT_NE(std::find(truths.begin(), truths.end(), "reference"), truths.end());
   const std::string dot = pipeline.dot();
   EXPECT_NE(dot.find("\"trace\" -> \"filter\" [label=\"visibility\"]"), std::string::npos) << dot;
 }

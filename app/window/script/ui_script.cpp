@@ -72,7 +72,16 @@ ScriptRunner::ScriptRunner(std::vector<ScriptAction> actions, ScriptOptions opti
 // Where a script's files go, known before the window opens: every path action checked
 // against the output rule, and a lesson's folder (replaced as a whole) checked as a
 // directory we may replace.
-std::string checkScriptOutputs(const std::vector<ScriptAction>& actions, const ScriptOptions& options) {
+std::string checkScriptOutputs(const std::vector<ScriptAction>& written, const ScriptOptions& options) {
+  // The actions of a for_each_method are checked as written (placeholders in their paths).
+  std::vector<ScriptAction> actions;
+  for (const ScriptAction& action : written) {
+    actions.push_back(action);
+    if (action.name == "for_each_method" && action.argument.is_array())
+      for (const auto& item : action.argument)
+        if (item.is_object() && item.size() == 1)
+          actions.push_back({action.index, item.begin().key(), item.begin().value()});
+  }
   bool lesson = false;
   std::string directory = options.exportOverride;
   for (const ScriptAction& action : actions) {
@@ -127,7 +136,7 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
   }
   if (waitForNext(state)) return Step::Running;
   while (next_ < actions_.size()) {
-    const ScriptAction& action = actions_[next_++];
+    const ScriptAction action = actions_[next_++];  // a copy: for_each_method inserts
     const ScriptActionSpec* spec = findScriptAction(action.name);  // checked when parsed
     std::string problem;
     try {
@@ -139,6 +148,11 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
       error_ = describe(action) + ": " + printable(problem, 1000);
       return Step::Failed;
     }
+    // A for_each_method's actions run next, under its number in messages.
+    std::vector<ScriptAction> expanded;
+    for (auto& [name, argument] : context_.expanded) expanded.push_back({action.index, name, std::move(argument)});
+    context_.expanded.clear();
+    actions_.insert(actions_.begin() + std::ptrdiff_t(next_), expanded.begin(), expanded.end());
     if (context_.waitFrames > 0) {
       --context_.waitFrames;  // this frame is the first waited one
       return Step::Running;

@@ -47,6 +47,11 @@
 //                          {crop.meanSigned}, ... are the error over it: ui_lesson_crop.h)
 //   {"keep": {"rmse_a": "error.rmse"}}  (a number of this run, quoted later as {rmse_a};
 //                          says and captions quote {ms:stage}, {ms}, {error.rmse}, ...)
+//   {"collect": {"results": "{error.rmse}; "}} (appends the text, numbers filled, to what is
+//                          kept as {results})
+//   {"for_each_method": [actions]} (the actions once per shadow method of the registry, with
+//                          {method}, {method.output}, {method.section}, {method.letter} and
+//                          {method.stages} filled in: ui_script_actions.h)
 // Played interactively (`penumbra lesson FILE` without --export), each "say" after the first
 // waits for the student's "Next" (button, Space or N), and the window stays open at the end.
 //

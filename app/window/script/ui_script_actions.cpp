@@ -301,6 +301,12 @@ std::vector<ScriptActionSpec> makeTable() {
       {"export_view", kExportView,
        [](S& s, const json& a, C& c) { return exportView(s, a, c); }},
       {"keep", kObject, [](S& s, const json& a, C& c) { return keepNumbers(s, a, c); }},
+      {"collect", kObject, [](S& s, const json& a, C& c) { return collectText(s, a, c); }},
+      {"for_each_method", checkForEachMethod,
+       [](S& s, const json& a, C& c) {
+         c.expanded = expandForEachMethod(s.session.pipeline, a);
+         return std::string();
+       }},
       {"annotate", kBool,
        [](S&, const json& a, C& c) {
          c.annotate = a.get<bool>();

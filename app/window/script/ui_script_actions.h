@@ -13,6 +13,7 @@
 #include "io/output_path.h"
 #include "window/panels/ui_export.h"
 
+class Pipeline;
 class UiState;
 
 // What a handler may change besides the window's state: the runner's own progress.
@@ -32,6 +33,8 @@ struct ScriptContext {
   std::vector<std::string> said;
   std::vector<FigurePanel> panels;
   std::map<std::string, std::string> kept;  // "keep": numbers under names, for later texts
+  // "for_each_method": the actions it expanded to, which the runner runs next.
+  std::vector<std::pair<std::string, nlohmann::json>> expanded;
   // The output rule (io/output_path.h): with an export directory, paths are relative to it
   // (absolute and ".." refused, InputError); a lesson's directory is one transaction,
   // opened at its first file and committed by finishLesson (ui_lesson_export.h).
@@ -72,3 +75,17 @@ std::string exportView(UiState& state, const nlohmann::json& a, ScriptContext& c
 void printPick(const UiState& state, const std::string& label);
 void printTiming(const UiState& state, const std::string& label);
 std::string frameLoadedScene(UiState& state);
+std::string collectText(const UiState& state, const nlohmann::json& a, ScriptContext& context);
+
+// "for_each_method": a list of actions played once per shadow method of the pipeline, in
+// registry order (Pipeline::methods(): the stages whose output carries kRoleShadowMethod), so
+// a lesson over every method lists none by hand. In every string and key of the actions:
+//   {method}          the stage ("filter")     {method.output}  its visibility ("filter.visibility")
+//   {method.section}  its thesisSection()      {method.letter}  a, b, c, ... (the method's place)
+//   {method.stages}   the stages its visibility depends on now, less those every method
+//                     depends on (the G-buffer, the light), "+"-joined: "{ms:{method.stages}}"
+// The check: a non-empty list of actions, each valid as written, none a lesson, say,
+// export_dir or for_each_method, and no other {method...} placeholder.
+std::string checkForEachMethod(const nlohmann::json& actions);
+std::vector<std::pair<std::string, nlohmann::json>> expandForEachMethod(const Pipeline& pipeline,
+                                                                      const nlohmann::json& actions);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "scene/scene_frame.h"
+#include "base/input_error.h"
 #include "base/json_input.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_script_actions.h"
@@ -242,4 +244,126 @@ std::string frameLoadedScene(UiState& state) {
     if (std::string problem = state.session.setTime(time); !problem.empty()) return "frame scene: " + problem;
   state.status = "framed: " + boundsText(framedBounds(state.session.scene));
   return "";
+}
+
+// 6. "collect": {"name": "text"} appends the text, its numbers filled in, to what is kept
+//    under the name (empty at first), so a later text quotes every pass of a
+//    for_each_method as {name}.
+std::string collectText(const UiState& state, const json& a, ScriptContext& context) {
+  for (const auto& [name, text] : a.items()) {
+    if (!text.is_string()) return "\"" + printable(name, 80) + "\": expected a text such as \"{error.rmse}; \"";
+    std::string problem;
+    const std::string filled = fillNumbers(state, context, text.get<std::string>(), problem);
+    if (!problem.empty()) return problem;
+    if (context.kept[name].size() + filled.size() > kMaxLessonText)
+      return "\"" + printable(name, 80) + "\": the collected text exceeds " + std::to_string(kMaxLessonText) + " characters";
+    context.kept[name] += filled;
+  }
+  return "";
+}
+
+// 7. for_each_method (ui_script_actions.h): the placeholders of one method, filled in every
+//    string and key of the actions.
+namespace {
+
+const char* const kMethodPlaceholders[] = {"{method}", "{method.output}", "{method.section}",
+                                           "{method.letter}", "{method.stages}"};
+// A lesson counts its says before it runs (its steps), and has one title and one folder.
+const char* const kForbiddenInLoop[] = {"for_each_method", "lesson", "export_dir", "say"};
+
+// The first "{method...}" in `text` that is not a placeholder; "" if none.
+std::string unknownPlaceholder(const std::string& text) {
+  for (size_t at = text.find("{method"); at != std::string::npos; at = text.find("{method", at + 1)) {
+    const size_t close = text.find('}', at);
+    const std::string token = close == std::string::npos ? text.substr(at) : text.substr(at, close - at + 1);
+    bool known = false;
+    for (const char* placeholder : kMethodPlaceholders) known |= token == placeholder;
+    if (!known) return token;
+  }
+  return "";
+}
+
+std::string unknownPlaceholderIn(const json& value) {
+  if (value.is_string()) return unknownPlaceholder(value.get<std::string>());
+  if (value.is_object())
+    for (const auto& [key, item] : value.items()) {
+      if (std::string token = unknownPlaceholder(key); !token.empty()) return token;
+      if (std::string token = unknownPlaceholderIn(item); !token.empty()) return token;
+    }
+  if (value.is_array())
+    for (const json& item : value)
+      if (std::string token = unknownPlaceholderIn(item); !token.empty()) return token;
+  return "";
+}
+
+std::string filled(std::string text, const std::vector<std::pair<std::string, std::string>>& values) {
+  for (const auto& [placeholder, value] : values)
+    for (size_t at = 0; (at = text.find(placeholder, at)) != std::string::npos; at += value.size())
+      text.replace(at, placeholder.size(), value);
+  return text;
+}
+
+json filledJson(const json& value, const std::vector<std::pair<std::string, std::string>>& values) {
+  if (value.is_string()) return filled(value.get<std::string>(), values);
+  if (value.is_object()) {
+    json object = json::object();
+    for (const auto& [key, item] : value.items()) object[filled(key, values)] = filledJson(item, values);
+    return object;
+  }
+  if (value.is_array()) {
+    json array = json::array();
+    for (const json& item : value) array.push_back(filledJson(item, values));
+    return array;
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string checkForEachMethod(const json& actions) {
+  if (!actions.is_array() || actions.empty())
+    return "expected a non-empty list of actions, played once per shadow method";
+  for (size_t i = 0; i < actions.size(); ++i) {
+    const json& item = actions[i];
+    const std::string where = "action " + std::to_string(i + 1) + " of the list";
+    if (!item.is_object() || item.size() != 1) return where + ": expected an object with one key (the action)";
+    const std::string name = item.begin().key();
+    for (const char* forbidden : kForbiddenInLoop)
+      if (name == forbidden) return where + ": " + name + " cannot be played once per method";
+    const ScriptActionSpec* spec = findScriptAction(name);
+    if (!spec) return where + ": unknown action '" + printable(name, 80) + "'; valid actions: " + scriptActionNames();
+    if (std::string problem = spec->check(item.begin().value()); !problem.empty())
+      return where + " (" + name + "): " + problem;
+    if (std::string token = unknownPlaceholderIn(item.begin().value()); !token.empty())
+      return where + " (" + name + "): unknown placeholder '" + printable(token, 80) +
+             "'; valid: {method}, {method.output}, {method.section}, {method.letter}, {method.stages}";
+  }
+  return "";
+}
+
+std::vector<std::pair<std::string, json>> expandForEachMethod(const Pipeline& pipeline, const json& actions) {
+  const std::vector<std::string> methods = pipeline.methods();
+  // The stages every method's visibility depends on (the G-buffer, the light) are shared
+  // costs: {method.stages} leaves them out, except the method itself.
+  std::map<std::string, std::vector<std::string>> dependsOn;
+  std::map<std::string, size_t> uses;
+  for (const std::string& method : methods) {
+    dependsOn[method] = pipeline.dependencies({pipeline.methodOutput(method)});
+    for (const std::string& stage : dependsOn[method]) ++uses[stage];
+  }
+  std::vector<std::pair<std::string, json>> expanded;
+  for (size_t m = 0; m < methods.size(); ++m) {
+    const std::string& method = methods[m];
+    std::string stages;
+    for (const std::string& stage : dependsOn[method])
+      if (stage == method || uses[stage] < methods.size()) stages += (stages.empty() ? "" : "+") + stage;
+    const std::vector<std::pair<std::string, std::string>> values = {
+        {"{method.output}", pipeline.methodOutput(method)},
+        {"{method.section}", pipeline.stage(method).thesisSection()},
+        {"{method.letter}", std::string(1, char('a' + m % 26))},
+        {"{method.stages}", stages},
+        {"{method}", method}};
+    for (const json& item : actions) expanded.emplace_back(item.begin().key(), filledJson(item.begin().value(), values));
+  }
+  return expanded;
 }

@@ -1,19 +1,17 @@
 #include "window/views/ui_ssm_pick.h"
 
+#include "window/ui_graph.h"
 #include "window/ui_state.h"
 
-void pickSoftShadowMapTexels(UiState& state) {
-  Pipeline& pipeline = state.session.pipeline;
+void pickStageMapTexels(UiState& state) {
   const auto& pick = state.views.pick;
-  if (!pick || !state.session.frame || !pipeline.hasStage("ssm")) return;
-  Stage& ssm = pipeline.stage("ssm");
+  if (!pick || !state.session.frame) return;
   const glm::ivec2 eye(state.session.frame->eyeWidth, state.session.frame->eyeHeight);
-  const int maps = ssm.param("resolution").asInt();
-  if (state.views.pickSpace == eye) {  // image coordinates: row 0 at the top
-    ssm.param("pick_x").value = pick->x;
-    ssm.param("pick_y").value = eye.y - 1 - pick->y;
-  } else if (state.views.pickSpace == glm::ivec2(maps)) {  // GL texel of the light-space maps
-    ssm.param("patch_x").value = pick->x;
-    ssm.param("patch_y").value = pick->y;
+  if (state.views.pickSpace == eye) return;  // an eye pick: the stages' picked pixel
+  for (Stage* stage : stagesThatCan(state.session.pipeline, kCapabilityPicksMapTexel)) {
+    const int maps = stage->param(kMapResolutionParam).asInt();
+    if (state.views.pickSpace != glm::ivec2(maps)) continue;
+    stage->param(kPatchXParam).value = pick->x;  // GL texel of the light-space maps
+    stage->param(kPatchYParam).value = pick->y;
   }
 }

@@ -1,11 +1,11 @@
-// Connects the window's pick to the soft-shadow-map stage's picked views (Atty et al. 2006
-// §3.4, §4.1.2): a picked eye pixel becomes ssm.pick_x / pick_y (the pickedLight view shows
-// that receiver's back-projected micro-patches on the light), a pick in one of ssm's light-
-// space maps (resolution x resolution, when that is not the eye size) becomes
-// ssm.patch_x / patch_y (the pickedFootprint view shows that micro-patch's quad).
-// Without an ssm stage it does nothing.
+// Connects a pick in a stage's own light-space maps to that stage's picked map texel: every
+// stage with kCapabilityPicksMapTexel (app/core/stage.h; ssm, Atty et al. 2006 §3.4, §4.1.2)
+// gets patch_x / patch_y when the pick lies in a view of its `resolution` x `resolution`
+// maps (and that is not the eye size; eye picks are recordPickedPixel's, ui_trace_source.h).
+// ssm's pickedFootprint view shows that micro-patch's quad. Without such a stage it does
+// nothing.
 #pragma once
 
 class UiState;
 
-void pickSoftShadowMapTexels(UiState& state);
+void pickStageMapTexels(UiState& state);

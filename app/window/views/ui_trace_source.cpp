@@ -66,10 +66,10 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
   RayTraceInfo info;
   const Stage* recorder = recordingStage(frame.pipeline);
   if (!recorder) return info;
-  const int n = effectiveRays(recorder->param("rays"), lightAutoSettings(frame));
+  const int n = effectiveRays(recorder->param(kRaysParam), lightAutoSettings(frame));
   info.raysPerPixel = n * n;
-  const int recordX = recorder->param("record_x").asInt();
-  const int recordY = recorder->param("record_y").asInt();
+  const int recordX = recorder->param(kRecordXParam).asInt();
+  const int recordY = recorder->param(kRecordYParam).asInt();
   if (recordX != pixel.x || recordY != frame.eyeHeight - 1 - pixel.y) {
     info.result = "recording this pixel on the next run";
     return info;
@@ -92,8 +92,8 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
 void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
 
 // 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top), and
-//    the picked pixel of every stage that shows one (pick_x / pick_y: raster4d's mask); the
-//    parameters' new revision re-runs the pipeline.
+//    the picked pixel of every stage that declares kCapabilityPicksEyePixel (raster4d's
+//    mask, ssm's view of the light); the parameters' new revision re-runs the pipeline.
 void recordPickedPixel(UiState& state) {
   if (!state.views.pick || !state.session.frame) return;
   // The eye of the coming run (UiState::keepPickInEye), so a resized eye runs once.
@@ -102,18 +102,11 @@ void recordPickedPixel(UiState& state) {
   if (state.views.pickSpace != eye) return;
   const glm::ivec2 image{state.views.pick->x, state.views.pickSpace.y - 1 - state.views.pick->y};
   if (Stage* recorder = recordingStage(state.session.pipeline)) {
-    recorder->param("record_x").value = image.x;
-    recorder->param("record_y").value = image.y;
+    recorder->param(kRecordXParam).value = image.x;
+    recorder->param(kRecordYParam).value = image.y;
   }
-  for (const auto& stage : state.session.pipeline.stages()) {
-    auto declares = [&](const char* key) {
-      for (const Param& param : stage->params())
-        if (param.key == key) return true;
-      return false;
-    };
-    if (declares("pick_x") && declares("pick_y")) {
-      stage->param("pick_x").value = image.x;
-      stage->param("pick_y").value = image.y;
-    }
+  for (Stage* stage : stagesThatCan(state.session.pipeline, kCapabilityPicksEyePixel)) {
+    stage->param(kPickXParam).value = image.x;
+    stage->param(kPickYParam).value = image.y;
   }
 }
