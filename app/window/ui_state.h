@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "window/panels/ui_temporal.h"
 #include "window/script/ui_script_io.h"
 #include "window/ui_live_truth.h"
 #include "window/ui_log.h"
@@ -27,6 +28,7 @@ public:
     bool wasStacked = false;  // the side panel was one column last frame
     std::string scenePath;    // the scene panel's typed path
     std::string settingsPath = "penumbra_settings.json", exportDirectory;  // the tools' paths
+    TemporalPanelState temporal;  // the temporal-stability tab's plot (ui_temporal.h)
   } panelMemory;
 
   // Messages.

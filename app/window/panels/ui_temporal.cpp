@@ -18,28 +18,8 @@
 
 namespace {
 
-// What the tab keeps between window frames (as the speed-vs-error panel, one per process).
-struct Series {
-  std::vector<float> previous;  // the method's visibility in the last recorded run
-  std::deque<float> change;     // per recorded pair, oldest first
-};
-struct PanelState {
-  int capacity = 120;            // pairs kept in the plot
-  bool perFrameKey = false;      // move the frame key after every run (Monte Carlo swims)
-  int lastRuns = -1, sceneLoads = -1;
-  int keyMovedAfterRun = -1;     // the run after which the frame key was last moved
-  int width = 0, height = 0;     // eye size of the last recorded run
-  bool previousHadTruth = false;
-  std::vector<float> previousTruth;
-  std::vector<std::uint8_t> previousCounted;
-  std::map<std::string, Series> series;  // method -> its points
-  std::deque<float> truthChange;         // the ground truth's own change per pair
-  std::string truthOutput;               // "" when no ground truth was used
-  TemporalChange last;                   // the last pair of the first method (pixel counts)
-};
-PanelState panel;
 
-void clearPoints() {
+void clearPoints(TemporalPanelState& panel) {
   panel.series.clear();
   panel.truthChange.clear();
   panel.previousTruth.clear();
@@ -91,7 +71,7 @@ std::string truthOutputOf(const Pipeline& pipeline) {
   return "";
 }
 
-void push(std::deque<float>& values, float value) {
+void push(const TemporalPanelState& panel, std::deque<float>& values, float value) {
   values.push_back(value);
   while (int(values.size()) > panel.capacity) values.pop_front();
 }
@@ -99,10 +79,11 @@ void push(std::deque<float>& values, float value) {
 }  // namespace
 
 void stepTemporalPanel(UiState& state) {
+  TemporalPanelState& panel = state.panelMemory.temporal;
   Session& session = state.session;
   if (session.sceneLoads != panel.sceneLoads) {  // another scene: its own plot
     panel.sceneLoads = session.sceneLoads;
-    clearPoints();
+    clearPoints(panel);
   }
   if (!session.frame || !session.runError.empty()) return;
   // Monte Carlo's swimming: a new key (thesis Appendix A's) once per run, which the changed
@@ -146,18 +127,19 @@ void stepTemporalPanel(UiState& state) {
   for (const std::string& method : shownMethods(state)) {
     const std::string output = pipeline.methodOutput(method);
     if (method == stageOf(truthOutput) || !ranLastRun(pipeline, output) || !frame.has(output)) continue;
-    Series& series = panel.series[method];
+    TemporalPanelState::Series& series = panel.series[method];
     std::vector<float> visibility = frame.texture(output).readFloats();
     if (pairWithTruth && series.previous.size() == pixels && visibility.size() == pixels) {
       const TemporalChange change = temporalChange(series.previous, visibility, panel.previousTruth, truth, both);
-      push(series.change, float(change.change));
+      push(panel, series.change, float(change.change));
+      push(panel, series.worstPixel, float(change.maxChange));
       truthChange = float(change.referenceChange);
       if (first) panel.last = change;
       first = false;
     }
     series.previous = std::move(visibility);
   }
-  if (!first) push(panel.truthChange, truthChange);
+  if (!first) push(panel, panel.truthChange, truthChange);
   panel.truthOutput = hasTruth ? truthOutput : "";
   panel.previousHadTruth = hasTruth;
   panel.previousTruth = std::move(truth);
@@ -165,6 +147,7 @@ void stepTemporalPanel(UiState& state) {
 }
 
 void drawTemporalPanel(UiState& state) {
+  TemporalPanelState& panel = state.panelMemory.temporal;
   ImGui::TextUnformatted("Temporal stability");
   helpMarker("Per run, the mean |visibility - visibility of the run before| of each shadow method "
              "the views show, over the pixels counted in both runs (receivers inside the light's "
@@ -181,12 +164,13 @@ void drawTemporalPanel(UiState& state) {
   ImGui::SetNextItemWidth(uiPixels(120));
   if (ImGui::SliderInt("frames kept", &panel.capacity, 10, 600)) {
     for (auto& [method, series] : panel.series)
-      while (int(series.change.size()) > panel.capacity) series.change.pop_front();
+      for (std::deque<float>* values : {&series.change, &series.worstPixel})
+        while (int(values->size()) > panel.capacity) values->pop_front();
     while (int(panel.truthChange.size()) > panel.capacity) panel.truthChange.pop_front();
   }
   helpMarker("How many of the last measured pairs of runs the plot shows.");
   ImGui::SameLine();
-  if (ImGui::Button("Clear")) clearPoints();
+  if (ImGui::Button("Clear")) clearPoints(panel);
   helpMarker("Forgets the plotted points (the next run starts a new pair).");
   if (panel.truthChange.empty())
     ImGui::TextWrapped("No pair of runs measured yet: play the timeline, or tick the key above.");
@@ -258,3 +242,26 @@ void drawTemporalPanel(UiState& state) {
   if (panel.series.empty()) ImGui::TextWrapped("No shadow method shown: show a method's visibility "
                                                "or the final image in a view.");
 }
+
+bool temporalNumber(const UiState& state, const std::string& method, bool worstPixel, double& value,
+                    std::string& problem) {
+  const TemporalPanelState& panel = state.panelMemory.temporal;
+  const std::deque<float>* values = nullptr;
+  if (method == "truth") {
+    if (!worstPixel) values = &panel.truthChange;
+  } else if (const auto series = panel.series.find(method); series != panel.series.end()) {
+    values = worstPixel ? &series->second.worstPixel : &series->second.change;
+  }
+  if (!values || values->empty()) {
+    problem = "no pair of runs measured for '" + method +
+              "' (show the method in a view and run two poses or keys; {\"temporal_clear\": true} starts over)";
+    return false;
+  }
+  double sum = 0, worst = 0;
+  for (float v : *values) sum += v, worst = std::max(worst, double(v));
+  value = worstPixel ? worst : sum / double(values->size());
+  return true;
+}
+
+void clearTemporalPanel(UiState& state) { clearPoints(state.panelMemory.temporal); }
+void setTemporalPerFrameKey(UiState& state, bool on) { state.panelMemory.temporal.perFrameKey = on; }

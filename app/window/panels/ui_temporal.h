@@ -6,11 +6,48 @@
 // comparison is set against (error.against) when it ran this run and the run before; without
 // it every counted pixel counts as stable and the panel says so.
 #pragma once
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "stats/temporal.h"
 
 class UiState;
+
+// What the tab keeps between window frames (UiState::panelMemory.temporal).
+struct TemporalPanelState {
+  struct Series {
+    std::vector<float> previous;  // the method's visibility in the last recorded run
+    std::deque<float> change;     // per recorded pair, oldest first: mean |change| (stable pixels)
+    std::deque<float> worstPixel; // per recorded pair: the largest single pixel's |change|
+  };
+  int capacity = 120;            // pairs kept in the plot
+  bool perFrameKey = false;      // move the frame key after every run (Monte Carlo swims)
+  int lastRuns = -1, sceneLoads = -1;
+  int keyMovedAfterRun = -1;     // the run after which the frame key was last moved
+  int width = 0, height = 0;     // eye size of the last recorded run
+  bool previousHadTruth = false;
+  std::vector<float> previousTruth;
+  std::vector<std::uint8_t> previousCounted;
+  std::map<std::string, Series> series;  // method -> its points
+  std::deque<float> truthChange;         // the ground truth's own change per pair
+  std::string truthOutput;               // "" when no ground truth was used
+  TemporalChange last;                   // the last pair of the first method (pixel counts)
+};
 
 // After each window frame's run: records a new point when the pipeline ran (called every
 // frame, whether the tab is shown or not); with "new key every run" on, moves the frame key.
 void stepTemporalPanel(UiState& state);
 // The tab's contents, drawn into the current window.
 void drawTemporalPanel(UiState& state);
+// For lesson texts ({temporal:METHOD}, {temporal_pixel:METHOD}; lessons/README.md): the mean
+// of the kept pairs' change of METHOD ("truth": the ground truth's own change), or the
+// largest single pixel's change over them. False, with the reason, when no pair was measured.
+bool temporalNumber(const UiState& state, const std::string& method, bool worstPixel, double& value,
+                    std::string& problem);
+// Script actions {"temporal_clear": true} and {"temporal_key": bool} (the tab's Clear button
+// and its "new frame key every run" box).
+void clearTemporalPanel(UiState& state);
+void setTemporalPerFrameKey(UiState& state, bool on);

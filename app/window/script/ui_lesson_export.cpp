@@ -12,6 +12,7 @@
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_export_annotation.h"
 #include "window/script/ui_lesson_crop.h"
+#include "window/panels/ui_temporal.h"
 #include "window/script/ui_lesson_numbers.h"
 #include "window/ui_state.h"
 
@@ -110,6 +111,17 @@ std::string number(const UiState& state, const ScriptContext& context, const std
     const bool count = name.rfind("pixels:", 0) == 0;
     return formatted(value, count ? "%.0f" : name.rfind("share:", 0) == 0 ? "%.0f" : "%.4g");
   }
+  if (name.rfind("temporal:", 0) == 0 || name.rfind("temporal_pixel:", 0) == 0) {
+    // The temporal-stability tab's kept pairs (window/panels/ui_temporal.h).
+    const bool pixel = name[8] == '_';
+    double value = 0;
+    std::string why;
+    if (!temporalNumber(state, name.substr(pixel ? 15 : 9), pixel, value, why)) {
+      problem = "{" + name + "}: " + why;
+      return "";
+    }
+    return formatted(value, "%.3g");
+  }
   if (name.rfind("ms:", 0) == 0) {
     double total = 0;
     std::stringstream stages(name.substr(3));
@@ -138,7 +150,7 @@ std::string number(const UiState& state, const ScriptContext& context, const std
                  : formatted(counter->second, "%.4g");
   }
   problem = "{" + name + "}: no such number in this run (ms, ms:stage, crop.*, pixels:, share:, min:, "
-            "max:, p99:, pick:, pct:a/b, ratio:a/b, triangles, a kept name, or a counter such as error.rmse)";
+            "max:, p99:, pick:, pct:a/b, ratio:a/b, temporal:, temporal_pixel:, triangles, a kept name, or a counter such as error.rmse)";
   return "";
 }
 

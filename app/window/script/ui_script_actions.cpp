@@ -13,6 +13,7 @@
 #include "window/panels/ui_export.h"
 #include "window/panels/ui_reference_progress.h"
 #include "window/panels/ui_speed_error.h"
+#include "window/panels/ui_temporal.h"
 #include "window/script/ui_lesson_crop.h"
 #include "window/script/ui_lesson_export.h"
 #include "window/script/ui_settings.h"
@@ -361,6 +362,18 @@ std::vector<ScriptActionSpec> makeTable() {
       {"play", kBool,
        [](S& s, const json& a, C&) {
          s.session.playing = a.get<bool>();
+         return std::string();
+       }},
+      // The temporal-stability tab (window/panels/ui_temporal.h): forget its pairs; move the
+      // frame key after every run.
+      {"temporal_clear", kBool,
+       [](S& s, const json&, C&) {
+         clearTemporalPanel(s);
+         return std::string();
+       }},
+      {"temporal_key", kBool,
+       [](S& s, const json& a, C&) {
+         setTemporalPerFrameKey(s, a.get<bool>());
          return std::string();
        }},
       {"frame_scene", kBool, [](S& s, const json&, C&) { return frameLoadedScene(s); }},
