@@ -11,6 +11,7 @@
 #include "window/ui_live_truth.h"
 #include "window/ui_log.h"
 #include "window/ui_session.h"
+#include "window/ui_state_speed_error.h"
 #include "window/views/ui_view_state.h"
 
 class UiState {
@@ -28,6 +29,7 @@ public:
     std::string scenePath;    // the scene panel's typed path
     std::string settingsPath = "penumbra_settings.json", exportDirectory;  // the tools' paths
   } panelMemory;
+  SpeedErrorPanelState speedError;  // the "Speed vs error" panel (ui_state_speed_error.h)
 
   // Messages.
   std::string status;     // the status line: what happened last

@@ -279,7 +279,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   if (layout.lesson > 0)
     drawLessonWindow(state, layout.left, layout.viewsHeight() + layout.timeline, layout.centerWidth(),
                      layout.lesson);
-  stepSpeedErrorPanel();
+  stepSpeedErrorPanel(state);
   drawHelpWindow(state);
   drawShaderLogWindow(state);
   drawLogWindow(state);
