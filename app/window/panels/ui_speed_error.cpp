@@ -289,10 +289,18 @@ void drawSpeedErrorPanel(UiState& state) {
                          sameScene ? "" : " (the scene, light or camera changed since: no point is current)");
       ImGui::TextWrapped("truth: Embree %dx%d stratified", panel.bench.referenceSamples(),
                          panel.bench.referenceSamples());
-      helpMarker("Every error is measured against the exact reference at this many light samples "
-                 "per pixel. The reference is also a method here (\"reference (Embree, CPU)\", "
-                 "1x1 to 8x8 samples at the cell centres): where its points lie left of or below "
-                 "another method's, the CPU ray tracer is the better choice on this machine.");
+      // A tooltip on the line itself: a (?) after a wrapped line would run past the panel.
+      if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+        ImGui::TextUnformatted("Every error is measured against the exact reference at this many "
+                               "light samples per pixel. The reference is also a method here "
+                               "(\"reference (Embree, CPU)\", 1x1 to 8x8 samples at the cell "
+                               "centres): where its points lie left of or below another method's, "
+                               "the CPU ray tracer is the better choice on this machine.");
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
     }
   } else {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 60);
