@@ -28,6 +28,8 @@ sets=(
   "plate-atty-4.2|--scene plate --preset atty-4.2 --frames 3 --warmup 1 --rounds 1"
   "bunny-atty-4.2|--scene assets/scenes/bunny_atty.json --preset atty-4.2 --set light.fov_degrees=50 --width 192 --height 192 --frames 1 --warmup 0 --rounds 1"
   "dragon-atty-4.2|--scene assets/scenes/dragon_atty.json --preset atty-4.2 --set light.fov_degrees=50 --width 192 --height 192 --frames 1 --warmup 0 --rounds 1"
+  "toys-animated|--scene toys --preset animated --width 160 --height 120 --fps 4"
+  "dragon_turntable-animated|--scene dragon_turntable --preset animated --width 128 --height 96 --fps 2"
 )
 known="stages"
 for entry in "${sets[@]}"; do known+=" ${entry%%|*}"; done

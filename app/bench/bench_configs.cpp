@@ -1,6 +1,7 @@
 #include "bench/bench_configs.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <cstdio>
 #include <functional>
@@ -133,6 +134,14 @@ void append(std::vector<BenchConfig>& to, std::vector<BenchConfig> more) {
   for (BenchConfig& config : more) to.push_back(std::move(config));
 }
 
+// The reference as a method on a speed-against-error plot: when is a CPU ray tracer the
+// better choice on this machine? 1x1 (a hard shadow from the light's centre) to 8x8.
+std::vector<BenchConfig> referenceMethods(bool rebuildBvh = false) {
+  std::vector<BenchConfig> configs;
+  for (int m : {1, 2, 4, 8}) configs.push_back(referenceConfig(m, rebuildBvh));
+  return configs;
+}
+
 // The Monte Carlo method as it ships: hierarchical, deferred, filtered, with `auto` choosing
 // the map, the layers and the rays (docs/accuracy.md) and the hierarchy
 // (docs/decisions/024-minmax-mipmap-atlas.md), to be seen against the fixed ones' frontier.
@@ -160,12 +169,29 @@ std::vector<BenchConfig> defaultConfigs(const Methods& methods) {
     for (int map : {128, 256, 1024}) configs.push_back(monteCarlo("hierarchical", 2, 2, map));
   }
   for (int map : {128, 1024}) append(configs, withDefaults(methods, map));
+  append(configs, referenceMethods());
   return configs;
 }
 
 std::vector<BenchConfig> minimalConfigs(const Methods& methods) {
   std::vector<BenchConfig> configs = withDefaults(methods, 512);
   if (methods.monteCarlo) configs.push_back(monteCarlo("hierarchical", 2, 2));
+  append(configs, referenceMethods());
+  return configs;
+}
+
+// Wang et al. §5 compare 4D rasterization with a ray tracer at the same 32 x 32 uniform light
+// samples, which on their dynamic Toys "has to recompute the BVH for every frame": every
+// method at its defaults (raster4d at 32 x 32), Monte Carlo as it ships and at 2x2, and the
+// reference rebuilding its BVH each frame at 1x1 .. 8x8 and at 32 x 32.
+std::vector<BenchConfig> animatedConfigs(const Methods& methods) {
+  std::vector<BenchConfig> configs = withDefaults(methods, 512);
+  if (methods.monteCarlo) {
+    configs.push_back(monteCarloAuto());
+    configs.push_back(monteCarlo("hierarchical", 2, 2));
+  }
+  append(configs, referenceMethods(/*rebuildBvh=*/true));
+  configs.push_back(referenceConfig(32, /*rebuildBvh=*/true));
   return configs;
 }
 
@@ -259,6 +285,21 @@ bool isSetupAxis(const std::string& key) {
 
 }  // namespace
 
+BenchConfig referenceConfig(int samples, bool rebuildBvh) {
+  const std::string m = std::to_string(samples);
+  BenchConfig config{"reference " + m + "x" + m + (rebuildBvh ? " BVH rebuilt" : ""), "reference",
+                     "reference", {}, samples, rebuildBvh};
+  return config;
+}
+
+std::vector<double> loopTimes(double start, double cycle, double fps, int limit) {
+  const int whole = std::max(1, int(std::lround(cycle * fps)));
+  const int count = limit > 0 ? std::min(limit, whole) : whole;
+  std::vector<double> times;
+  for (int i = 0; i < count; ++i) times.push_back(start + double(i) / fps);
+  return times;
+}
+
 void scaleLight(Scene& scene, double factor) {
   scene.light.width *= float(factor);
   scene.light.height *= float(factor);
@@ -309,7 +350,7 @@ void placeOccludersVertically(Scene& scene, double t) {
 }
 
 std::vector<std::string> benchPresetNames() {
-  return {"default", "minimal", "thesis-table-4.1", "atty-4.2"};
+  return {"default", "minimal", "thesis-table-4.1", "atty-4.2", "animated"};
 }
 
 std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options,
@@ -328,6 +369,7 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
     if (h == 0) h = 384;
     std::vector<BenchConfig> configs = withDefaults(methods, 512);
     for (int map : {256, 512, 1024}) append(configs, thesisRows(methods, map));
+    append(configs, referenceMethods());
     setups.push_back(makeSetup(scene, w, h, configs));
     // Tables 4.3/4.4: 800x600 and 1280x1024 at the same scale (1024x768 is the main setup).
     const double scale = double(w) / 1024.0;
@@ -340,6 +382,7 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
     std::vector<BenchConfig> maps;
     for (int map : {128, 192, 256, 384, 512, 768, 1024})
       append(maps, attyMethods(methods, map));
+    append(maps, referenceMethods());  // on the map sweep's speed-against-error plot
     setups.push_back(makeSetup(scene, w, h, maps, "map", 0));
     setups.back().label = scene.name + " " + std::to_string(w) + "x" + std::to_string(h) + " map sweep";
     const BenchSetup base = makeSetup(scene, w, h, attyMethods(methods, 128));
@@ -353,6 +396,24 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
     // self-shadowing (§3), so an occluder's own surface is no part of what they measure.
     for (BenchSetup& setup : setups)
       for (BenchConfig& config : setup.configs) config.sets.push_back("error.pixels=receivers");
+  } else if (preset == "animated") {
+    if (scene.animation.empty())
+      throw std::invalid_argument("preset animated needs an animated scene ('" + scene.name +
+                                  "' has no animation): dragon_turntable, light_sweep, toys, or "
+                                  "a scene file with an \"animation\"");
+    if (!(options.fps > 0 && options.fps <= 240)) throw std::invalid_argument("--fps must be within (0, 240]");
+    if (w == 0) w = 160;
+    if (h == 0) h = 120;
+    // One whole cycle: ping-pong runs forward and back (scene/animation.h).
+    const double cycle = scene.animation.duration *
+                         (scene.animation.repeat == Repeat::PingPong ? 2.0 : 1.0);
+    BenchSetup setup = makeSetup(poseAt(scene, options.time), w, h, animatedConfigs(methods));
+    setup.rest = std::make_shared<const Scene>(scene);
+    setup.loopTimes = loopTimes(options.time, cycle, options.fps, options.loopFrames);
+    setup.fps = options.fps;
+    setup.cycle = cycle;
+    setup.label = scene.name + " " + std::to_string(w) + "x" + std::to_string(h) + " loop";
+    setups.push_back(std::move(setup));
   } else {
     std::string valid;
     for (const std::string& name : benchPresetNames()) valid += (valid.empty() ? "" : ", ") + name;
@@ -375,14 +436,22 @@ std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions
     if (values.empty()) throw std::invalid_argument("--sweep '" + sweep + "' has no values");
     if (isSetupAxis(key)) {
       std::vector<BenchSetup> expanded;
-      for (const BenchSetup& setup : setups)
+      for (const BenchSetup& setup : setups) {
+        if (setup.animated())
+          throw std::invalid_argument("--sweep " + key + " does not apply to preset animated "
+                                      "(it would change only the first frame's pose)");
         for (const std::string& value : values) expanded.push_back(withAxis(setup, key, value));
+      }
       setups = std::move(expanded);
     } else {
       const std::string stage = key.substr(0, key.find('.'));
       for (BenchSetup& setup : setups) {
         std::vector<BenchConfig> expanded;
         for (const BenchConfig& config : setup.configs) {
+          if (config.referenceSamples > 0) {  // no stage of the graph is its visibility
+            expanded.push_back(config);
+            continue;
+          }
           const auto closure = pipeline.dependencies({pipeline.methodOutput(config.method)});
           const bool unused = methodStages.count(stage) &&
                               std::find(closure.begin(), closure.end(), stage) == closure.end();

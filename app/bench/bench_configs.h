@@ -34,6 +34,7 @@
 // light's right), scene.vertical (0: occluders touch the receivers, 1: they touch the
 // light), eye.size (WxH).
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,10 @@ struct BenchConfig {
   std::string method;              // the method's stage (Pipeline::methods())
   std::string family;              // plot series: "hierarchical 2L", or the method's name
   std::vector<std::string> sets;   // stage.key=value on top of the defaults
+  // > 0: the reference as a method at m x m light samples (method "reference"; no stage of
+  // the graph is its visibility: app/bench/bench_reference.h).
+  int referenceSamples = 0;
+  bool rebuildBvh = false;         // its BVH built anew every timed frame (a moving scene)
 };
 
 struct BenchSetup {
@@ -55,15 +60,26 @@ struct BenchSetup {
   Scene scene;
   int width = 256, height = 256;
   std::vector<BenchConfig> configs;
+  // An animated setup (preset animated): `scene` is posed at loopTimes[0] (its error frame and
+  // its reference); `rest` is the scene with its animation, posed anew at every loop time.
+  std::shared_ptr<const Scene> rest;
+  std::vector<double> loopTimes;  // seconds, one per timed frame of the loop
+  double fps = 0, cycle = 0;      // frames per second; one cycle's duration
+  std::vector<double> poseMs;     // measured: posing and uploading each loop frame (ms)
+  bool animated() const { return rest && !loopTimes.empty(); }
 };
 
 struct BenchPlanOptions {
   std::string preset;               // "" = default
   std::vector<std::string> sweeps;  // "stage.key=v1,v2" or "scene.light_scale=..." ...
   int width = 0, height = 0;        // 0: the preset's default
+  double fps = 12;                  // animated: frames per second over one cycle
+  int loopFrames = 0;               // animated: only the first N of them (0: the whole cycle)
+  double time = 0;                  // animated: the loop's first time
 };
 
-// The methods and their parameters come from `pipeline` (read, not changed). Throws
+// The methods and their parameters come from `pipeline` (read, not changed). `scene` is
+// posed for every preset but animated, which needs its animation (at rest). Throws
 // std::invalid_argument with a message naming the valid presets / keys.
 std::vector<BenchSetup> makeBenchPlan(const Scene& scene, const BenchPlanOptions& options,
                                       const Pipeline& pipeline);
@@ -73,3 +89,8 @@ std::vector<std::string> benchPresetNames();
 void scaleLight(Scene& scene, double factor);
 void placeOccludersLaterally(Scene& scene, double lightWidths);
 void placeOccludersVertically(Scene& scene, double fromReceiverToLight);
+// The reference as a method at m x m samples ("reference 4x4", "reference 32x32 BVH rebuilt").
+BenchConfig referenceConfig(int samples, bool rebuildBvh = false);
+// The times of the loop: start + i / fps for i < round(cycle x fps) (at least one), the
+// first `limit` of them when limit > 0.
+std::vector<double> loopTimes(double start, double cycle, double fps, int limit);

@@ -6,7 +6,8 @@ using nlohmann::json;
 
 std::vector<BenchSetupInfo> setupInfos(const std::vector<BenchSetup>& setups) {
   std::vector<BenchSetupInfo> infos;
-  for (const BenchSetup& s : setups) infos.push_back({s.label, s.axis, s.axisValue, s.width, s.height});
+  for (const BenchSetup& s : setups)
+    infos.push_back({s.label, s.axis, s.axisValue, s.width, s.height, s.fps, s.cycle, s.loopTimes, s.poseMs});
   return infos;
 }
 
@@ -22,7 +23,8 @@ std::string benchJson(const BenchRunInfo& info, const std::vector<BenchSetupInfo
   json& jsonSetups = root["setups"] = json::array();
   for (const BenchSetupInfo& s : setups)
     jsonSetups.push_back({{"label", s.label}, {"axis", s.axis}, {"axis_value", s.axisValue},
-                          {"width", s.width}, {"height", s.height}});
+                          {"width", s.width}, {"height", s.height}, {"fps", s.fps},
+                          {"cycle", s.cycle}, {"loop_times", s.loopTimes}, {"pose_ms", s.poseMs}});
   json& jsonResults = root["results"] = json::array();
   for (const BenchResult& r : results)
     jsonResults.push_back(
@@ -35,7 +37,8 @@ std::string benchJson(const BenchRunInfo& info, const std::vector<BenchSetupInfo
                     {"mean_signed", r.error.meanSigned}, {"pixels", r.error.pixels},
                     {"pixels_in_shadow", r.error.pixelsInShadow}}},
          {"reference_seconds", r.referenceSeconds}, {"reference_cache", r.referenceCache},
-         {"pareto", r.pareto}});
+         {"pareto", r.pareto}, {"bvh_ms_median", r.bvhMsMedian}, {"bvh_ms_max", r.bvhMsMax},
+         {"loop_times", r.loopTimes}, {"loop_ms", r.loopMs}, {"loop_bvh_ms", r.loopBvhMs}});
   return root.dump(1) + "\n";
 }
 
@@ -58,10 +61,13 @@ std::string parseBenchJson(const std::string& text, BenchRunInfo& info,
     info.rounds = root.at("rounds").get<int>();
     info.referenceSamples = root.at("reference_samples").get<int>();
     info.seconds = root.at("seconds").get<double>();
+    // Fields added later (the loop's, the BVH's) default when absent: older files still load.
+    const std::vector<double> none;
     for (const json& s : root.at("setups"))
       setups.push_back({s.at("label").get<std::string>(), s.at("axis").get<std::string>(),
                         s.at("axis_value").get<double>(), s.at("width").get<int>(),
-                        s.at("height").get<int>()});
+                        s.at("height").get<int>(), s.value("fps", 0.0), s.value("cycle", 0.0),
+                        s.value("loop_times", none), s.value("pose_ms", none)});
     for (const json& j : root.at("results")) {
       BenchResult r;
       r.setup = j.at("setup").get<size_t>();
@@ -90,6 +96,11 @@ std::string parseBenchJson(const std::string& text, BenchRunInfo& info,
       r.referenceSeconds = j.at("reference_seconds").get<double>();
       r.referenceCache = j.at("reference_cache").get<int>();
       r.pareto = j.at("pareto").get<bool>();
+      r.bvhMsMedian = j.value("bvh_ms_median", 0.0);
+      r.bvhMsMax = j.value("bvh_ms_max", 0.0);
+      r.loopTimes = j.value("loop_times", none);
+      r.loopMs = j.value("loop_ms", none);
+      r.loopBvhMs = j.value("loop_bvh_ms", none);
       results.push_back(std::move(r));
     }
   } catch (const json::exception& error) {

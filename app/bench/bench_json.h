@@ -19,6 +19,10 @@ struct BenchSetupInfo {
   std::string label, axis;
   double axisValue = 0;
   int width = 0, height = 0;
+  // An animated setup (preset animated): frames per second, one cycle's seconds, and the
+  // milliseconds of posing + uploading each frame; empty / 0 otherwise.
+  double fps = 0, cycle = 0;
+  std::vector<double> loopTimes, poseMs;
 };
 std::vector<BenchSetupInfo> setupInfos(const std::vector<BenchSetup>& setups);
 

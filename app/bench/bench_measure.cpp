@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "bench/bench_reference.h"
 #include "core/pipeline.h"
+#include "reference/reference_trace.h"
 
 ParamSnapshot::ParamSnapshot(const Pipeline& pipeline) {
   for (const std::string& key : pipeline.paramKeys()) {
@@ -38,6 +40,8 @@ std::vector<std::string> timedStages(const Pipeline& pipeline, const std::string
 
 bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchConfig& config,
                   int referenceSamples, BenchResult& r) {
+  if (config.referenceSamples > 0)
+    return measureReferenceError(pipeline, frame, setup, config, referenceSamples, r);
   // 1. What is measured.
   r = BenchResult{};
   r.setup = setup;
@@ -85,6 +89,7 @@ bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchCon
 
 void timeFrame(Pipeline& pipeline, Frame& frame, const BenchResult& result, std::uint32_t frameKey,
                FrameTimes* times) {
+  if (result.method == "reference") return timeReferenceFrame(pipeline, frame, result, frameKey, times);
   frame.frameKey = frameKey;
   pipeline.run(frame, {pipeline.methodOutput(result.method)});
   if (!times) return;
@@ -106,4 +111,8 @@ void summarize(const FrameTimes& times, BenchResult& r) {
   r.msMin = *std::min_element(times.totals.begin(), times.totals.end());
   r.msMax = *std::max_element(times.totals.begin(), times.totals.end());
   for (const auto& [stage, values] : times.stages) r.stageMs[stage] = median(values);
+  if (!times.bvhMs.empty()) {
+    r.bvhMsMedian = median(times.bvhMs);
+    r.bvhMsMax = *std::max_element(times.bvhMs.begin(), times.bvhMs.end());
+  }
 }

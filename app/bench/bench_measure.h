@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 class Pipeline;
 struct Frame;
 struct Param;
+class ReferenceTracer;
 
 // Every parameter's value and auto flag now, restored between configurations.
 class ParamSnapshot {
@@ -37,19 +39,24 @@ std::string applySets(Pipeline& pipeline, const std::vector<std::string>& sets);
 // parameters, and its error against the ground truth on one frame (frame key 0; the
 // reference at m x m `referenceSamples`). Returns false while the reference is still being
 // traced in the background (reference.background: call again on a later frame). Throws
-// std::runtime_error when the frame gives no error metrics.
+// std::runtime_error when the frame gives no error metrics. A configuration of the reference
+// as a method (referenceSamples > 0) is measured by app/bench/bench_reference.h.
 bool measureError(Pipeline& pipeline, Frame& frame, size_t setup, const BenchConfig& config,
                   int referenceSamples, BenchResult& result);
 
 // Collects timed frames of one configuration (its sets applied): each frame runs only the
-// method's stages.
+// method's stages (the reference as a method: bench_reference.h).
 struct FrameTimes {
   std::vector<double> totals;                          // ms per frame, summed over the stages
   std::map<std::string, std::vector<double>> stages;  // ms per frame of each timed stage
+  // The reference as a method: its BVH (kept between the frames of a static scene) and the
+  // milliseconds of each build.
+  std::shared_ptr<ReferenceTracer> tracer;
+  std::vector<double> bvhMs;
 };
 void timeFrame(Pipeline& pipeline, Frame& frame, const BenchResult& result, std::uint32_t frameKey,
                FrameTimes* times);  // times == nullptr: a warm-up frame
-// Fills the result's frames, median / min / max and per-stage medians.
+// Fills the result's frames, median / min / max, per-stage medians and BVH builds.
 void summarize(const FrameTimes& times, BenchResult& result);
 
 double median(std::vector<double> values);

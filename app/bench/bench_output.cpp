@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "io/image_export.h"
+#include "bench/bench_measure.h"
 #include "bench/pareto.h"
 #include "bench/plot.h"
 
@@ -51,6 +52,28 @@ std::string stageTimes(const BenchResult& r, const std::string& separator = ", "
   return joined(parts, separator);
 }
 
+// An animated setup's worst frame: its time in the loop (0 without a loop).
+double worstFrameTime(const BenchResult& r) {
+  if (r.loopMs.empty() || r.loopMs.size() != r.loopTimes.size()) return 0;
+  return r.loopTimes[size_t(std::max_element(r.loopMs.begin(), r.loopMs.end()) - r.loopMs.begin())];
+}
+
+// loop.csv: one row per frame of an animated setup and configuration.
+std::string loopCsv(const std::vector<BenchSetup>& setups, const std::vector<BenchResult>& results) {
+  std::ostringstream out;
+  out << "setup,config,method,frame,time,ms,bvh_ms,pose_upload_ms\n";
+  for (const BenchResult& r : results) {
+    const BenchSetup& s = setups[r.setup];
+    for (size_t i = 0; i < r.loopMs.size() && i < r.loopTimes.size(); ++i) {
+      out << csvField(s.label) << "," << csvField(r.label) << "," << r.method << "," << i << ","
+          << fixed(r.loopTimes[i], 4) << "," << fixed(r.loopMs[i], 3) << ","
+          << (r.loopBvhMs.size() > i ? fixed(r.loopBvhMs[i], 3) : std::string("")) << ","
+          << (i < s.poseMs.size() ? fixed(s.poseMs[i], 3) : "") << "\n";
+    }
+  }
+  return out.str();
+}
+
 std::string csv(const BenchRunInfo& info, const std::vector<BenchSetup>& setups,
                 const std::vector<BenchResult>& results) {
   std::ostringstream out;
@@ -68,7 +91,8 @@ std::string csv(const BenchRunInfo& info, const std::vector<BenchSetup>& setups,
         fixed(r.error.meanAbsInShadow, 6), fixed(r.error.p99, 6), fixed(r.error.meanSigned, 6),
         std::to_string(r.error.pixels), std::to_string(r.error.pixelsInShadow),
         std::to_string(info.referenceSamples * info.referenceSamples), fixed(r.referenceSeconds, 3),
-        cacheName(r.referenceCache), r.pareto ? "1" : "0"};
+        cacheName(r.referenceCache), r.pareto ? "1" : "0", fixed(r.bvhMsMedian, 3),
+        fixed(r.bvhMsMax, 3), std::to_string(r.loopMs.size()), fixed(worstFrameTime(r), 4)};
     for (size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csvField(fields[i]);
     out << "\n";
   }
@@ -240,6 +264,108 @@ void attyTables(std::ostringstream& md, const std::vector<BenchSetup>& setups,
   md << "\n";
 }
 
+// The reference as a method: its BVH builds, apart from its trace (bench_reference.h).
+void referenceNote(std::ostringstream& md, const std::vector<BenchResult>& results, size_t setup) {
+  std::vector<std::string> parts;
+  bool rebuilt = false;
+  for (const BenchResult& r : results) {
+    if (r.setup != setup || r.method != "reference") continue;
+    rebuilt = rebuilt || r.stageMs.count("bvh_build");
+    parts.push_back(r.label + ": BVH " + fixed(r.bvhMsMedian, 1) + " ms, trace " +
+                    fixed(r.stageMs.count("embree_trace") ? r.stageMs.at("embree_trace") : 0, 1) + " ms");
+  }
+  if (parts.empty()) return;
+  md << "The reference as a method (Embree on the CPU, m x m light samples at the cell centres, "
+        "as raster4d samples the light; measured against the truth above): "
+     << (rebuilt ? "its BVH is rebuilt every frame (the scene moves) and counted in its time"
+                 : "its BVH is built once (the scene does not move) and not counted in its time")
+     << "; medians: " << joined(parts, "; ") << ".\n\n";
+}
+
+// An animated setup (bench_animated.h): per configuration, the median and worst frame over
+// the loop; Wang et al.'s comparison, raster4d against the reference at the same samples
+// with its BVH rebuilt; every frame's milliseconds.
+void loopTables(std::ostringstream& md, const BenchSetup& setup, size_t s,
+                const std::vector<BenchResult>& results) {
+  std::vector<const BenchResult*> rows;
+  for (const BenchResult& r : results) if (r.setup == s) rows.push_back(&r);
+  if (rows.empty()) return;
+  md << "### Loop: " << setup.loopTimes.size() << " frames at " << fixed(setup.fps, 2)
+     << " fps over the " << fixed(setup.cycle, 2) << " s cycle (t = "
+     << fixed(setup.loopTimes.front(), 3) << " .. " << fixed(setup.loopTimes.back(), 3) << " s)\n\n"
+     << "Each frame is the scene posed anew and uploaded as a new GPU scene and frame, so every "
+        "stage recomputes from the posed geometry (light layers, hierarchies, shadow maps) and "
+        "the reference rebuilds its BVH; per configuration one untimed run at the pose, then "
+        "one timed frame. Posing + upload (charged to no method): median "
+     << fixed(median(setup.poseMs), 1) << " ms, worst "
+     << fixed(setup.poseMs.empty() ? 0 : *std::max_element(setup.poseMs.begin(), setup.poseMs.end()), 1)
+     << " ms. Error: at the first frame's pose.\n\n"
+     << "| configuration | method | median ms/frame | worst frame ms | worst at t (s) | BVH build median / worst ms | trace median ms | mean abs e in shadow |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (const BenchResult* r : rows) {
+    const bool reference = r->method == "reference";
+    md << "| " << r->label << " | " << r->method << " | " << fixed(r->msMedian, 1) << " | "
+       << fixed(r->msMax, 1) << " | " << fixed(worstFrameTime(*r), 3) << " | "
+       << (reference ? fixed(r->bvhMsMedian, 1) + " / " + fixed(r->bvhMsMax, 1) : "-") << " | "
+       << (reference && r->stageMs.count("embree_trace") ? fixed(r->stageMs.at("embree_trace"), 1) : "-")
+       << " | " << fixed(r->error.meanAbsInShadow, 4) << " |\n";
+  }
+  // Wang et al. §5 (Fig. 1, Table 1): 4D rasterization against a ray tracer at the same
+  // uniform light samples, which rebuilds its BVH every frame of the dynamic Toys (25x).
+  std::ostringstream wang;
+  for (const BenchResult* raster : rows) {
+    if (raster->method != "raster4d") continue;
+    const auto samples = raster->params.find("raster4d.samples");
+    if (samples == raster->params.end()) continue;
+    for (const BenchResult* ref : rows) {
+      const auto m = ref->params.find("reference.samples");
+      if (ref->method != "reference" || m == ref->params.end() || m->second != samples->second) continue;
+      wang << "| " << samples->second << "x" << samples->second << " | " << fixed(raster->msMedian, 1)
+           << " | " << fixed(ref->msMedian, 1) << " | " << fixed(ref->bvhMsMedian, 1) << " | "
+           << fixed(ref->stageMs.count("embree_trace") ? ref->stageMs.at("embree_trace") : 0, 1)
+           << " | **" << fixed(raster->msMedian / std::max(ref->msMedian, 1e-9), 3) << "** | "
+           << fixed(ref->msMedian / std::max(raster->msMedian, 1e-9), 2) << "x |\n";
+    }
+  }
+  if (!wang.str().empty())
+    md << "\nWang et al.'s comparison, side by side in this run: raster4d (4D rasterization, on "
+          "the GPU through OpenGL) against the reference ray tracer (Embree, CPU) at the same m x m "
+          "uniform light samples, its BVH rebuilt every frame (theirs: Toys 15 fps against 0.60 fps "
+          "with OptiX rebuilding its BVH, a 25x speed-up, Fig. 1). Medians over the loop:\n\n"
+          "| samples | raster4d ms | reference ms (all) | its BVH build ms | its trace ms | raster4d / reference | speed-up of raster4d |\n"
+          "|---|---|---|---|---|---|---|\n" << wang.str();
+  md << "\nEvery frame (ms; loop.csv has them too):\n\n| frame | t (s) | pose + upload |";
+  for (const BenchResult* r : rows) md << " " << r->label << " |";
+  md << "\n|---|---|---|";
+  for (size_t i = 0; i < rows.size(); ++i) md << "---|";
+  md << "\n";
+  for (size_t i = 0; i < setup.loopTimes.size(); ++i) {
+    md << "| " << i << " | " << fixed(setup.loopTimes[i], 3) << " | "
+       << (i < setup.poseMs.size() ? fixed(setup.poseMs[i], 1) : "-");
+    for (const BenchResult* r : rows) md << " | " << (i < r->loopMs.size() ? fixed(r->loopMs[i], 1) : "-");
+    md << " |\n";
+  }
+  md << "\n";
+}
+
+// An animated setup's milliseconds against the loop's time, a line per configuration.
+PlotSpec frameTimesOf(const std::vector<BenchResult>& results, size_t setup, const std::string& title) {
+  PlotSpec spec;
+  spec.title = title;
+  spec.xLabel = "time in the animation (s)";
+  spec.yLabel = "milliseconds per frame (log)";
+  spec.logX = false;
+  spec.logY = true;
+  spec.connectSeries = true;
+  for (const BenchResult& r : results) {
+    if (r.setup != setup || r.loopMs.empty()) continue;
+    spec.seriesNames.push_back(r.label);
+    for (size_t i = 0; i < r.loopMs.size() && i < r.loopTimes.size(); ++i)
+      spec.points.push_back({r.loopTimes[i], r.loopMs[i], int(spec.seriesNames.size() - 1), r.label, false});
+  }
+  return spec;
+}
+
 // Plot series: the families in order of appearance.
 PlotSpec scatterOf(const std::vector<BenchResult>& results, size_t setup, const std::string& title) {
   PlotSpec spec;
@@ -265,7 +391,8 @@ std::vector<std::string> benchCsvColumns() {
           "method", "family", "sets", "timed_stages", "shadow_map", "frames", "ms_median", "ms_min",
           "ms_max", "stage_ms_median", "rmse", "max_error", "mean_abs_error_in_shadow", "p99_abs_error", "mean_signed_error",
           "pixels", "pixels_in_shadow", "reference_samples", "reference_seconds",
-          "reference_cache", "pareto"};
+          "reference_cache", "pareto", "bvh_ms_median", "bvh_ms_max", "loop_frames",
+          "worst_frame_time"};
 }
 
 void markParetoFrontiers(std::vector<BenchResult>& results) {
@@ -297,6 +424,10 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
   std::vector<std::filesystem::path> written;
   writeTextFile(directory / "results.csv", csv(info, setups, results));
   written.push_back(directory / "results.csv");
+  if (std::any_of(setups.begin(), setups.end(), [](const BenchSetup& s) { return s.animated(); })) {
+    writeTextFile(directory / "loop.csv", loopCsv(setups, results));
+    written.push_back(directory / "loop.csv");
+  }
 
   // 1. How it was measured, and the stages each method's time covers (from the graph).
   std::ostringstream md;
@@ -312,6 +443,15 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
         "each switch); each frame runs only the stages the method's visibility depends on in "
         "the stage graph, timed with glFinish + steady clock per stage and summed. Not counted: "
         "composite, hash, reference, error.\n";
+  if (std::any_of(setups.begin(), setups.end(), [](const BenchSetup& s) { return s.animated(); }))
+    md << "- Animated setups (preset animated): the timed frames are instead one per frame of "
+          "the animation's cycle, each at its own pose with everything rebuilt (one untimed run "
+          "at the pose first); median and worst frame in each setup's loop table.\n";
+  if (std::any_of(results.begin(), results.end(), [](const BenchResult& r) { return r.method == "reference"; }))
+    md << "- The reference as a method (`reference m x m`): Embree on the CPU at m x m light "
+          "samples at the cell centres, its time the G-buffer and light stages, the G-buffer's "
+          "read-back, the trace on every core, and the BVH build where the scene moves; median "
+          "of the same timed frames.\n";
   std::vector<std::string> charged;
   for (const BenchResult& r : results) {
     const std::string line = "`" + r.method + "`: " + joined(r.stages, " + ");
@@ -349,6 +489,8 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
       if (r.pareto) frontier.push_back(r.label);
     }
     md << "\nPareto frontier: " << joined(frontier, ", ") << ".\n\n";
+    referenceNote(md, results, s);
+    if (setups[s].animated()) loopTables(md, setups[s], s, results);
     // Speed ratio linear/binary : hierarchical at equal rays (thesis: 3.1x, dragon, 3x3).
     std::ostringstream ratios;
     for (const BenchResult& h : results) {
@@ -385,15 +527,23 @@ std::vector<std::filesystem::path> writeBenchOutputs(const std::filesystem::path
     const bool sweptSetup = !setups[s].axis.empty() && setups[s].axis != "map";
     if (count < 3 || (sweptSetup && count < 6)) continue;
     const std::string stem = s == 0 ? "speed_vs_error" : "speed_vs_error_" + fileSafe(setups[s].label);
-    for (const auto& path : writePlot(directory / stem, scatterOf(results, s, "Speed against error: " + setups[s].label)))
+    const std::string truth = std::to_string(info.referenceSamples) + "x" + std::to_string(info.referenceSamples);
+    for (const auto& path : writePlot(directory / stem, scatterOf(results, s, "Speed against error: " + setups[s].label +
+                                                                     " (truth: Embree " + truth + " stratified)")))
       written.push_back(path);
     charts.push_back(stem);
+    if (!setups[s].animated()) continue;
+    const std::string loopStem = "frame_times" + (s == 0 ? std::string() : "_" + fileSafe(setups[s].label));
+    for (const auto& path : writePlot(directory / loopStem, frameTimesOf(results, s, "Milliseconds per frame over the loop: " + setups[s].label)))
+      written.push_back(path);
+    charts.push_back(loopStem);
   }
   std::map<std::string, PlotSpec> axisPlots;
   for (const BenchResult& r : results) {
     const BenchSetup& setup = setups[r.setup];
     if (setup.axis.empty()) continue;
     const bool map = setup.axis == "map";  // Atty Fig. 17: error against the map's size
+    if (map && r.method == "reference") continue;  // it has no map: on the scatter only
     PlotSpec& spec = axisPlots[setup.axis];
     spec.title = "Error against " + setup.axis + ": " + info.scene;
     spec.xLabel = setup.axis + (map ? " (texels per side)" : setup.axis == "light_scale" ? " (x scene light)" : setup.axis == "lateral" ? " (light widths)" : " (0 receiver .. 1 light)");

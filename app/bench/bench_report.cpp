@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "bench/bench_animated.h"
 #include "bench/bench_configs.h"
 #include "bench/bench_measure.h"
 #include "bench/bench_output.h"
@@ -71,8 +72,10 @@ int runBench(const BenchOptions& options) {
     if (std::string problem = posedSceneProblem(rest, options.time); !problem.empty())
       throw InputError(printable(options.scene, 200) + ": " + problem);
     scene = poseAt(rest, options.time);
-    BenchPlanOptions planOptions{options.preset, options.sweeps, options.width, options.height};
-    setups = makeBenchPlan(scene, planOptions, pipeline);
+    BenchPlanOptions planOptions{options.preset, options.sweeps, options.width, options.height,
+                                 options.fps, options.loopFrames, options.time};
+    // Preset animated poses each frame itself: it plans from the scene at rest.
+    setups = makeBenchPlan(options.preset == "animated" ? rest : scene, planOptions, pipeline);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "penumbra bench: %s\n", error.what());
     return 2;
@@ -176,14 +179,15 @@ int runBench(const BenchOptions& options) {
     size_t done = 0;
     const int rounds = std::max(1, std::min(options.rounds, options.frames));
     for (size_t s = 0; s < setups.size(); ++s) {
-      const BenchSetup& setup = setups[s];
+      BenchSetup& setup = setups[s];
       GpuScene gpuScene(setup.scene);
       Frame frame(setup.scene, gpuScene, pipeline);
       frame.eyeWidth = setup.width;
       frame.eyeHeight = setup.height;
       const size_t first = results.size();
       std::vector<FrameTimes> times(setup.configs.size());
-      for (int round = 0; round < rounds; ++round) {
+      // An animated setup: the error frames here, its timed frames over its loop below.
+      for (int round = 0; round < (setup.animated() ? 1 : rounds); ++round) {
         const int share = options.frames / rounds + (round < options.frames % rounds ? 1 : 0);
         for (size_t k = 0; k < setup.configs.size(); ++k) {
           const BenchConfig& config = setup.configs[k];
@@ -195,6 +199,7 @@ int runBench(const BenchOptions& options) {
             if (!measureError(pipeline, frame, s, config, options.referenceSamples, results.back()))
               throw std::runtime_error("reference still pending for " + config.label);
           }
+          if (setup.animated()) continue;
           const BenchResult& r = results[first + k];
           pipeline.param("reference.enabled").value = 0;
           const int warmup = round == 0 ? options.warmup : 1;
@@ -202,12 +207,21 @@ int runBench(const BenchOptions& options) {
             timeFrame(pipeline, frame, r, std::uint32_t(1 + round * 1000 + i),
                       i < warmup ? nullptr : &times[k]);
         }
-        std::printf("  %s: round %d/%d done\n", setup.label.c_str(), round + 1, rounds);
+        if (!setup.animated())
+          std::printf("  %s: round %d/%d done\n", setup.label.c_str(), round + 1, rounds);
         std::fflush(stdout);
       }
+      if (setup.animated())
+        setup.poseMs = timeLoop(pipeline, defaults, options.sets, setup,
+                                std::vector<BenchResult>(results.begin() + long(first), results.end()), times);
       for (size_t k = 0; k < setup.configs.size(); ++k) {
         BenchResult& r = results[first + k];
         summarize(times[k], r);
+        if (setup.animated()) {
+          r.loopTimes = setup.loopTimes;
+          r.loopMs = times[k].totals;
+          if (times[k].stages.count("bvh_build")) r.loopBvhMs = times[k].stages.at("bvh_build");
+        }
         if (r.referenceCache == 2) r.referenceSeconds = cachedSeconds[s];
         std::printf("[%3zu/%zu] %s | %-40s %8.1f ms  mean|e| in shadow %.4f  RMSE %.4f\n", ++done,
                     configurationCount, setup.label.c_str(), r.label.c_str(), r.msMedian,

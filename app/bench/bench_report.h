@@ -23,6 +23,8 @@ struct BenchOptions {
   int frames = 10, warmup = 2;
   int rounds = 5;                   // the frames are spread over this many passes (see .cpp)
   int referenceSamples = 16;
+  double fps = 12;                  // preset animated: frames per second over one cycle
+  int loopFrames = 0;               // preset animated: only the first N frames (0: all)
   double timeLimit = 900;           // seconds of reference tracing allowed (estimated first)
   std::string commandLine;          // for the report
 };
@@ -48,6 +50,13 @@ struct BenchResult {
   double referenceSeconds = 0;      // tracing time (0 when cached)
   int referenceCache = 0;           // 0 computed, 1 memory, 2 disk
   bool pareto = false;              // on the frontier of its setup (ms, mean |e| in shadow)
+  // The reference as a method (app/bench/bench_reference.h): its BVH builds, median and
+  // slowest (ms; part of msMedian only when "bvh_build" is one of `stages`: a moving scene).
+  double bvhMsMedian = 0, bvhMsMax = 0;
+  // An animated setup's loop (app/bench/bench_animated.h): the time of each timed frame and
+  // its milliseconds (msMedian and msMax are their median and worst).
+  std::vector<double> loopTimes, loopMs;
+  std::vector<double> loopBvhMs;    // the reference rebuilding its BVH: each frame's build
 
   double counter(const std::string& name) const {
     const auto it = counters.find(name);

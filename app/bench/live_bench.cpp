@@ -1,8 +1,10 @@
 #include "bench/live_bench.h"
 
+#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
+#include "bench/bench_reference.h"
 #include "core/frame.h"
 #include "core/pipeline.h"
 #include "gl/gpu_scene.h"
@@ -69,6 +71,10 @@ LiveBench::LiveBench() = default;
 LiveBench::~LiveBench() { release(); }
 
 void LiveBench::release() {
+  if (tracing_.valid()) {  // its trace reads the scene: done (one frame's trace) before it goes
+    tracing_.wait();
+    tracing_ = {};
+  }
   frame_.reset();  // before the pipeline it refers to; the reference's thread stops with it
   defaults_.reset();
   pipeline_.reset();
@@ -121,8 +127,23 @@ bool LiveBench::step() {
     if (!waiting_) step_ = 0;
     return true;
   }
-  timeFrame(*pipeline_, *frame_, results_[next_], std::uint32_t(1 + step_),
-            step_ < options_.warmup ? nullptr : &times_);
+  const BenchResult& result = results_[next_];
+  if (result.method == "reference" && step_ >= options_.warmup) {
+    // Its trace on a thread of its own; this step or a later one collects it.
+    if (!tracing_.valid()) {
+      auto work = std::make_shared<ReferenceFrameWork>(
+          prepareReferenceFrame(*pipeline_, *frame_, result, std::uint32_t(1 + step_)));
+      tracing_ = std::async(std::launch::async, [this, work, &result] {
+        finishReferenceFrame(scene_, result, *work, times_);
+      });
+    }
+    if (tracing_.wait_for(std::chrono::milliseconds(0)) != std::future_status::ready) return true;
+    std::future<void> done = std::move(tracing_);
+    done.get();  // rethrows a failure
+  } else {
+    timeFrame(*pipeline_, *frame_, result, std::uint32_t(1 + step_),
+              step_ < options_.warmup ? nullptr : &times_);
+  }
   if (++step_ == options_.warmup + options_.frames) {
     summarize(times_, results_[next_]);
     times_ = {};
@@ -133,9 +154,9 @@ bool LiveBench::step() {
 }
 
 void LiveBench::cancel() {
+  release();  // waits for a trace under way
   if (next_ < results_.size() && results_[next_].frames == 0) results_.pop_back();
   configs_.resize(next_);
-  release();
 }
 
 float LiveBench::progress() const {

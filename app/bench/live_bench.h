@@ -3,8 +3,11 @@
 // more configuration), measured one step per call so the window's main thread (which owns
 // the GL context) keeps drawing, with progress and cancel. It has its own pipeline, GPU scene
 // and frame, so the window's are untouched; its reference traces on a background thread
-// (reference.background) and uses the disk cache as `penumbra bench` does.
+// (reference.background) and uses the disk cache as `penumbra bench` does. The reference as
+// a method (bench/bench_reference.h) traces its timed frames on a thread of their own too:
+// the step that starts one returns, later steps poll it.
 #pragma once
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,6 +59,7 @@ public:
   const std::vector<BenchResult>& results() const { return results_; }
   const std::string& fingerprint() const { return fingerprint_; }  // the scene measured
   const std::string& setupLabel() const { return setupLabel_; }
+  int referenceSamples() const { return options_.referenceSamples; }  // the truth's m
 
 private:
   void release();
@@ -73,4 +77,5 @@ private:
   int step_ = -1;         // -1: its error frame; then warm-up and timed frames
   bool waiting_ = false;  // the reference is being traced
   FrameTimes times_;
+  std::future<void> tracing_;  // the reference as a method: a timed frame's trace
 };

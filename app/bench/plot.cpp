@@ -241,6 +241,7 @@ std::string methodDisplayName(const std::string& method) {
   if (method == "pcss") return "PCSS";
   if (method == "ssm") return "SSM";
   if (method == "raster4d") return "raster4d (exact)";
+  if (method == "reference") return "reference (Embree, CPU)";
   return method;
 }
 

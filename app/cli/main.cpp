@@ -253,7 +253,8 @@ int main(int argc, char** argv) {
   benchCommand->add_option("--time", report.time, "seconds into the scene's animation (every "
                            "configuration measured on the scene posed at that time)")
       ->capture_default_str();
-  benchCommand->add_option("--preset", report.preset, "default, minimal, thesis-table-4.1, atty-4.2");
+  benchCommand->add_option("--preset", report.preset, "default, minimal, thesis-table-4.1, atty-4.2, "
+                           "animated (an animated scene's whole cycle, frame by frame)");
   benchCommand->add_option("--sweep", report.sweeps, "stage.key=v1,v2,... or scene.light_scale=, "
                                                      "scene.lateral=, scene.vertical=, eye.size=WxH,...");
   benchCommand->add_option("--set", report.sets, "stage.key=value for every configuration, repeatable");
@@ -268,6 +269,10 @@ int main(int argc, char** argv) {
                            "share the timed frames")->check(CLI::Range(1, 100))->capture_default_str();
   benchCommand->add_option("--reference-samples", report.referenceSamples, "m: m x m light samples "
                            "per pixel in the reference")->check(CLI::Range(1, 64))->capture_default_str();
+  benchCommand->add_option("--fps", report.fps, "preset animated: frames per second over one "
+                           "cycle of the animation")->check(CLI::Range(0.01, 240.0))->capture_default_str();
+  benchCommand->add_option("--loop-frames", report.loopFrames, "preset animated: only the first N "
+                           "frames of the cycle (0: all)")->check(CLI::Range(0, 100000))->capture_default_str();
   benchCommand->add_option("--time-limit", report.timeLimit, "seconds of reference tracing allowed "
                            "(estimated before starting)")->check(positiveSeconds)->capture_default_str();
 

@@ -12,6 +12,7 @@
 #include "window/ui_live_truth.h"
 #include "window/ui_log.h"
 #include "window/ui_session.h"
+#include "window/ui_state_speed_error.h"
 #include "window/views/ui_view_state.h"
 
 class UiState {
@@ -30,6 +31,7 @@ public:
     std::string settingsPath = "penumbra_settings.json", exportDirectory;  // the tools' paths
     TemporalPanelState temporal;  // the temporal-stability tab's plot (ui_temporal.h)
   } panelMemory;
+  SpeedErrorPanelState speedError;  // the "Speed vs error" panel (ui_state_speed_error.h)
 
   // Messages.
   std::string status;     // the status line: what happened last

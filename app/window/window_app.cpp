@@ -284,7 +284,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   if (layout.lesson > 0)
     drawLessonWindow(state, layout.left, layout.viewsHeight() + layout.timeline, layout.centerWidth(),
                      layout.lesson);
-  stepSpeedErrorPanel();
+  stepSpeedErrorPanel(state);
   stepTemporalPanel(state);  // after this frame's run, whether its tab is shown or not
   drawHelpWindow(state);
   drawShaderLogWindow(state);

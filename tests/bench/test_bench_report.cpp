@@ -65,8 +65,9 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   ASSERT_TRUE(std::filesystem::exists(out / "results.csv")) << result.output;
   const auto rows = readCsv(out / "results.csv");
   // header + every method but the Monte Carlo ones at its defaults + hierarchical x 2 rays
+  // + the reference as a method at 1x1, 2x2, 4x4, 8x8 (not swept: it does not trace)
   const size_t others = Pipeline{}.methods().size() - 2;
-  ASSERT_EQ(rows.size(), 1u + others + 2u) << result.output;
+  ASSERT_EQ(rows.size(), 1u + others + 2u + 4u) << result.output;
   EXPECT_EQ(rows[0], benchCsvColumns());
   const std::vector<std::string> numeric = {"ms_median", "ms_min", "ms_max", "shadow_map",
                                             "rmse", "max_error", "mean_abs_error_in_shadow",
@@ -102,7 +103,16 @@ TEST(BenchReport, TinyRunWritesTheExpectedColumnsAndFiniteNumbers) {
   EXPECT_EQ(info.scene, "plate");
   const Pipeline graph;
   for (const BenchResult& r : results) {
-    EXPECT_EQ(r.stages, graph.dependencies({graph.methodOutput(r.method)})) << r.label;
+    if (r.method == "reference") {  // the stages its rays need, its read-back and its trace
+      std::vector<std::string> expected = graph.dependencies({"reference.visibility"});
+      expected.erase(std::find(expected.begin(), expected.end(), "reference"));
+      expected.push_back("readback");
+      expected.push_back("embree_trace");
+      EXPECT_EQ(r.stages, expected) << r.label;
+      EXPECT_GT(r.bvhMsMedian, 0) << r.label;  // built once, reported apart
+    } else {
+      EXPECT_EQ(r.stages, graph.dependencies({graph.methodOutput(r.method)})) << r.label;
+    }
     double sum = 0;
     for (const std::string& stage : r.stages) {
       ASSERT_TRUE(r.stageMs.count(stage)) << r.label << " " << stage;
@@ -145,7 +155,7 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   const size_t others = graph.methods().size() - 2;  // every method but trace and filter
   const auto thesis = makeBenchPlan(plate, {"thesis-table-4.1", {}, 0, 0}, graph);
   ASSERT_EQ(thesis.size(), 3u);  // map sweep at 512x384, then 400x300 and 640x512
-  EXPECT_EQ(thesis[0].configs.size(), others + 6u * 3u);
+  EXPECT_EQ(thesis[0].configs.size(), others + 6u * 3u + 4u);  // + the reference at 4 sizes
   EXPECT_EQ(thesis[1].width, 400);
   EXPECT_EQ(thesis[2].height, 512);
   const auto atty = makeBenchPlan(plate, {"atty-4.2", {}, 0, 0}, graph);
@@ -154,7 +164,8 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   // the swept size (Fig. 17's x axis); every other method once per map size.
   for (const BenchSetup& setup : atty) {
     const size_t maps = setup.axis == "map" ? 7u : 1u;
-    EXPECT_EQ(setup.configs.size(), maps * (others + 1u + 3u)) << setup.label;  // ssm x 2, MC x 3
+    // ssm x 2, MC x 3; the map sweep's scatter also has the reference at 4 sample counts
+    EXPECT_EQ(setup.configs.size(), maps * (others + 1u + 3u) + (maps > 1 ? 4u : 0u)) << setup.label;
     std::map<std::string, int> ssmPasses;
     for (const BenchConfig& config : setup.configs) {
       if (config.method != "ssm") continue;
@@ -181,7 +192,8 @@ TEST(BenchPlan, PresetsAndSweepsHaveTheDocumentedShape) {
   ASSERT_EQ(swept.size(), 2u);
   EXPECT_EQ(swept[1].width, 64);
   // Every method reads the light stage, so each is swept over both resolutions.
-  EXPECT_EQ(swept[0].configs.size(), 2u * (1u + others));
+  // The reference reads no light.resolution: once.
+  EXPECT_EQ(swept[0].configs.size(), 2u * (1u + others) + 4u);
   EXPECT_THROW(makeBenchPlan(plate, {"minimal", {"scene.vertical=2"}, 0, 0}, graph), std::invalid_argument);
   // The default preset measures `auto` (docs/accuracy.md) beside the fixed configurations; its
   // assignments apply and leave map, layers and rays automatic.

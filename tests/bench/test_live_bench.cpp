@@ -3,6 +3,8 @@
 // one matched as "current", only while the parameters stay; cancel keeps what is complete.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -68,8 +70,11 @@ TEST(LiveBench, MeasuresThePresetAndTheCurrentConfiguration) {
   ASSERT_FALSE(bench.running()) << steps << " steps: " << bench.status();
   EXPECT_FLOAT_EQ(bench.progress(), 1.0f);
   const std::vector<BenchResult> results = bench.results();
-  // every method but the Monte Carlo ones at its defaults, hierarchical 2x2, current
-  ASSERT_EQ(results.size(), Pipeline{}.methods().size() - 2 + 2);
+  // every method but the Monte Carlo ones at its defaults, hierarchical 2x2, the reference
+  // at 1x1 .. 8x8, current
+  ASSERT_EQ(results.size(), Pipeline{}.methods().size() - 2 + 2 + 4);
+  EXPECT_EQ(std::count_if(results.begin(), results.end(),
+                          [](const BenchResult& r) { return r.method == "reference"; }), 4);
   for (const BenchResult& r : results) {
     EXPECT_EQ(r.frames, 2) << r.label;
     EXPECT_GT(r.msMedian, 0) << r.label;

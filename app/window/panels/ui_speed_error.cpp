@@ -39,20 +39,9 @@ ChartLayout speedErrorChartLayout(const std::vector<const BenchResult*>& points)
 
 namespace {
 
-// 1. The panel's state: the live run, or a loaded file.
-struct PanelState {
-  bool initialised = false;
-  bool live = true;  // showing the live run (else the loaded file)
-  LiveBench bench;
-  int preset = 1;    // index into benchPresetNames(): "minimal"
-  std::string liveMessage;
-  char path[512] = "";
-  std::string loadedPath, fileMessage;
-  BenchRunInfo fileInfo;
-  std::vector<BenchSetupInfo> fileSetups;
-  std::vector<BenchResult> fileResults;
-  int fileSetup = 0;
-};
+// 1. The panel's state (UiState::speedError, window/ui_state_speed_error.h): the live run,
+//    or a loaded file.
+using PanelState = SpeedErrorPanelState;
 
 void load(PanelState& panel) {
   panel.loadedPath = panel.path;
@@ -184,6 +173,15 @@ void drawPlot(const std::vector<const BenchResult*>& points, int current) {
   }
 }
 
+// The presets a live run can measure: every one but `animated`, whose frames are a whole
+// cycle of poses (`penumbra bench --preset animated`); the live run measures the view shown,
+// at the timeline's time.
+std::vector<std::string> livePresets() {
+  std::vector<std::string> presets = benchPresetNames();
+  presets.erase(std::remove(presets.begin(), presets.end(), "animated"), presets.end());
+  return presets;
+}
+
 // 3. The live run's controls: preset, measure / cancel, progress.
 std::string startRun(PanelState& panel, const UiState& state, const std::string& preset) {
   try {
@@ -197,7 +195,7 @@ std::string startRun(PanelState& panel, const UiState& state, const std::string&
 }
 
 void drawLiveControls(PanelState& panel, UiState& state) {
-  const std::vector<std::string> presets = benchPresetNames();
+  const std::vector<std::string> presets = livePresets();
   ImGui::SetNextItemWidth(10 * ImGui::GetFontSize());
   if (ImGui::BeginCombo("preset", presets[size_t(panel.preset)].c_str())) {
     for (size_t i = 0; i < presets.size(); ++i)
@@ -206,7 +204,9 @@ void drawLiveControls(PanelState& panel, UiState& state) {
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The configurations measured: the preset's first setup (as `penumbra "
-                      "bench --preset`), plus the window's current parameters.");
+                      "bench --preset`), plus the window's current parameters. Every preset has "
+                      "the reference as a method at 1x1 to 8x8 samples. A whole animation loop: "
+                      "`penumbra bench --preset animated`.");
   if (panel.bench.running()) {
     if (ImGui::Button("Cancel")) panel.bench.cancel();
   } else if (ImGui::Button("Measure this scene")) {
@@ -219,9 +219,8 @@ void drawLiveControls(PanelState& panel, UiState& state) {
   if (!panel.liveMessage.empty()) ImGui::TextColored({1, 0.5f, 0.4f, 1}, "%s", panel.liveMessage.c_str());
 }
 
-// Never destroyed: its live run holds GL objects, and the GL context is gone at exit.
-PanelState& panelState() {
-  static PanelState& panel = *new PanelState;
+PanelState& panelState(UiState& state) {
+  PanelState& panel = state.speedError;
   if (!panel.initialised) {
     panel.initialised = true;
     const std::string newest = newestBenchJson(std::filesystem::current_path());
@@ -233,8 +232,8 @@ PanelState& panelState() {
 }  // namespace
 
 std::string startSpeedErrorRun(UiState& state, const std::string& preset) {
-  PanelState& panel = panelState();
-  const std::vector<std::string> presets = benchPresetNames();
+  PanelState& panel = panelState(state);
+  const std::vector<std::string> presets = livePresets();
   const auto found = std::find(presets.begin(), presets.end(), preset);
   if (found == presets.end()) {
     std::string valid;
@@ -248,15 +247,15 @@ std::string startSpeedErrorRun(UiState& state, const std::string& preset) {
   return panel.liveMessage;
 }
 
-bool speedErrorRunning() { return panelState().bench.running(); }
+bool speedErrorRunning(const UiState& state) { return state.speedError.bench.running(); }
 
-int speedErrorPoints() {
-  const std::vector<BenchResult>& results = panelState().bench.results();
+int speedErrorPoints(const UiState& state) {
+  const std::vector<BenchResult>& results = state.speedError.bench.results();
   return int(std::count_if(results.begin(), results.end(), [](const BenchResult& r) { return r.frames > 0; }));
 }
 
-void stepSpeedErrorPanel() {
-  PanelState& panel = panelState();
+void stepSpeedErrorPanel(UiState& state) {
+  PanelState& panel = state.speedError;
   if (!panel.bench.running()) return;
   try {
     panel.bench.step();
@@ -267,7 +266,7 @@ void stepSpeedErrorPanel() {
 }
 
 void drawSpeedErrorPanel(UiState& state) {
-  PanelState& panel = panelState();
+  PanelState& panel = panelState(state);
   if (ImGui::RadioButton("live: this scene", panel.live)) panel.live = true;
   sameLineIfButtonsFit({"(o) a results.json"});
   if (ImGui::RadioButton("a results.json", !panel.live)) {
@@ -288,6 +287,20 @@ void drawSpeedErrorPanel(UiState& state) {
       if (sameScene) current = matchingResult(measured, state.session.pipeline);
       ImGui::TextWrapped("%s%s", panel.bench.setupLabel().c_str(),
                          sameScene ? "" : " (the scene, light or camera changed since: no point is current)");
+      ImGui::TextWrapped("truth: Embree %dx%d stratified", panel.bench.referenceSamples(),
+                         panel.bench.referenceSamples());
+      // A tooltip on the line itself: a (?) after a wrapped line would run past the panel.
+      if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+        ImGui::TextUnformatted("Every error is measured against the exact reference at this many "
+                               "light samples per pixel. The reference is also a method here "
+                               "(\"reference (Embree, CPU)\", 1x1 to 8x8 samples at the cell "
+                               "centres): where its points lie left of or below another method's, "
+                               "the CPU ray tracer is the better choice on this machine.");
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
     }
   } else {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 60);
@@ -309,8 +322,9 @@ void drawSpeedErrorPanel(UiState& state) {
     for (const BenchResult& r : panel.fileResults)  // the frontier is per setup
       if (r.setup == size_t(panel.fileSetup)) points.push_back(&r);
     if (!points.empty())
-      ImGui::TextWrapped("%s, %s (another run: no point is marked current)",
-                         panel.fileInfo.scene.c_str(), panel.fileInfo.started.c_str());
+      ImGui::TextWrapped("%s, %s (another run: no point is marked current); truth: Embree %dx%d",
+                         panel.fileInfo.scene.c_str(), panel.fileInfo.started.c_str(),
+                         panel.fileInfo.referenceSamples, panel.fileInfo.referenceSamples);
   }
   if (!points.empty()) {
     drawPlot(points, current);

@@ -129,9 +129,9 @@ ScriptRunner::Step ScriptRunner::step(UiState& state) {
     return Step::Running;
   }
   if (context_.waitForSpeedError) {
-    if (speedErrorRunning()) return Step::Running;  // the live run steps once per frame
+    if (speedErrorRunning(state)) return Step::Running;  // the live run steps once per frame
     context_.waitForSpeedError = false;
-    std::printf("penumbra: speed vs error: %d configurations measured\n", speedErrorPoints());
+    std::printf("penumbra: speed vs error: %d configurations measured\n", speedErrorPoints(state));
     std::fflush(stdout);
   }
   if (waitForNext(state)) return Step::Running;
