@@ -8,7 +8,11 @@ void pickSoftShadowMapTexels(UiState& state) {
   if (!pick || !state.session.frame || !pipeline.hasStage("ssm")) return;
   Stage& ssm = pipeline.stage("ssm");
   const glm::ivec2 eye(state.session.frame->eyeWidth, state.session.frame->eyeHeight);
-  const int maps = ssm.param("resolution").asInt();
+  int maps = ssm.param("resolution").asInt();
+  if (ssm.param("resolution").automatic) {  // the size auto chose in the last run (auto_ssm.h)
+    const auto chosen = state.session.frame->counters.find("auto.ssm_resolution");
+    if (chosen != state.session.frame->counters.end()) maps = int(chosen->second);
+  }
   if (state.views.pickSpace == eye) {  // image coordinates: row 0 at the top
     ssm.param("pick_x").value = pick->x;
     ssm.param("pick_y").value = eye.y - 1 - pick->y;
