@@ -5,6 +5,7 @@
 #include "shared/ssm_common.glsl"
 layout(binding = SSM_PATCHES_OCCLUDER_UNIT) uniform sampler2D occluderMap;  // this pass's: nearest or farthest surfaces
 layout(std430, binding = DEPTH_BOUNDS_BINDING) readonly buffer Bounds { DepthBounds receivers; };
+layout(std430, binding = SSM_WORK_BINDING) buffer Work { SsmWork work; };
 layout(location = 0) flat out vec4 vPatchRect;  // micro-patch: lsMin.xy, lsMax.xy
 layout(location = 1) flat out float vPatchZ;
 
@@ -32,6 +33,15 @@ void main() {
   vec4 uvExtent = extent / (zVirtual * tanHalfFov().xyxy) * 0.5 + 0.5;
   vec4 uvPatch = vec4(vec2(texel), vec2(texel + 1)) / float(n);
   vec4 uvQuad = clamp(vec4(min(uvExtent.xy, uvPatch.xy), max(uvExtent.zw, uvPatch.zw)), 0.0, 1.0);
+  // The work: this quad's fragments are the texel centres inside it (x + 0.5 in [lo, hi)),
+  // added once per instance, a 64-bit sum (low word and carry), for the cost estimate's check.
+  if (ssm.tolerance.y != 0.0 && gl_VertexID == 0) {
+    ivec2 lo = ivec2(ceil(uvQuad.xy * float(n) - 0.5));
+    ivec2 hi = ivec2(ceil(uvQuad.zw * float(n) - 0.5));
+    uint texels = uint(max(hi.x - lo.x, 0)) * uint(max(hi.y - lo.y, 0));
+    uint before = atomicAdd(work.low, texels);
+    if (before > 0xffffffffu - texels) atomicAdd(work.high, 1u);
+  }
   vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);  // triangle strip
   gl_Position = vec4(mix(uvQuad.xy, uvQuad.zw, corner) * 2.0 - 1.0, 0.0, 1.0);
 }

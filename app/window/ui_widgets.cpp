@@ -29,6 +29,13 @@ std::optional<double> autoChosenValue(const std::string& stage, const Param& par
   if (stage == "light" && param.key == "resolution") return effectiveResolution(param, chosen);
   if (stage == "light" && param.key == "layers") return double(chosen.layers - 1);  // options: one, two, three
   if (stage == "trace" && param.key == "rays") return effectiveRays(param, chosen);
+  const auto counter = [&](const char* name) -> std::optional<double> {  // chosen during the run
+    const auto found = frame->counters.find(name);
+    if (found == frame->counters.end()) return {};
+    return found->second;
+  };
+  if (stage == "light" && param.key == "fov_degrees") return counter("auto.fov_degrees");
+  if (stage == "ssm" && param.key == "resolution") return counter("auto.ssm_resolution");
   if (param.type == Param::Type::Enum) return param.value;  // decided by the pipeline, in place
   return {};
 }

@@ -3,6 +3,7 @@
 #define SSM_PARAMS_BINDING 4    // uniform: SsmParams
 #define DEPTH_BOUNDS_BINDING 5  // storage: DepthBounds (shaders/depth_bounds.comp)
 #define SSM_COUNTERS_BINDING 6  // storage: SsmCounters
+#define SSM_WORK_BINDING 7      // storage: SsmWork (ssm_patches.vert)
 
 // depth_bounds.comp
 #define DEPTH_BOUNDS_MAP_UNIT 0
@@ -26,7 +27,9 @@ struct SsmParams {
                     // w = 1 while drawing the picked occluder texel's footprint only
   ivec4 pick;       // xy = picked receiver's eye pixel (GL rows; -1: none),
                     // zw = picked occluder texel (-1: none)
-  vec4 tolerance;   // x = receiver tolerance (in depth steps between neighbouring texels), yzw unused
+  vec4 tolerance;   // x = receiver tolerance (in depth steps between neighbouring texels),
+                    // y = 1: this draw adds its quads' fragments to SsmWork (one draw per
+                    // pass: the first scissor tile), zw unused
 };
 
 // Min and max of a depth map's texels that hold a surface, as float bits (non-negative
@@ -39,4 +42,11 @@ struct SsmCounters {
   uint clampedPixels;   // eye pixels whose accumulated occlusion exceeded 1 (clamped)
   uint occluderPixels;  // eye pixels in front of the receiver map: occluders, not shadowed
   uint unused0, unused1;
+};
+
+// The micro-patch quads' fragments (texel centres inside each quad, summed over the
+// instances of a pass's first draw), a 64-bit count as two words: the measured work that
+// the cost estimate (stages/soft_shadow_maps/ssm_cost.h) predicts.
+struct SsmWork {
+  uint low, high, unused0, unused1;
 };

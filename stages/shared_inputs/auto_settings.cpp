@@ -206,6 +206,7 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
     out.affordableResolution += 128;
   out.resolution = std::min(out.neededResolution,
                             std::max(out.affordableResolution, out.halfAreaResolution));
+  out.ssmNeed = ssmResolutionNeeded(texelsPerResolution, areasPixels);  // auto_ssm.h
   out.smallestPenumbraWorld = percentile(widthsWorld, 0.02);
   out.smallestPenumbraTexels = percentile(texelsPerResolution, 0.02) * out.resolution;
   if (out.resolution == out.neededResolution) {

@@ -41,6 +41,7 @@
 #include "gl/renderer_calibration.h"
 #include "scene/light_frame.h"
 #include "scene/scene.h"
+#include "soft_shadow_maps/auto_ssm.h"
 
 struct AutoSettings {
   int resolution = 512;
@@ -56,6 +57,7 @@ struct AutoSettings {
   double smallestPenumbraPixels = 0;    // and in eye pixels
   int depthComplexity = 0;              // most occluder surfaces on one probe's light ray
   std::vector<std::string> reasons;     // one sentence per choice
+  SsmResolutionNeed ssmNeed;            // ssm.resolution=auto's need (auto_ssm.h; the ssm stage caps it)
 };
 
 inline constexpr double kPenumbraTexels = 6.0;

@@ -5,13 +5,31 @@
 // the trace) and the hash that picks light samples (§3.1, Appendix A). Its output is the uniform block
 // of shaders/shared/light_block.h; a CPU copy goes to frame.light for the CPU-side readers; what `auto` chose stays with this stage
 // (lightAutoSettings()).
+#include "shared_inputs/auto_frustum.h"
 #include "shared_inputs/auto_params.h"
+
+#include <cstdio>
 #include "core/frame.h"
 #include "core/pipeline.h"
 #include "gl/gpu_layout.h"
 #include "gl/hash_kind.h"
 
 namespace {
+
+// light.fov_degrees: `auto` (the default) or a fixed angle.
+Param fovParam() {
+  Param fov = Param::real(
+      "fov_degrees",
+      "Field of view of the light's frustum (Eq 3.1), across the light's longer side. Wider "
+      "covers more of the scene at lower resolution; the light's projection point moves "
+      "closer. auto (the default): 90, or wider where a caster's shadow, seen from any point "
+      "of the light (its far edge), would leave the frustum: receivers outside it read as lit "
+      "(decision 009); at most 150. Casters that no frustum covers (reaching through the "
+      "light's plane) are named in a warning (stages/shared_inputs/auto_frustum.h, decision 135).",
+      kAutoFovFloorDegrees, 10, 150);
+  fov.allowsAuto = fov.automatic = true;
+  return fov;
+}
 
 class LightStage final : public Stage {
 public:
@@ -36,10 +54,7 @@ public:
             "shadow 0.094, all too bright, at 128^2; 0.0125 at 2048^2 (0.106 at 128^2 with "
             "the default normal_offset, capped by the contact gap).",
             512, 128, 2048),
-        Param::real("fov_degrees",
-                    "Field of view of the light's frustum (Eq 3.1). Wider covers more of the "
-                    "scene at lower resolution; the light's projection point moves closer.",
-                    90, 10, 150),
+        fovParam(),
         Param::real("bias", "Constant bias in world units: a receiver point moves this far "
                             "towards the light before it is tested (every depth-map method).",
                     0.0, 0, 1),
@@ -98,13 +113,29 @@ public:
   void run(Frame& frame) override {
     // 1. The light frame of Eq 3.1 (CPU copy for views, reference and the trace panel).
     const Scene& scene = frame.scene;
-    frame.light = computeLightFrame(scene.light, scene.bounds(), param("fov_degrees").asFloat());
+    // The field of view: `auto` covers every caster's shadow from every point of the light
+    // (stages/shared_inputs/auto_frustum.h, docs/decisions/135); a fixed one is warned about.
+    const Param& fov = param("fov_degrees");
+    const FrustumFit fit = fitLightFrustum(scene, fov.max);
+    const double fovDegrees = fov.automatic ? fit.fovDegrees : fov.value;
+    frame.light = computeLightFrame(scene.light, scene.bounds(), float(fovDegrees));
     const LightFrame& l = frame.light;
     // `auto` (stages/shared_inputs/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
     chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
     const AutoSettings& chosen = chosen_;
     frame.autoReasons = chosen.reasons;
+    if (fov.automatic) frame.autoReasons.push_back(fit.reason);
+    const std::string fovWarning = fov.automatic ? fit.warning : fixedFovWarning(fit, fov.value);
+    if (!fovWarning.empty()) {
+      frame.autoReasons.push_back(fovWarning);
+      static std::string lastWarning;  // printed once per distinct warning (the log)
+      if (fovWarning != lastWarning) std::fprintf(stderr, "%s\n", fovWarning.c_str());
+      lastWarning = fovWarning;
+    }
+    frame.counters["auto.fov_degrees"] = fit.fovDegrees;
+    frame.counters["auto.fov_needed"] = fit.neededDegrees;
+    frame.counters["auto.fov_uncovered"] = double(fit.uncovered.size());
     frame.light.mapSize = effectiveResolution(param("resolution"), chosen);
     frame.light.layers = param("layers").automatic ? chosen.layers : param("layers").asInt() + 1;
     frame.light.hashKind = param("hash").asInt();

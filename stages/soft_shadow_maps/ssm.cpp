@@ -20,13 +20,16 @@
 #include "gl/gpu_layout_ssm.h"
 #include "gl/shader_program.h"
 #include "shared/screen_pass_layout.h"
+#include "shared_inputs/auto_settings.h"
 #include "shared_inputs/light_input.h"
+#include "soft_shadow_maps/auto_ssm.h"
 #include "soft_shadow_maps/ssm_cost.h"
 
 // Each pass's bindings (shaders/shared/ssm_layout.h), within GL 4.5's minimums.
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, SSM_PARAMS_BINDING},
                                  gpu::kUniformBindings));
-static_assert(gpu::distinctBelow({DEPTH_BOUNDS_BINDING, SSM_COUNTERS_BINDING}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({DEPTH_BOUNDS_BINDING, SSM_COUNTERS_BINDING, SSM_WORK_BINDING},
+                                 gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({SSM_PATCHES_OCCLUDER_UNIT, SSM_PATCHES_RECEIVER_UNIT},
                                  gpu::kTextureUnits));
 static_assert(gpu::distinctBelow({SSM_PICKED_OCCLUDER_UNIT, SSM_PICKED_RECEIVER_UNIT,
@@ -83,9 +86,18 @@ public:
                       "(10-bit mantissa), which loses small contributions added to large sums "
                       "(§4.1.3, Appendix A, Fig. 14: worse at high resolution).",
                       {"r32f", "r16f"}, 0),
-        Param::integer("resolution", "Texels per side of the occluder, receiver and soft shadow "
-                       "maps. Cost grows with its 4th power (patches x texels per patch); the "
-                       "paper finds ~200 enough (§4.2.3) and uses 128 in Fig. 18-20.", 128, 16, 1024),
+        Param::integerOrAuto(
+            "resolution",
+            "Texels per side of the occluder, receiver and soft shadow maps. Cost grows with "
+            "its 4th power (patches x texels per patch); the paper finds ~200 enough (§4.2.3) "
+            "and uses 128 in Fig. 18-20, but a contact penumbra narrower than a texel becomes "
+            "a step (a plate 0.06 above the ground: mean |error| in shadow 0.106-0.254 at 128, "
+            "0.057 at 512). auto (the default): so that 98% of the penumbra area in view spans "
+            "4 texels, in multiples of 128 in [128, 1024], the largest whose estimated "
+            "micro-patch fragments stay within 2e7 and ssm.budget (64, 32 or 16 where even "
+            "128 would not) "
+            "(stages/soft_shadow_maps/auto_ssm.h).",
+            128, 16, 1024),
         Param::real("fill", "Fraction of the occluder map whose micro-patches are drawn, row by "
                     "row from the bottom: slide it to watch the soft shadow map fill up (1: all).",
                     1.0, 0.0, 1.0),
@@ -122,9 +134,20 @@ public:
   std::string thesisSection() const override { return "Atty et al. 2006 §3"; }
 
   void run(Frame& frame) override {
-    const int n = param("resolution").asInt();
     bindLightInput(frame, *this);
     const bool twoPasses = param("passes").asEnum() == "two";
+    // The cost model (ssm_cost.h): the scene rasterized coarsely from the light, on the CPU,
+    // evaluated at any resolution: for `auto` and for the budget below.
+    const SsmCostModel costModel(frame.scene, frame.light);
+    int n = param("resolution").asInt();
+    if (param("resolution").automatic) {  // auto_ssm.h: the need from the auto policy, capped by cost
+      const SsmResolutionChoice choice = chooseSsmResolution(
+          lightAutoSettings(frame).ssmNeed, costModel, twoPasses ? 2 : 1, param("budget").asFloat());
+      n = choice.resolution;
+      frame.autoReasons.push_back(choice.reason);
+      frame.counters["auto.ssm_resolution"] = n;
+      frame.counters["auto.ssm_needed"] = lightAutoSettings(frame).ssmNeed.exact;
+    }
     // Steps 1-2: receiver and occluder maps, linear light depth (light_block.h).
     GlTexture& receiverMap = frame.output(*this, "receiverMap", n, n);
     GlTexture& occluderMap = frame.output(*this, "occluderMap", n, n);
@@ -151,8 +174,7 @@ public:
     params.tolerance = {param("receiver_tolerance").asFloat(), 0, 0, 0};
 
     // Before steps 3-5, their cost from the scene: refused over the budget (core/run_control.h).
-    const SsmCostEstimate cost =
-        estimateSsmCost(frame.scene, frame.light, n, twoPasses ? 2 : 1, param("fill").asFloat());
+    const SsmCostEstimate cost = costModel.at(n, twoPasses ? 2 : 1, param("fill").asFloat());
     frame.counters["ssm.estimatedFragments"] = cost.fragments;
     frame.counters["ssm.estimatedPatches"] = cost.patches;
     checkBudget(cost, n);
@@ -165,6 +187,16 @@ public:
     GlTexture& patchCount = frame.output(*this, "patchCount", n, n);
     const int drawn = int(std::lround(param("fill").asFloat() * n * n));
     beginAdditive(accumulation_, &patchCount);
+    // The measured work (SsmWork: every quad's fragments), against the estimate above.
+    const gpu::SsmWork noWork{};
+    workBuffer_.upload(&noWork, sizeof noWork);
+    frame.readAfterFrame(workBuffer_, 0, sizeof noWork,
+                         [](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::SsmWork read{};
+                           std::memcpy(&read, bytes.data(), sizeof read);
+                           frame.counters["ssm.quadFragments"] =
+                               double(read.high) * 4294967296.0 + double(read.low);
+                         });
     // A run estimated to be long is drawn in tiles of the soft shadow map (a scissor each:
     // every fragment still drawn once, the sums unchanged), about kFragmentsPerTile each, with
     // a cancel check after each tile, so Esc or --time-limit stops it within seconds.
@@ -228,12 +260,13 @@ private:
   void checkBudget(const SsmCostEstimate& cost, int n) {
     const double budget = param("budget").asFloat();
     if (budget <= 0 || cost.fragments <= budget * 1e6) return;
-    char message[640];
+    char message[768];
     std::snprintf(message, sizeof message,
                   "ssm: this run would blend about %.3g fragments (%.3g micro-patches x %.3g "
                   "texels per quad at ssm.resolution=%d: an occluder close to the light gives "
                   "each patch a quad the size of the map), over ssm.budget=%g million. Lower "
-                  "ssm.resolution or move the light away from the occluders, or run it anyway "
+                  "ssm.resolution (auto, the default, picks one within budget) or move the light "
+                  "away from the occluders, or run it anyway "
                   "with --set ssm.budget=%.0f (0: no limit)",
                   cost.fragments, cost.patches, cost.meanQuadTexels, n, budget,
                   std::ceil(cost.fragments * 1.25e-6));
@@ -294,32 +327,36 @@ private:
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
+  // count: add this draw's quad fragments to SsmWork (once per pass, not per tile).
   void drawPatches(gpu::SsmParams params, const GlTexture& occluders, const GlTexture& receivers,
-                   int pass, int instances) {
+                   int pass, int instances, bool count = false) {
     params.map.y = pass;
+    params.tolerance.y = count ? 1.0f : 0.0f;
     bindParams(params);
     // This pass's channel of the soft shadow map; the patch count sums both passes.
     const bool footprint = params.map.w != 0;
     glColorMaski(0, pass == 0 || footprint, pass == 1 || footprint, GL_FALSE, GL_FALSE);
     patchProgram_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, DEPTH_BOUNDS_BINDING, receiverBounds_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSM_WORK_BINDING, workBuffer_.id());
     glBindTextureUnit(SSM_PATCHES_OCCLUDER_UNIT, occluders.id());
     glBindTextureUnit(SSM_PATCHES_RECEIVER_UNIT, receivers.id());
     glBindVertexArray(emptyVertexArray());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, instances);
     glBindVertexArray(0);
+    if (count) glMemoryBarrier(kBufferResults);
   }
 
   void drawPatchesInTiles(const gpu::SsmParams& params, const GlTexture& occluders,
                           const GlTexture& receivers, int pass, int instances, int tiles, int n) {
-    if (tiles <= 1) return drawPatches(params, occluders, receivers, pass, instances);
+    if (tiles <= 1) return drawPatches(params, occluders, receivers, pass, instances, true);
     for (int ty = 0; ty < tiles; ++ty)
       for (int tx = 0; tx < tiles; ++tx) {
         const int x0 = tx * n / tiles, x1 = (tx + 1) * n / tiles;
         const int y0 = ty * n / tiles, y1 = (ty + 1) * n / tiles;
         glEnable(GL_SCISSOR_TEST);
         glScissor(x0, y0, x1 - x0, y1 - y0);
-        drawPatches(params, occluders, receivers, pass, instances);
+        drawPatches(params, occluders, receivers, pass, instances, tx == 0 && ty == 0);
         glDisable(GL_SCISSOR_TEST);
         glFinish();  // the tile is done before the check
         setRunProgress("in ssm, tile " + std::to_string(ty * tiles + tx + 1) + " of " +
@@ -365,7 +402,7 @@ private:
   ShaderProgram projectProgram_{{{GL_COMPUTE_SHADER, "ssm_project.comp"}}};
   GlFramebuffer depthFramebuffer_, colorFramebuffer_, readFramebuffer_;
   GlTexture accumulation_;
-  GlBuffer occluderBounds_, receiverBounds_, counterBuffer_, paramBuffer_;
+  GlBuffer occluderBounds_, receiverBounds_, counterBuffer_, paramBuffer_, workBuffer_;
   GLuint vertexArray_ = 0;  // for attribute-less draws
 };
 

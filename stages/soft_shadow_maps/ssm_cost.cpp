@@ -102,9 +102,8 @@ double quadSide(double n, double zLight, double zPatch, double zVirtual) {
 
 }  // namespace
 
-SsmCostEstimate estimateSsmCost(const Scene& scene, const LightFrame& light, int n, int passes,
-                                double fill) {
-  CoarseMaps maps(std::min(n, 64));
+SsmCostModel::SsmCostModel(const Scene& scene, const LightFrame& light) : zNear_(light.zNear) {
+  CoarseMaps maps(kCells);
   for (const SceneObject& object : scene.objects) {
     const Mesh& mesh = object.mesh;
     for (size_t t = 0; t < mesh.triangleCount(); ++t) {
@@ -118,24 +117,40 @@ SsmCostEstimate estimateSsmCost(const Scene& scene, const LightFrame& light, int
       }
     }
   }
-  SsmCostEstimate estimate;
-  if (!std::isfinite(maps.farthestReceiver())) return estimate;  // no receiver: nothing drawn
-  const double texelsPerCell = double(n) * n / (double(maps.cells()) * maps.cells());
-  double quadTexels = 0;
-  for (int i = 0; i < maps.cells() * maps.cells(); ++i) {
+  farthestReceiver_ = maps.farthestReceiver();
+  for (int i = 0; i < kCells * kCells; ++i) {
     if (!std::isfinite(maps.nearest(i))) continue;
-    const double zVirtual = std::max<double>(maps.farthestReceiver(), maps.nearest(i));
-    const double front = quadSide(n, light.zNear, maps.nearest(i), zVirtual);
+    nearest_.push_back(maps.nearest(i));
+    farthest_.push_back(maps.farthest(i));
+  }
+}
+
+SsmCostEstimate SsmCostModel::at(int n, int passes, double fill) const {
+  SsmCostEstimate estimate;
+  if (!std::isfinite(farthestReceiver_)) return estimate;  // no receiver: nothing drawn
+  // Below 64 texels the cells are texels (cells of a finer grid each stand for a fraction).
+  const double texelsPerCell = double(n) * n / (double(kCells) * kCells);
+  double quadTexels = 0;
+  for (size_t i = 0; i < nearest_.size(); ++i) {
+    const double zVirtual = std::max<double>(farthestReceiver_, nearest_[i]);
+    const double front = quadSide(n, zNear_, nearest_[i], zVirtual);
     estimate.patches += texelsPerCell;
     quadTexels += texelsPerCell * front * front;
     if (passes > 1) {
-      const double back = quadSide(n, light.zNear, maps.farthest(i),
-                                   std::max<double>(maps.farthestReceiver(), maps.farthest(i)));
+      const double back = quadSide(n, zNear_, farthest_[i],
+                                   std::max<double>(farthestReceiver_, farthest_[i]));
       estimate.fragments += texelsPerCell * back * back;
     }
   }
+  // A map coarser than the cells has no more patches than texels.
+  estimate.patches = std::min(estimate.patches, double(n) * n);
   estimate.fragments = fill * (estimate.fragments + quadTexels);
   estimate.patches *= fill;
   estimate.meanQuadTexels = estimate.patches > 0 ? fill * quadTexels / estimate.patches : 0;
   return estimate;
+}
+
+SsmCostEstimate estimateSsmCost(const Scene& scene, const LightFrame& light, int n, int passes,
+                                double fill) {
+  return SsmCostModel(scene, light).at(n, passes, fill);
 }

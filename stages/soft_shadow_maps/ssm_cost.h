@@ -8,6 +8,8 @@
 // plane, up to the whole map. At resolution n there are up to n^2 patches of up to n^2 texels
 // each: n^4 fragments, 1.1e12 at n = 1024 with an occluder next to the light.
 #pragma once
+#include <vector>
+
 #include "scene/light_frame.h"
 #include "scene/scene.h"
 
@@ -17,8 +19,20 @@ struct SsmCostEstimate {
   double meanQuadTexels = 0;  // texels per quad, averaged over the patches
 };
 
-// The occluder and receiver maps rasterized on the CPU at up to 64 x 64 cells (cell centres,
+// The occluder and receiver maps rasterized on the CPU at 64 x 64 cells (cell centres,
 // one cell for a triangle that covers no centre), the farthest receiver depth taken over the
-// map as the GPU takes it, then the sum above over the occluder cells at resolution `n`.
+// map as the GPU takes it, then the sum above over the occluder cells at resolution `n`:
+// built once, evaluated at any resolution (`auto` weighs several: auto_ssm.h).
+class SsmCostModel {
+public:
+  SsmCostModel(const Scene& scene, const LightFrame& light);
+  SsmCostEstimate at(int n, int passes, double fill) const;
+
+private:
+  static constexpr int kCells = 64;
+  float zNear_ = 0, farthestReceiver_ = 0;
+  std::vector<float> nearest_, farthest_;  // per occluder cell
+};
+
 SsmCostEstimate estimateSsmCost(const Scene& scene, const LightFrame& light, int n, int passes,
                                 double fill);
