@@ -129,13 +129,15 @@ TEST(VideoExport, Mp4AndGifHoldEveryFrameAndStartWithFrameZero) {
     EXPECT_LT(toFirst.meanAbs, toLast.meanAbs) << name;
     // The GIF's first frame: each pixel is its colour's nearest entry of one 256-colour
     // palette made over all frames, no dithering; the error is the palette's quantisation
-    // only: asserted as PSNR >= 30 dB, and closer to frame 0 than to frame 11.
+    // only, small here (12 frames of 64x48 hold few more colours than the palette: measured
+    // 77.8 dB, max 1 of 255): asserted as PSNR >= 45 dB (a wrong frame, a flip or a
+    // dithered palette fail it), and closer to frame 0 than to frame 11.
     const std::vector<unsigned char> gifFirst = decodeFrame(gif, 0, dir.path());
     const Difference gifToFirst = compare(gifFirst, first), gifToLast = compare(gifFirst, last);
     std::printf("%s.gif frame 0: PSNR %.1f dB, mean |d| %.3f, max |d| %d; against frame 11: "
                 "mean |d| %.3f\n", name.c_str(), gifToFirst.psnr, gifToFirst.meanAbs,
                 gifToFirst.maxAbs, gifToLast.meanAbs);
-    EXPECT_GE(gifToFirst.psnr, 30.0) << name;
+    EXPECT_GE(gifToFirst.psnr, 45.0) << name;
     EXPECT_LT(gifToFirst.meanAbs, gifToLast.meanAbs) << name;
   }
 }
@@ -218,7 +220,7 @@ TEST(VideoExport, InterruptedOrKilledExportLeavesThePreviousWhole) {
   for (const std::string signal : {"TERM", "KILL"}) {
     // Started in the background; the signal once its temporary directory holds 3 frames.
     const std::string script =
-        base + " --time-range 0:10 --fps 24 & pid=$!; "
+        base + " --time-range 0:10 --fps 24 2>&1 & pid=$!; "
         "for i in $(seq 1 600); do [ -e " + dir.path().string() + "/.anim.partial-$pid/composite.color/frame_0002.png ] && break; sleep 0.1; done; "
         "kill -" + signal + " $pid; wait $pid; echo \"exit=$?\"";
     const CommandResult result = runShell(script);
