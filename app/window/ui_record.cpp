@@ -52,11 +52,19 @@ std::vector<std::string> viewOutputs(const UiState& state) {
   return outputs;
 }
 
+// Session::setTime rebuilds the frame; at the time of the last run the run key would not
+// change and the views would stay empty, so the last run is forgotten: the next one runs.
+std::string poseAtTime(UiState& state, double t) {
+  std::string problem = state.session.setTime(t);
+  state.session.lastRun.reset();
+  return problem;
+}
+
 void stopRecording(UiState& state, const std::string& message, bool ok) {
   recording.exporter.reset();  // not committed: the temporary directory goes
   recording.posed = false;
   recording.cancel = false;
-  state.session.setTime(recording.savedTime);
+  poseAtTime(state, recording.savedTime);
   state.session.playing = recording.savedPlaying;
   recording.result = message;
   state.reportResult("record", message, ok);
@@ -133,12 +141,12 @@ void beginRecordedFrame(UiState& state) {
   if (!recording.exporter) return;
   if (recording.cancel) {
     stopRecording(state, "recording cancelled after " + std::to_string(recording.exporter->framesWritten()) +
-                             " frames; nothing written", false);
+                             " frames; nothing written", true);  // asked for: not an error
     return;
   }
   if (recording.posed) return;
   const double t = recording.exporter->time(recording.next);
-  if (std::string problem = state.session.setTime(t); !problem.empty()) {
+  if (std::string problem = poseAtTime(state, t); !problem.empty()) {
     stopRecording(state, "record failed, nothing written: " + problem, false);
     return;
   }
@@ -154,7 +162,9 @@ void endRecordedFrame(UiState& state) {
   }
   // Only a full-resolution frame that holds every recorded output (not a preview while the
   // camera moves, not before the first run at this time).
-  if (session.previewing || !session.lastRun || session.lastRun->time != session.time) return;
+  if (session.previewing || !session.lastRun || session.lastRun->time != session.time ||
+      !session.runError.empty())
+    return;
   for (const std::string& output : recording.exporter->outputs())
     if (!session.frame->has(output)) return;
   try {
