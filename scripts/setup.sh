@@ -13,6 +13,7 @@ packages=(
   graphviz  # docs/stage_graph.svg from `penumbra graph` (README, layout)
   libgsl-dev  # chi-square and normal distributions of the hash statistics (app/stats/hash_stats.cpp)
   dieharder  # the real DIEHARD battery: penumbra hash-stats --dieharder (docs/hash_stats.md)
+  ffmpeg  # the MP4s and GIFs of penumbra export --time-range and the window's Record; ffprobe in the tests
   glslang-tools  # glslangValidator: every shader variant checked by a second compiler (tests/gl)
 )
 if [ "${1:-}" = fuzz ]; then packages+=(clang libfuzzer-14-dev llvm-14); fi

@@ -4,11 +4,17 @@
 #include <filesystem>
 
 #include "base/input_error.h"
+#include "cli/interrupt.h"
+#include "cli/progress_line.h"
+#include "cli/video_command.h"
 #include "export/frame_export.h"
 #include "io/headless_session.h"
 #include "io/output_path.h"
 
 int runExport(const ExportOptions& options) {
+  const CliProgress progress("export");  // a bar on stderr for an export past a second
+  const InterruptCancels interrupts;      // Ctrl-C: stop at the next check, nothing written
+  if (!options.timeRange.empty()) return runVideoExport(options);
   checkOutputDirectory(options.outDirectory, "--out", "run.json");  // before any rendering
   HeadlessSession session;
   if (int status = session.open("export", options.scene, options.sets, options.width, options.height,

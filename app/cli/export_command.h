@@ -13,6 +13,12 @@ struct ExportOptions {
   std::uint32_t frameKey = 0;
   double time = 0;  // --time: seconds into the scene's animation (scene/animation.h)
   bool annotate = false;  // --annotate: PNGs carry a colour bar / legend and a caption
+  // An animation (app/cli/video_command.h): --time-range A:B and --fps, the outputs per
+  // frame (default composite.color), outputs composed side by side, no ffmpeg videos.
+  std::string timeRange;
+  double fps = 24;
+  std::vector<std::string> outputs, sideBySide;
+  bool framesOnly = false;
 };
 
 int runExport(const ExportOptions& options);

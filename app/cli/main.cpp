@@ -20,6 +20,7 @@
 #include "cli/export_command.h"
 #include "cli/hash_command.h"
 #include "cli/hash_stats_command.h"
+#include "cli/progress_line.h"
 #include "gl/hash_kind.h"
 #include "io/shader_dump.h"
 #include "cli/trace_command.h"
@@ -118,6 +119,18 @@ int main(int argc, char** argv) {
   exportCommand->add_flag("--annotate", exporting.annotate,
                           "PNGs carry a colour bar (range, channel) or legend and a caption "
                           "line below the image; the EXRs stay raw");
+  // An animation for slides (app/cli/video_command.h, README "Video export").
+  CLI::Option* timeRangeOption = exportCommand->add_option(
+      "--time-range", exporting.timeRange, "START:END seconds (end exclusive): every frame's "
+      "outputs as numbered EXR + PNG, and an MP4 and a GIF per output through ffmpeg");
+  exportCommand->add_option("--fps", exporting.fps, "frames per second of --time-range, in (0, 240]")
+      ->needs(timeRangeOption)->capture_default_str();
+  exportCommand->add_option("--outputs", exporting.outputs, "stage.output,... written per frame "
+                            "(default composite.color)")->needs(timeRangeOption)->delimiter(',');
+  exportCommand->add_option("--side-by-side", exporting.sideBySide, "stage.output,... composed "
+                            "left to right into one more video")->needs(timeRangeOption)->delimiter(',');
+  exportCommand->add_flag("--frames-only", exporting.framesOnly, "the numbered frames without "
+                          "the MP4s and GIFs (no ffmpeg needed)")->needs(timeRangeOption);
 
   TraceOptions tracing;
   CLI::App* traceCommand = app.add_subcommand("trace", "record every step of every ray at one "
@@ -348,6 +361,7 @@ int main(int argc, char** argv) {
     if (*hashCommand) return runHashCommand(hashing);
     if (*hashStatsCommand) return runHashStatsCommand(hashStats);
     if (*lessonCommand) {
+      const CliProgress progress("lesson");  // a lesson exported: a bar on stderr (core/progress.h)
       lesson.interactiveLesson = lesson.exportDirectory.empty();
       lesson.lessonCommand = true;
       return runWindow(lesson);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/input_error.h"
+#include "core/progress.h"
 #include "figures/categories.h"
 #include "gl/renderer_calibration.h"
 #include "io/colormap.h"
@@ -66,6 +67,12 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
   run["light_frame"] = {{"light_depth", frame.light.lightDepth},
                         {"z_near", frame.light.zNear},
                         {"z_far", frame.light.zFar}};
+  // Progress (core/progress.h): one step per output written; a bar when it takes a second.
+  int files = 0;
+  for (const auto& stage : pipeline.stages())
+    for (const Output& output : stage->outputs())
+      if (frame.has(stage->name() + "." + output.name)) ++files;
+  ProgressTask progress("export", files);
   for (const auto& stage : pipeline.stages()) {
     nlohmann::json params = nlohmann::json::object();
     for (const Param& param : stage->params()) params[param.key] = param.toString();
@@ -85,6 +92,7 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
           writeAnnotatedPng(directory / (stem + ".png"), frame, key, texture, output, layer,
                             keyParameters);
       }
+      progress.advance(key);
     }
   }
   for (const StageTime& time : pipeline.lastTimes())

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "window/ui_record.h"
 #include "window/ui_session.h"
 
 std::string advanceTimeline(Session& session, TimelineClock& clock, double now) {
@@ -60,6 +61,8 @@ std::string drawTimeline(Session& session, float uiScale, float x, float y, floa
       animation.repeat = Repeat(repeat);
       next = animation.cycleTime(session.time);  // the same pose, in the new mode's terms
     }
+    ImGui::SameLine();
+    drawRecordButton();  // the views over a time range, as frames and videos (ui_record.h)
     if (next != session.time) problem = session.setTime(next);
     ImGui::Text("t = %.3f s  (%.3f of %.2f s, %s)", session.time, animation.cycleTime(session.time),
                 animation.duration, repeatName(animation.repeat));

@@ -20,7 +20,6 @@
 #include "io/image_export.h"
 #include "io/output_path.h"
 #include "scene/scene_builtin.h"
-#include "window/panels/ui_export.h"
 #include "window/ui_frame_change.h"
 #include "window/ui_frame_recover.h"
 #include "window/ui_help.h"
@@ -41,6 +40,8 @@
 #include "window/ui_state.h"
 #include "window/ui_layout.h"
 #include "window/ui_timeline.h"
+#include "window/ui_record.h"
+#include "window/ui_export_progress.h"
 #include "window/views/ui_texture_view.h"
 #include "window/views/ui_ssm_pick.h"
 #include "window/views/ui_trace_source.h"
@@ -88,7 +89,7 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
       const std::string result = saveSettingsFile(state, "penumbra_settings.json");
       state.reportResult("settings", result, result.rfind("saved ", 0) == 0);
     }
-    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) state.reportExport(exportAllStages(state, ""));
+    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) requestExportAll("");  // ui_export_progress.h
     return;
   }
   ViewState& views = state.views;
@@ -290,6 +291,7 @@ bool drawUi(UiState& state, const Layout& layout) {
   drawShaderLogWindow(state);
   drawLogWindow(state);
   drawRunBudgetModal(state);
+  drawRecordWindow(state);  // ui_record.h
   return movingCamera;
 }
 
@@ -409,7 +411,7 @@ struct FrameLoop {
     // 7a. Events: wait when idle, so an idle window costs no CPU.
     const bool busy = (runner && !state.lesson.waiting) || !options.screenshot.empty() ||
                       state.needsRun() || !state.script.syntheticInput.empty() ||
-                      state.session.playing;
+                      state.session.playing || recordingActive();
     if (busy) glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
     // The inspector's "measure again": between frames, outside any run (its own pipeline).
@@ -433,6 +435,7 @@ struct FrameLoop {
         state.lesson.finished = true;
       }
     }
+    exportsBetweenFrames(state, runner.get(), !options.interactiveLesson);  // their progress shows
     if (state.script.cursorRequest) {  // a script's "mouse": as if the user moved it there
       glfwSetCursorPos(window, state.script.cursorRequest->x, state.script.cursorRequest->y);
       state.script.cursorRequest.reset();
@@ -443,13 +446,14 @@ struct FrameLoop {
     state.keepPickInEye(glm::ivec2(state.views.panels[0].eyeRegion));
     recordPickedPixel(state);
     pickStageMapTexels(state);
-    // The timeline: a playing animation poses the scene at its new time (ui_timeline.h).
+    // The timeline: a playing animation poses the scene at its new time (ui_timeline.h); a
+    // recording poses each frame's time around the run (ui_record.h).
     if (std::string problem = advanceTimeline(
             state.session, timeline,
             std::chrono::duration<double>(woken.time_since_epoch()).count());
         !problem.empty())
       state.status = problem;
-    const bool ran = state.runIfNeeded(glm::ivec2(state.views.panels[0].eyeRegion));
+    const bool ran = runRecordingFrame(state, glm::ivec2(state.views.panels[0].eyeRegion));
     // 7d. The UI (fonts rebuilt first when the UI scale changed).
     applyUiScale(state.uiScale);
     ImGui_ImplOpenGL3_NewFrame();

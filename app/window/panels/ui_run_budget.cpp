@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/progress.h"
 #include "core/run_control.h"
 #include "window/ui_state.h"
 #include "window/ui_widgets.h"
@@ -145,6 +146,9 @@ void drawRunningOverlay(GLFWwindow* window) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
   ImGui::Text("Running the pipeline: %.1f s", elapsed);
   ImGui::TextDisabled("%s", where.empty() ? "under way" : where.c_str());
+  if (const ProgressState progress = currentProgress(); progress.active && progress.total > 0)  // an export
+    ImGui::ProgressBar(float(progress.fraction()), {ImGui::CalcTextSize("tiles or reference tiles. Settings and the last image stay.").x, 0},
+                       (std::to_string(progress.done) + " / " + std::to_string(progress.total) + " " + progress.detail).c_str());
   const ImVec2 button{ImGui::GetContentRegionAvail().x, 2 * ImGui::GetFrameHeight()};
   if (runCancelRequested()) {
     ImGui::Button("cancelling...", button);

@@ -13,6 +13,7 @@
 #include "scene/scene_frame.h"
 #include "window/ui_camera.h"
 #include "window/panels/ui_export.h"
+#include "window/ui_export_progress.h"
 #include "window/script/ui_script_actions.h"
 #include "window/script/ui_settings.h"
 #include "window/ui_state.h"
@@ -158,7 +159,7 @@ void drawTools(UiState& state) {
   helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
              "Open one at start with `penumbra --config FILE`.");
   pathField("##exportdir", exportDirectory, kDefaultExportDirectory, {"Export all", "(?)"});
-  if (ImGui::Button("Export all")) state.reportExport(exportAllStages(state, exportDirectory));
+  if (ImGui::Button("Export all")) requestExportAll(exportDirectory);  // between frames: its progress shows
   helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
              "`penumbra export` with these settings.");
   if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();

@@ -98,6 +98,8 @@ public:
   // Runs actions until one needs frames to pass (wait, screenshot) or the list ends.
   Step step(UiState& state);
   const std::string& error() const { return error_; }
+  size_t done() const { return next_; }  // actions started (progress: ui_export_progress.h)
+  size_t total() const { return actions_.size(); }
 
 private:
   bool waitForNext(UiState& state);  // interactive lessons: true while the student reads
