@@ -102,6 +102,137 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
   return text;
 }
 
+// ---- Layers: separate occluders on one light ray (step 5) ----
+// Two layers bound everything between the nearest and the farthest occluder surface on a
+// light ray as solid (thesis §3.3, Fig 3.4: "gaps may exist between multiple occluders");
+// the third, the eye's depth (§3.4), frees the part of those gaps the eye sees. Counting
+// surfaces alone (more than two on a ray: step 5's first rule) misses the simplest such gap:
+// two sheets (plates) one above the other are two surfaces, as one box is, but the space
+// between them is free, and two layers fill it (a too-dark band where rays pass between
+// the plates). Here the surfaces a probe's light ray crosses are paired into solids by their
+// facing: on one object, a surface the ray enters through and the next it leaves through
+// (geometric normals facing opposite ways along the ray: any closed mesh, whichever its
+// winding) bound one solid; a surface with no such partner is a sheet, of zero thickness.
+// The free space on the ray between its first and last occluder surface, outside every
+// solid, is what two layers fill.
+
+// One occluder surface on a light ray: where, on which object, and which way it faces.
+struct RaySurface {
+  float t;
+  unsigned object;
+  bool facesAlong;  // geometric normal along the ray (the ray leaves through it, if closed)
+};
+
+// The occluder surfaces along origin + t direction, nearest first, up to the first
+// receiver-only surface (nothing beyond it shadows what the camera sees there) or 8.
+std::vector<RaySurface> occluderSurfacesAlong(const SceneRays& rays, const glm::vec3& origin,
+                                              const glm::vec3& direction) {
+  std::vector<RaySurface> surfaces;
+  float tFrom = 0;
+  for (int k = 0; k < 8; ++k) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit query{};
+    query.ray.org_x = origin.x; query.ray.org_y = origin.y; query.ray.org_z = origin.z;
+    query.ray.dir_x = direction.x; query.ray.dir_y = direction.y; query.ray.dir_z = direction.z;
+    query.ray.tnear = tFrom;
+    query.ray.tfar = std::numeric_limits<float>::infinity();
+    query.ray.mask = 0xffffffffu;
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(rays.scene, &context, &query);
+    const unsigned g = query.hit.geomID;
+    if (g == RTC_INVALID_GEOMETRY_ID || !rays.occluder[g]) break;
+    const glm::vec3 normal(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
+    surfaces.push_back({query.ray.tfar, g, glm::dot(normal, direction) > 0.0f});
+    tFrom = query.ray.tfar + 1e-4f * std::max(1.0f, query.ray.tfar);
+  }
+  return surfaces;
+}
+
+// The longest free stretch of the ray between its first and last occluder surface (world
+// units along the ray; 0 when the surfaces bound one solid, or there are fewer than two),
+// and the ray parameter at its middle.
+struct FreeGap {
+  float length = 0, tMiddle = 0;
+};
+FreeGap longestFreeGap(const std::vector<RaySurface>& surfaces) {
+  // Solids: per object, a surface and the next one of the same object facing the other way.
+  std::vector<std::pair<float, float>> solids;
+  std::vector<bool> paired(surfaces.size(), false);
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    if (paired[i]) continue;
+    for (size_t j = i + 1; j < surfaces.size(); ++j) {
+      if (paired[j] || surfaces[j].object != surfaces[i].object) continue;
+      if (surfaces[j].facesAlong != surfaces[i].facesAlong) {
+        solids.emplace_back(surfaces[i].t, surfaces[j].t);
+        paired[i] = paired[j] = true;
+      }
+      break;  // the object's next surface: paired, or this one is a sheet
+    }
+  }
+  FreeGap gap;
+  for (size_t i = 0; i + 1 < surfaces.size(); ++i) {
+    const float from = surfaces[i].t, to = surfaces[i + 1].t;
+    const float middle = 0.5f * (from + to);
+    bool inside = false;
+    for (const auto& [enter, leave] : solids) inside = inside || (enter <= middle && middle <= leave);
+    if (!inside && to - from > gap.length) gap = {to - from, middle};
+  }
+  return gap;
+}
+
+// For one probe (a point q on an occluder's triangle, `inward` a point inside that triangle):
+// the free gap on the light's ray from its centre through q, in texels per unit map
+// resolution at the gap's depth (times the map size: texels). The ray is aimed a little
+// inside the triangle, so that it meets the probe's own occluder rather than grazing its edge.
+double freeGapTexelsPerResolution(const SceneRays& rays, const AreaLight& area,
+                                  const LightFrame& light, const glm::vec3& q,
+                                  const glm::vec3& inward) {
+  const glm::vec3 aim = q + 1e-3f * (inward - q);
+  const glm::vec3 direction = glm::normalize(aim - area.center);
+  const FreeGap gap = longestFreeGap(occluderSurfacesAlong(rays, area.center, direction));
+  if (gap.length <= 0) return 0;
+  const glm::vec3 middle = area.center + gap.tMiddle * direction;
+  const float z = glm::dot(middle - light.wsProjectionPoint, light.forward);
+  const float tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
+  return z > 0 ? double(gap.length) / (2.0 * double(z) * double(tanHalfFov)) : 0.0;
+}
+
+// Step 5: three layers where one light ray meets more than two occluder surfaces (the rule
+// before), or where at least kSeparateFraction of the probes in view have a free gap of at
+// least kGapTexels texels of the chosen map between two occluders (a gap thinner than that
+// is within what the layers resolve, and the Eq 3.2 bias passes it).
+inline constexpr double kSeparateFraction = 0.05, kGapTexels = 2.0;
+void chooseLayers(const std::vector<double>& gapsPerResolution, AutoSettings& out) {
+  out.separateOccluderProbes = 0;
+  double widestGap = 0;
+  for (double gap : gapsPerResolution) {
+    if (gap * out.resolution >= kGapTexels) ++out.separateOccluderProbes;
+    widestGap = std::max(widestGap, gap * out.resolution);
+  }
+  const double fraction =
+      gapsPerResolution.empty() ? 0.0 : double(out.separateOccluderProbes) / double(gapsPerResolution.size());
+  if (out.depthComplexity > 2) {
+    out.layers = 3;
+    out.reasons.push_back(format("layers %.0f: at most %.0f occluder surfaces on one light ray",
+                                 out.layers, out.depthComplexity));
+  } else if (fraction >= kSeparateFraction) {
+    out.layers = 3;
+    out.reasons.push_back(
+        format("layers 3: on %.0f%% of the probes' light rays in view two occluders lie one "
+               "behind the other with free space between them (up to %.0f texels), which two "
+               "layers treat as solid",
+               100.0 * fraction, widestGap));
+  } else {
+    out.layers = 2;
+    out.reasons.push_back(
+        format("layers 2: at most %.0f occluder surfaces on one light ray", out.depthComplexity) +
+        format(", and free space between two occluders on %.0f%% of the probes' light rays in "
+               "view (three layers from %.0f%%)",
+               100.0 * fraction, 100.0 * kSeparateFraction));
+  }
+}
+
 AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame& light,
                      int eyeWidth, int eyeHeight) {
   AutoSettings out;
@@ -119,6 +250,7 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
 
   // 1-2. Probes along the occluders' edges (t = 0, 1/4, 1/2, 3/4 of each edge).
   std::vector<double> widthsWorld, texelsPerResolution, widthsPixels, areasPixels;
+  std::vector<double> gapsPerResolution;  // step 5: the free gap on each probe's light ray
   size_t seen = 0;
   for (unsigned id = 0; id < scene.objects.size(); ++id) {
     const SceneObject& object = scene.objects[id];
@@ -158,6 +290,9 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
           if (eyeDepth <= 0 || std::fabs(view.x) > tanX * eyeDepth ||
               std::fabs(view.y) > tanY * eyeDepth)
             continue;
+          const glm::vec3 centroid = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
+                                      mesh.positions[mesh.indices[t + 2]]) / 3.0f;
+          gapsPerResolution.push_back(freeGapTexelsPerResolution(rays, scene.light, light, q, centroid));
           const float gap = glm::dot(receiver - q, light.forward);
           const double width = double(lightSide) * gap / occluderDepth;
           const float receiverZ = glm::dot(receiver - light.wsProjectionPoint, light.forward);
@@ -233,9 +368,7 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
              "least 24 samples",
              filterPixels, out.raysPerSide * out.raysPerSide));
   // 5. Layers.
-  out.layers = out.depthComplexity > 2 ? 3 : 2;
-  out.reasons.push_back(format("layers %.0f: at most %.0f occluder surfaces on one light ray",
-                               out.layers, out.depthComplexity));
+  chooseLayers(gapsPerResolution, out);
   return out;
 }
 

@@ -33,7 +33,11 @@
 // 5. Layers: the depth complexity along the probes' light rays (occluder surfaces crossed
 //    between the light and the receiver). Two layers model one occluder exactly (near and far
 //    bound it); with more than two crossings the space between occluders is solid for two
-//    layers, and the third (the eye's depth, §3.4) frees what the eye sees of it.
+//    layers, and the third (the eye's depth, §3.4) frees what the eye sees of it. Two
+//    surfaces can be two occluders too (two plates one above the other): the surfaces on
+//    each in-view probe's ray are paired into solids by their facing, and where at least 5%
+//    of those rays have free space of 2 texels or more between two occluders, three layers
+//    (docs/decisions/116-auto-layers-from-separate-occluders.md).
 #pragma once
 #include <string>
 #include <vector>
@@ -56,6 +60,8 @@ struct AutoSettings {
   double smallestPenumbraTexels = 0;    // the same in texels of the chosen map
   double smallestPenumbraPixels = 0;    // and in eye pixels
   int depthComplexity = 0;              // most occluder surfaces on one probe's light ray
+  int separateOccluderProbes = 0;       // in-view probes whose light ray has free space
+                                        // between two occluders (step 5)
   std::vector<std::string> reasons;     // one sentence per choice
   SsmResolutionNeed ssmNeed;            // ssm.resolution=auto's need (auto_ssm.h; the ssm stage caps it)
 };

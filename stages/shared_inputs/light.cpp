@@ -87,7 +87,8 @@ public:
                                 "point within a pixel of an occluder's outline stays solid; "
                                 "classification's umbra rule is then off). auto (the default): "
                                 "three where one light ray meets more than two occluder "
-                                "surfaces, else two.",
+                                "surfaces, or two occluders with free space between them "
+                                "(two plates one above the other), else two.",
                       {"one", "two", "three"}, 1),
         Param::choice(
             "hash",

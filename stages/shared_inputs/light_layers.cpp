@@ -7,7 +7,9 @@
 // the `plate` scene) as occluders with near == far instead of losing them from the far layer.
 // The far pass writes the far layer as a colour target beside its depth buffer (the same
 // values; the risers pass then changes only sheet texels:
-// docs/decisions/015-far-layer-as-colour.md).
+// docs/decisions/015-far-layer-as-colour.md), and the far surface's slope beside it, which the
+// risers pass reads to tell a neighbour on the same sheet from another occluder
+// (docs/decisions/115-risers-closed-along-the-sheets-plane.md).
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/gpu_layout.h"
@@ -15,7 +17,10 @@
 #include "gl/shader_program.h"
 #include "shared/light_layers_layout.h"
 
-static_assert(gpu::distinctBelow({RISERS_NEAR_UNIT, RISERS_FAR_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({RISERS_NEAR_UNIT, RISERS_FAR_UNIT, RISERS_SLOPE_UNIT},
+                                 gpu::kTextureUnits));
+static_assert(LIGHT_LAYERS_FAR_LOCATION == 0 && LIGHT_LAYERS_SLOPE_LOCATION == 1,
+              "the far pass's draw buffers below are in this order");
 
 namespace {
 
@@ -55,6 +60,7 @@ public:
     // 1. The near layer: the depth test keeps the nearest surface.
     glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, nearLayer.id(), 0);
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, 0, 0);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, 0, 0);
     glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
     drawOccluders(frame, size, [&] {
       glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
@@ -64,12 +70,18 @@ public:
     // 2. The far layer: the depth test (GREATER) keeps the farthest surface in a depth
     //    buffer, which the risers pass reads, and the fragments that pass it write their
     //    depth to the far layer too, so it holds the same values (a colour target, so the
-    //    risers pass need touch only sheet texels).
-    if (farRasterized_.width() != size)
+    //    risers pass need touch only sheet texels), and the slope of their plane to a second
+    //    target (light_layers.frag). The slope is read only at sheet texels, which a fragment
+    //    always wrote, so it is not cleared.
+    if (farRasterized_.width() != size) {
       farRasterized_ = GlTexture(GL_DEPTH_COMPONENT32F, size, size);
+      farSlope_ = GlTexture(GL_RG16F, size, size);
+    }
     glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, farRasterized_.id(), 0);
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, far.id(), 0);
-    glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, farSlope_.id(), 0);
+    const GLenum farTargets[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(framebuffer_.id(), 2, farTargets);
     drawOccluders(frame, size, [&] {
       const float empty[4] = {0, 0, 0, 0};  // far = 0 where no occluder (§3.3)
       glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, empty);
@@ -86,6 +98,7 @@ public:
     glUniform1i(RISERS_CLOSE_LOCATION, param("close_risers").asBool() ? 1 : 0);
     glBindTextureUnit(RISERS_NEAR_UNIT, nearLayer.id());
     glBindTextureUnit(RISERS_FAR_UNIT, farRasterized_.id());
+    glBindTextureUnit(RISERS_SLOPE_UNIT, farSlope_.id());
     glTextureBarrier();
     screen_.drawRect(far, origin, extent);  // framebuffer writes: no barrier needed
   }
@@ -136,6 +149,7 @@ private:
                          "#define LIGHT_PASS\n"};
   GlFramebuffer framebuffer_;
   GlTexture farRasterized_;  // the far layer as rasterized, before close_risers
+  GlTexture farSlope_;       // d(1/z) per texel along x and y of the far surface's plane
   ShaderProgram risers_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
                          {GL_FRAGMENT_SHADER, "light_layers_risers.frag"}}};
   ScreenTriangle screen_;
