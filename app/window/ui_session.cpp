@@ -84,6 +84,9 @@ std::string Session::setTime(double seconds) {
   frame->eyeHeight = height;
   frame->frameKey = frameKey;
   time = seconds;
+  // The new frame holds no outputs yet: forget the last run's key so that the next frame runs
+  // even when the time is the one already shown (a repeat, a recording's first frame).
+  lastRun.reset();
   return "";
 }
 
