@@ -3,7 +3,7 @@
 // the bounds raster4d_receivers.comp reduced. Written into the state; the stage copies them
 // into Raster4dParams on the GPU, so no later pass waits for the CPU to read them. One value
 // for the whole image: the first invocation computes it. `precise`: each operation rounded
-// as written (no fused multiply-add), as the CPU computed it before.
+// as written (no fused multiply-add), so the placement is the one the CPU computed before.
 #include "shared/raster4d.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = R4D_PLACE_STATE) buffer State { Raster4dState state; };
@@ -25,5 +25,8 @@ void main() {
   // Round-off tolerance: triangle boxes grow by it, so rounding only adds pairs.
   precise float tolerance = 1e-5 * scale;
   state.plane = vec4(depth, tolerance, 0.0, 0.0);
-  state.fb = vec4(lo, vec2(float(r4d.sizes.x), float(r4d.sizes.y)) / extent);
+  // The quotient in double, then rounded to float: the correctly rounded float quotient the
+  // CPU computed (double has more than 2 x 24 + 2 bits), where a float division may be
+  // compiled into a reciprocal and a product.
+  state.fb = vec4(lo, vec2(dvec2(r4d.sizes.xy) / dvec2(extent)));
 }
