@@ -1,6 +1,7 @@
 // raster4d STEP 5 (Algorithm 3): per FB pixel, every (sample, triangle) pair of its two
-// lists; one invocation per sample entry of the current band, looping over a chunk of the
-// triangles of the entry's pixel. SAMPLES (m, defined when the program is built) light rows.
+// lists; one invocation per sample entry of the current band and chunk of the triangles of
+// the entry's pixel (the chunk: the group's z, from uChunkBase), looping over that chunk.
+// SAMPLES (m, defined when the program is built) light rows.
 //  1. Early rejection (lines 5-6): the sample's Proj4 must lie inside the triangle's AABB,
 //     else the triangle hides no point of the light from it (full coverage, Appendix).
 //  2. Four planes (lines 7-10): the three through the sample and an edge (inside: the
@@ -19,6 +20,7 @@ layout(std430, binding = R4D_OCCLUSION_TRIANGLE_STARTS) readonly buffer Triangle
 layout(std430, binding = R4D_OCCLUSION_TRIANGLE_LIST) readonly buffer TriangleList { uint triangleEntries[]; };
 layout(std430, binding = R4D_OCCLUSION_MASKS) buffer Masks { uint masks[]; };
 layout(std430, binding = R4D_OCCLUSION_CELL_PAIRS) buffer CellPairs { uint cellPairs[]; };  // 4 per FB pixel
+layout(location = R4D_OCCLUSION_CHUNK_BASE_LOCATION) uniform int uChunkBase;
 
 const int kWords = (SAMPLES + 31) / 32;
 
@@ -87,12 +89,13 @@ void main() {
   uvec2 sampleEntry = sampleEntries[entry];  // (eye pixel, FB pixel)
   vec3 q = receivers[sampleEntry.x].xyz;
   vec4 qBox = proj4(q);
-  // This dispatch's chunk of the pixel's triangle list (dispatch.zw: first, count): the
-  // stage splits long lists over dispatches to stay under a driver's per-invocation loop
-  // limit (raster4d.glsl).
+  // This invocation's chunk of the pixel's triangle list (dispatch.w entries each): long
+  // lists are split so that each invocation's loop stays under a driver's per-invocation
+  // loop limit (raster4d.glsl); the chunks are ORed into the same mask.
   uint listFirst = triangleStarts[sampleEntry.y] - uint(r4d.band.w);
   uint listEnd = triangleStarts[sampleEntry.y + 1u] - uint(r4d.band.w);
-  uint first = min(listFirst + uint(r4d.dispatch.z), listEnd);
+  uint chunk = uint(uChunkBase) + gl_WorkGroupID.z;
+  uint first = min(listFirst + chunk * uint(r4d.dispatch.w), listEnd);
   uint end = min(first + uint(r4d.dispatch.w), listEnd);
   if (first == end) return;
   uvec2 mask[SAMPLES];

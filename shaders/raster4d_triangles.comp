@@ -36,6 +36,7 @@ vec4 triangleBox(vec3 v0, vec3 v1, vec3 v2) {
 void main() {
   uint triangle = linearIndex();
   if (triangle >= uint(r4d.modes.w)) return;
+  if (state.counts.x == 0u) return;  // no receiver: no segment to the light to cross
   vec4 box;
   bool firstWindow = uScatter == 0 && r4d.band.x == 0;
   if (firstWindow) {

@@ -7,12 +7,40 @@
 // measures on the receiver, so an occluder's own surface would count an error the paper never
 // measures. Runs only while both inputs are written.
 //
-// On the CPU: the reference is a CPU image anyway, and the percentile and OIIO's compare
-// need the values there; at 512x512 the read-back costs a few milliseconds.
+// On the GPU (shaders/error.comp, error_histogram.comp, error_reduce.comp; layouts in
+// shaders/shared/error_layout.h): one pixel per invocation, each 8 x 8 group's sums reduced in
+// shared memory, then one group adds the groups' records; the 99th percentile is selected
+// exactly (a radix select over the bits of |error|). The numbers are read after the frame
+// (Frame::readAfterFrame), so the stage never waits for the GPU. The CPU's computeErrorMetrics
+// (app/reference/error_metrics.h, a lesson crop's numbers) follows the same definitions.
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
 
-#include "reference/error_metrics.h"
 #include "core/frame.h"
+#include "gl/gpu_layout.h"
+#include "gl/shader_program.h"
+
+namespace gpu {
+#include "shared/error_layout.h"
+}  // namespace gpu
+
+static_assert(sizeof(gpu::ErrorSums) == 48 && offsetof(gpu::ErrorSums, sums) == 16 &&
+              offsetof(gpu::ErrorSums, squares) == 32);
+static_assert(sizeof(gpu::ErrorTotals) == 64 && offsetof(gpu::ErrorTotals, select) == 48);
+static_assert(gpu::distinctBelow({ERROR_METHOD_UNIT, ERROR_TRUTH_UNIT, ERROR_MASK_UNIT,
+                                  ERROR_FLAG_UNIT}, gpu::kTextureUnits));
+static_assert(gpu::distinctBelow({ERROR_SIGNED_IMAGE, ERROR_ABSOLUTE_IMAGE}, gpu::kImageUnits));
+static_assert(gpu::distinctBelow({ERROR_GROUP_SUMS_BINDING, ERROR_TOTALS_BINDING,
+                                  ERROR_HISTOGRAM_BINDING}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({ERROR_RECEIVERS_ONLY_LOCATION, ERROR_RADIX_PASS_LOCATION,
+                                  ERROR_REDUCE_MODE_LOCATION}, gpu::kUniformLocations));
+static_assert(ERROR_RADIX_BINS == 1 << ERROR_RADIX_BITS &&
+              ERROR_RADIX_BITS * ERROR_RADIX_PASSES == 32 &&
+              ERROR_RADIX_BINS <= ERROR_REDUCE_GROUP);
 
 namespace {
 
@@ -62,34 +90,111 @@ public:
       return;
     }
     const int w = frame.eyeWidth, h = frame.eyeHeight;
-    const std::vector<float> method = frame.input(*this, "method").readFloats();
-    const std::vector<float> reference = frame.input(*this, "truth").readFloats();
-    const std::vector<float> mask = frame.input(*this, "mask").readFloats();
     const bool receiversOnly = param("pixels").asEnum() == "receivers";
-    std::vector<float> receiver;
-    if (receiversOnly) receiver = frame.input(*this, "flag").readFloats();
-    const std::vector<std::uint8_t> counted = countedPixels(mask, receiversOnly ? &receiver : nullptr);
-    std::vector<float> signedError;
-    const ErrorMetrics metrics = computeErrorMetrics(method, reference, counted, w, h, &signedError);
-    std::vector<float> absolute(signedError.size());
-    for (size_t i = 0; i < signedError.size(); ++i) absolute[i] = std::fabs(signedError[i]);
-    upload(frame.output(*this, "signed", w, h), signedError);
-    upload(frame.output(*this, "absolute", w, h), absolute);
+    const GlTexture& mask = frame.input(*this, "mask");
+    glBindTextureUnit(ERROR_METHOD_UNIT, frame.input(*this, "method").id());
+    glBindTextureUnit(ERROR_TRUTH_UNIT, frame.input(*this, "truth").id());
+    glBindTextureUnit(ERROR_MASK_UNIT, mask.id());
+    // The flag is read only for pixels = receivers; otherwise the unit holds the mask, so
+    // that no sampler of the program refers to an empty unit.
+    glBindTextureUnit(ERROR_FLAG_UNIT,
+                      receiversOnly ? frame.input(*this, "flag").id() : mask.id());
+    glBindImageTexture(ERROR_SIGNED_IMAGE, frame.output(*this, "signed", w, h).id(), 0, GL_FALSE,
+                       0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(ERROR_ABSOLUTE_IMAGE, frame.output(*this, "absolute", w, h).id(), 0,
+                       GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    const GLuint groupsX = GLuint((w + 7) / 8), groupsY = GLuint((h + 7) / 8);
+    // The records' count is the buffer's length (error_reduce.comp reads groupSums.length()).
+    const GLsizeiptr groupBytes = GLsizeiptr(groupsX) * groupsY * GLsizeiptr(sizeof(gpu::ErrorSums));
+    if (groupBytes != groupBytes_) groupSums_.upload(nullptr, size_t(groupBytes)), groupBytes_ = groupBytes;
+    if (!totalsAllocated_) {
+      totals_.upload(nullptr, sizeof(gpu::ErrorTotals));
+      histogram_.upload(nullptr, ERROR_RADIX_BINS * sizeof(std::uint32_t));
+      totalsAllocated_ = true;
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ERROR_GROUP_SUMS_BINDING, groupSums_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ERROR_TOTALS_BINDING, totals_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, ERROR_HISTOGRAM_BINDING, histogram_.id());
 
-    frame.counters["error.rmse"] = metrics.rmse;
-    frame.counters["error.max"] = metrics.max;
-    frame.counters["error.meanAbsInShadow"] = metrics.meanAbsInShadow;
-    frame.counters["error.p99"] = metrics.p99;
-    frame.counters["error.meanSigned"] = metrics.meanSigned;
-    frame.counters["error.pixels"] = double(metrics.pixels);
-    frame.counters["error.pixelsInShadow"] = double(metrics.pixelsInShadow);
+    // The error per pixel, its images and each group's sums; then the totals.
+    errorProgram_.use();
+    glUniform1i(ERROR_RECEIVERS_ONLY_LOCATION, receiversOnly);
+    glDispatchCompute(groupsX, groupsY, 1);
+    glMemoryBarrier(kImageResults | kBufferResults);
+    reduceProgram_.use();
+    glUniform1i(ERROR_REDUCE_MODE_LOCATION, ERROR_REDUCE_SUMS);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(kBufferResults);
+    // The 99th percentile: a radix select, ERROR_RADIX_BITS bits of |error| per pass.
+    const std::uint32_t zero = 0;
+    for (int pass = 0; pass < ERROR_RADIX_PASSES; ++pass) {
+      glClearNamedBufferData(histogram_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+      histogramProgram_.use();
+      glUniform1i(ERROR_RECEIVERS_ONLY_LOCATION, receiversOnly);
+      glUniform1i(ERROR_RADIX_PASS_LOCATION, pass);
+      glDispatchCompute(groupsX, groupsY, 1);
+      glMemoryBarrier(kBufferResults);
+      reduceProgram_.use();
+      glUniform1i(ERROR_REDUCE_MODE_LOCATION, ERROR_REDUCE_SELECT);
+      glDispatchCompute(1, 1, 1);
+      glMemoryBarrier(kBufferResults);
+    }
+    const double n = double(w) * double(h);
+    frame.readAfterFrame(totals_, 0, sizeof(gpu::ErrorTotals),
+                         [n](const std::vector<unsigned char>& bytes, Frame& frame) {
+                           gpu::ErrorTotals totals{};
+                           std::memcpy(&totals, bytes.data(), sizeof totals);
+                           writeCounters(totals, n, frame.counters);
+                         });
   }
 
 private:
-  static void upload(GlTexture& texture, const std::vector<float>& values) {
-    glTextureSubImage2D(texture.id(), 0, 0, 0, texture.width(), texture.height(), GL_RED,
-                        GL_FLOAT, values.data());
+  static double doubleFromWords(std::uint32_t low, std::uint32_t high) {
+    const std::uint64_t bits = (std::uint64_t(high) << 32) | low;
+    double value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
   }
+  static float floatFromBits(std::uint32_t bits) {
+    float value;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+  }
+  // The statistics of app/reference/error_metrics.h from the GPU's sums over the `n` pixels
+  // of the image: the RMSE over the counted pixels as the CPU computes it (OIIO's RMS over all
+  // n, where the pixels that do not count differ by 0, rescaled by sqrt(n / pixels)).
+  static void writeCounters(const gpu::ErrorTotals& totals, double n,
+                            std::map<std::string, double>& counters) {
+    const gpu::ErrorSums& sums = totals.sums;
+    const double pixels = sums.counts.x, inShadow = sums.counts.y;
+    double rmse = 0, max = 0, meanAbsInShadow = 0, p99 = 0, meanSigned = 0;
+    if (pixels > 0) {
+      const double squares = doubleFromWords(sums.squares.x, sums.squares.y);
+      rmse = std::sqrt(squares / n) * std::sqrt(n / pixels);
+      max = floatFromBits(sums.counts.z);
+      meanSigned = doubleFromWords(sums.sums.x, sums.sums.y) / pixels;
+      meanAbsInShadow = inShadow > 0 ? doubleFromWords(sums.sums.z, sums.sums.w) / inShadow : 0.0;
+      if (totals.select.z != ERROR_RADIX_PASSES)
+        throw std::logic_error("error: the percentile's select found no value (" +
+                               std::to_string(totals.select.z) + " of " +
+                               std::to_string(ERROR_RADIX_PASSES) + " passes)");
+      p99 = floatFromBits(totals.select.x);
+    }
+    counters["error.rmse"] = rmse;
+    counters["error.max"] = max;
+    counters["error.meanAbsInShadow"] = meanAbsInShadow;
+    counters["error.p99"] = p99;
+    counters["error.meanSigned"] = meanSigned;
+    counters["error.pixels"] = pixels;
+    counters["error.pixelsInShadow"] = inShadow;
+  }
+
+  GlBuffer groupSums_, totals_, histogram_;
+  GLsizeiptr groupBytes_ = -1;
+  bool totalsAllocated_ = false;
+  ShaderProgram errorProgram_{{{GL_COMPUTE_SHADER, "error.comp"}}};
+  ShaderProgram histogramProgram_{{{GL_COMPUTE_SHADER, "error_histogram.comp"}}};
+  ShaderProgram reduceProgram_{{{GL_COMPUTE_SHADER, "error_reduce.comp"}}};
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "raster4d_gpu.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gl/shader_program.h"
 #include "reference/reference_cache.h"
@@ -62,24 +63,23 @@ glm::mat4 lightSpaceFromWorld(const glm::vec3& centre, const glm::vec3& right,
   return m;
 }
 
-std::vector<Raster4dBand> planBands(const std::vector<std::uint32_t>& sampleStarts,
-                                    const std::vector<std::uint32_t>& triangleStarts,
-                                    int fbWidth, int fbHeight, std::uint64_t maxEntries,
-                                    int maxRows) {
-  std::vector<Raster4dBand> bands;
-  auto at = [&](const std::vector<std::uint32_t>& starts, int row) {
-    return starts[size_t(row) * size_t(fbWidth)];
+Raster4dListBounds raster4dListBounds(int width, int height, int fb, int triangles, bool l0,
+                                      std::uint64_t maxEntries, int maxRows, int chunk) {
+  const double receivers = double(width) * double(height), cells = double(fb) * double(fb);
+  const double samples = l0 ? receivers : receivers * cells;
+  const double rowSamples = l0 ? receivers : receivers * double(fb);
+  const double entries = double(triangles) * cells, rowEntries = double(triangles) * double(fb);
+  const double most = double(maxEntries);
+  auto capacity = [&](double all, double row) {
+    return std::uint64_t(std::max(1.0, std::min(all, std::max(most, row))));
   };
-  for (int first = 0; first < fbHeight;) {
-    int end = first + 1;
-    while (end < fbHeight && end - first < maxRows &&
-           at(sampleStarts, end + 1) - at(sampleStarts, first) <= maxEntries &&
-           at(triangleStarts, end + 1) - at(triangleStarts, first) <= maxEntries)
-      ++end;
-    bands.push_back({first, end, at(sampleStarts, first),
-                     at(sampleStarts, end) - at(sampleStarts, first), at(triangleStarts, first),
-                     at(triangleStarts, end) - at(triangleStarts, first)});
-    first = end;
-  }
-  return bands;
+  Raster4dListBounds bounds{};
+  bounds.sampleCapacity = capacity(samples, rowSamples);
+  bounds.triangleCapacity = capacity(entries, rowEntries);
+  const double slots = 1.0 + std::floor(double(fb) / double(maxRows)) +
+                       std::floor(2.0 * samples / most) + std::floor(2.0 * entries / most);
+  bounds.bandSlots = int(std::min(double(fb), slots));
+  const double chunks = std::ceil(double(triangles) / double(chunk));
+  bounds.step5Commands = std::max(1, int(std::ceil(chunks / double(RASTER4D_MAX_GROUPS))));
+  return bounds;
 }

@@ -26,10 +26,21 @@ static_assert(offsetof(gpu::Raster4dParams, modes) == 144);
 static_assert(offsetof(gpu::Raster4dParams, pick) == 160);
 static_assert(offsetof(gpu::Raster4dParams, dispatch) == 176);
 static_assert(offsetof(gpu::Raster4dParams, options) == 192);
-static_assert(sizeof(gpu::Raster4dParams) == 208);
-static_assert(sizeof(gpu::Raster4dState) == 48);
+static_assert(offsetof(gpu::Raster4dParams, budget) == 208);
+static_assert(sizeof(gpu::Raster4dParams) == 224);
+static_assert(offsetof(gpu::Raster4dState, plane) == 48 && offsetof(gpu::Raster4dState, fb) == 64);
+static_assert(sizeof(gpu::Raster4dState) == 80);
+static_assert(sizeof(gpu::Raster4dPlan) == 32);
+static_assert(offsetof(gpu::Raster4dBandPlan, dispatch) == 16 &&
+              offsetof(gpu::Raster4dBandPlan, samplesCommand) == 32 &&
+              offsetof(gpu::Raster4dBandPlan, trianglesCommand) == 48);
+static_assert(sizeof(gpu::Raster4dBandPlan) == 64);
 // Every pass within GL 4.5's minimum of 8 storage blocks per compute shader.
 static_assert(gpu::distinctBelow({R4D_RECEIVERS_RECEIVERS, R4D_RECEIVERS_STATE}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_PLACE_STATE}, gpu::kStorageBindings));
+static_assert(gpu::distinctBelow({R4D_PLAN_SAMPLE_COUNTS, R4D_PLAN_TRIANGLE_COUNTS,
+                                  R4D_PLAN_SAMPLE_STARTS, R4D_PLAN_TRIANGLE_STARTS, R4D_PLAN_STATE,
+                                  R4D_PLAN_PLAN, R4D_PLAN_STEP5_COMMANDS}, gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({R4D_SAMPLES_RECEIVERS, R4D_SAMPLES_COUNTS, R4D_SAMPLES_STARTS,
                                   R4D_SAMPLES_CURSORS, R4D_SAMPLES_LIST}, gpu::kStorageBindings));
 static_assert(gpu::distinctBelow({R4D_TRIANGLES_TRIANGLES, R4D_TRIANGLES_LS_TRIANGLES,
@@ -72,26 +83,30 @@ void dispatchLinear(std::uint64_t count);
 // Dispatches an 8x8-group program over width x height.
 void dispatchGrid(int width, int height);
 
-template <typename T>
-std::vector<T> readBuffer(const GlBuffer& buffer, size_t count, size_t first = 0) {
-  std::vector<T> values(count);
-  if (count) glGetNamedBufferSubData(buffer.id(), GLintptr(first * sizeof(T)), GLsizeiptr(count * sizeof(T)), values.data());
-  return values;
-}
-
 // Light space (shaders/shared/raster4d_layout.h): rows right, up, forward; origin `centre`.
 glm::mat4 lightSpaceFromWorld(const glm::vec3& centre, const glm::vec3& right,
                               const glm::vec3& up, const glm::vec3& forward);
 
-// The rows [first, end) of one band of FB rows (tiles when the lists do not fit at once).
-struct Raster4dBand {
-  int firstRow, endRow;
-  std::uint32_t sampleBase, sampleEntries, triangleBase, triangleEntries;
+// What the CPU knows before the GPU has counted (no read-back inside the run): bounds on the
+// lists' entries, hence the lists' capacities, the band slots the plan may fill and STEP 5's
+// dispatches per slot (raster4d_plan.comp). For an eye of width x height, an FB of fb x fb,
+// `triangles` occluders, max_entries, bands of at most maxRows rows, `chunk` list entries
+// per STEP 5 chunk:
+//  - entries: a sample goes to 1 FB pixel (L0) or at most fb per row and fb x fb in all
+//    (proj4); a triangle to at most fb per row and fb x fb in all.
+//  - a band of two or more rows holds at most max_entries of each list (its last row was
+//    added only if they fit); a band of one row at most that row's entries. So a list needs
+//    min(all entries, max(max_entries, one row's)).
+//  - bands: those ended by maxRows are disjoint runs of maxRows rows (at most fb / maxRows);
+//    one ended because the next row did not fit holds, with that row, more than max_entries
+//    of a list, and each row is counted so at most twice (in its band, and as the row after
+//    the band before), so there are fewer than 2 S / max_entries of them for S entries (and
+//    as many for the triangles); plus the last band; and never more than fb.
+//  - STEP 5's chunks: the longest list has at most `triangles` entries; one dispatch covers
+//    RASTER4D_MAX_GROUPS chunks.
+struct Raster4dListBounds {
+  std::uint64_t sampleCapacity, triangleCapacity;
+  int bandSlots, step5Commands;
 };
-// Splits the FB rows into bands of at most `maxRows` rows whose sample and triangle entries
-// each fit in `maxEntries` (a single row that does not fit gets a band of its own): from the
-// prefix sums of the counts (size fbWidth * fbHeight + 1).
-std::vector<Raster4dBand> planBands(const std::vector<std::uint32_t>& sampleStarts,
-                                    const std::vector<std::uint32_t>& triangleStarts,
-                                    int fbWidth, int fbHeight, std::uint64_t maxEntries,
-                                    int maxRows);
+Raster4dListBounds raster4dListBounds(int width, int height, int fb, int triangles, bool l0,
+                                      std::uint64_t maxEntries, int maxRows, int chunk);

@@ -199,6 +199,24 @@ TEST(Raster4d, OptimizationsAndBandsDoNotChangeABit) {
   }
 }
 
+// The per-step times follow the pipeline's timing method (decision 021): with timer queries
+// (forced here on llvmpipe) GL_TIMESTAMP results written by the GPU into a buffer and read
+// after the frame; the masks are the same whichever way the steps were timed, and bands of
+// FB rows (more than one slot of the plan) time every slot's steps.
+TEST(Raster4d, StepTimesFromTimerQueriesAreReadAfterTheFrame) {
+  PipelineRun finish(makeBuiltinScene("spheres"), raster4dSets(16, {"raster4d.max_entries=1024"}), 64, 48);
+  PipelineRun queries(makeBuiltinScene("spheres"), raster4dSets(16, {"raster4d.max_entries=1024"}), 64, 48);
+  queries.pipeline->setTiming(Pipeline::Timing::Queries);
+  queries.run();
+  EXPECT_EQ(readMasks(queries), readMasks(finish));
+  const auto& c = queries.frame->counters;
+  EXPECT_GT(c.at("raster4d.bands"), 1);
+  EXPECT_EQ(c.at("raster4d.bands"), finish.frame->counters.at("raster4d.bands"));
+  for (const char* step : {"raster4d.step2Ms", "raster4d.step3Ms", "raster4d.step4Ms",
+                           "raster4d.step5Ms", "raster4d.resolveMs"})
+    EXPECT_TRUE(std::isfinite(c.at(step)) && c.at(step) >= 0) << step;
+}
+
 // Finite and in [0, 1] everywhere, on every built-in and stress scene.
 TEST(Raster4d, VisibilityFiniteAndInRangeOnEveryScene) {
   std::vector<std::pair<std::string, Scene>> scenes;

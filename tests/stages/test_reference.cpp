@@ -382,6 +382,28 @@ TEST(ErrorStage, SignedImageIsMethodMinusReferenceOnReceiversInsideTheMap) {
   EXPECT_GT(counters.at("error.meanAbsInShadow"), 0.05);  // a hard shadow misses the penumbra
   for (const char* name : {"error.rmse", "error.p99", "error.meanSigned"})
     EXPECT_TRUE(std::isfinite(counters.at(name))) << name;
+  // The GPU's statistics (shaders/error*.comp) against plain loops over the images: counts,
+  // max and the percentile exactly (a sort, nearest rank), the sums to summation order.
+  std::vector<float> absolutes;
+  double sumSq = 0, sumSigned = 0, sumShadow = 0;
+  int inShadow = 0;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    if (mask[i] == 0 || mask[i] == 4) continue;
+    const float e = method[i] - reference[i];
+    absolutes.push_back(std::fabs(e));
+    sumSq += double(e) * double(e);
+    sumSigned += e;
+    if (reference[i] < 1.0f) sumShadow += std::fabs(e), ++inShadow;
+  }
+  ASSERT_GT(absolutes.size(), 1000u);
+  std::sort(absolutes.begin(), absolutes.end());
+  const size_t rank = size_t(std::ceil(0.99 * double(absolutes.size()))) - 1;
+  EXPECT_EQ(counters.at("error.max"), double(absolutes.back()));
+  EXPECT_EQ(counters.at("error.p99"), double(absolutes[rank]));
+  EXPECT_EQ(counters.at("error.pixelsInShadow"), inShadow);
+  EXPECT_NEAR(counters.at("error.rmse"), std::sqrt(sumSq / double(absolutes.size())), 1e-12);
+  EXPECT_NEAR(counters.at("error.meanSigned"), sumSigned / double(absolutes.size()), 1e-12);
+  EXPECT_NEAR(counters.at("error.meanAbsInShadow"), sumShadow / inShadow, 1e-12);
   // Turning the reference off removes both (no stale comparison).
   run.pipeline->set("reference.enabled=false");
   run.run();
