@@ -73,7 +73,7 @@
 #define R4D_CELLS_SAMPLE_COUNTS 1
 #define R4D_CELLS_PAIRS 2
 
-#define RASTER4D_SCAN_GROUP 1024
+#define RASTER4D_SCAN_GROUP 256
 #define RASTER4D_PLAN_GROUP 256
 #define RASTER4D_MAX_GROUPS 65535  // groups per dimension of a dispatch (GL 4.5's minimum)
 #define R4D_OCCLUSION_CHUNK_BASE_LOCATION 0  // uniform int: the first chunk of a STEP 5 dispatch
