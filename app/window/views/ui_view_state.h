@@ -35,6 +35,7 @@ struct ViewPanel {
   std::string minus;
   bool clipNegative = false;  // negative differences shown as 0 (thickness: uncovered texels)
   mutable ViewDifference difference;  // a cache of the GPU result
+  mutable ViewLevel level;  // the shown mip level of a mipmapped output (ui_view_difference.h)
 };
 
 // How the centre area is split: one view, A | B, or A B / C D.
