@@ -141,7 +141,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
   const float rest = avail - names - buttonsWidth({"(?)"}) - ImGui::GetStyle().ItemInnerSpacing.x;
   ImGui::PushItemWidth(std::min(std::max(rest, uiPixels(80)), 0.55f * avail));  // else the name goes above
   for (Param& param : stage.params())
-    if (drawParam(param, autoChosenValue(stage.name(), param, state.session.frame.get()))) {
+    if (drawParam(param, state.panelMemory.handValues, autoChosenValue(stage.name(), param, state.session.frame.get()))) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();
     }
   ImGui::PopItemWidth();
