@@ -27,7 +27,9 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
     const GlTexture& texture = state.session.frame->texture(key);
     char text[96];
     std::snprintf(text, sizeof text, "%dx%d%s %.1f MiB", texture.width(), texture.height(),
-                  texture.isArray() ? (" x" + std::to_string(texture.layers())).c_str() : "",
+                  texture.isArray()        ? (" x" + std::to_string(texture.layers())).c_str()
+                  : texture.levels() > 1 ? (" +" + std::to_string(texture.levels() - 1) + " mips").c_str()
+                                         : "",
                   state.session.frame->megabytes(key));
     size = text;
   }
