@@ -40,8 +40,9 @@ public:
   int layers() const { return layers_; }
   bool isArray() const { return layers_ > 0; }
   int levels() const { return levels_; }
-  int levelWidth(int level) const { return std::max(1, width_ >> level); }
-  int levelHeight(int level) const { return std::max(1, height_ >> level); }
+  // Texels of mip level `level` per axis (0 for an empty texture).
+  int levelWidth(int level) const { return width_ > 0 ? std::max(1, width_ >> level) : 0; }
+  int levelHeight(int level) const { return height_ > 0 ? std::max(1, height_ >> level) : 0; }
   // "WxH", or "WxHxL" for an array texture (messages, the bench's memory table).
   std::string extentText() const;
   int channelCount() const;  // channels of the internal format (depth: 1)
