@@ -101,7 +101,7 @@ void captureLastFrame(Overlay& overlay) {
   overlay.framebufferScale = data->FramebufferScale;
 }
 
-void renderCapture(const Overlay& overlay) {
+void renderCapture(Overlay& overlay) {
   if (overlay.lists.empty()) return;
   ImDrawData data;
   data.Valid = true;
