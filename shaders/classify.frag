@@ -23,7 +23,7 @@
 layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
 layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
-layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
+layout(binding = CLASSIFY_MINMAX_UNIT) uniform sampler2D minmaxLevels;  // level n >= 1: mip n - 1
 layout(binding = CLASSIFY_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = CLASSIFY_FAR_UNIT) uniform sampler2D farLayer;
 layout(location = 0) out float maskOut;   // the class
@@ -47,7 +47,7 @@ bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {
 // Bounds over the texel rectangle [lo, hi] from the chosen hierarchy.
 vec3 boundsOverRect(ivec2 lo, ivec2 hi, ivec2 mapSize) {
   return CLASSIFY_OVER_MINMAX != 0
-             ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, lo, hi, mapSize, uMinMaxCells)
+             ? minmaxBoundsOverRect(minmaxLevels, nearLayer, farLayer, lo, hi, mapSize, uMinMaxCells)
              : nbufferBoundsOverRect(nbufferLevels, lo, hi);
 }
 
@@ -82,7 +82,7 @@ int classify(vec3 wsPosition, vec3 wsNormal, out vec4 zRange) {
   // The coarsest level's window (the min-max mipmap's one top cell) is the whole map: the
   // starting bounds (§3.6).
   vec3 whole = CLASSIFY_OVER_MINMAX != 0
-                   ? minmaxBoundsOverRect(minmaxAtlas, nearLayer, farLayer, ivec2(0), size - 1, size, 1)
+                   ? minmaxBoundsOverRect(minmaxLevels, nearLayer, farLayer, ivec2(0), size - 1, size, 1)
                    : nbufferWholeMap(nbufferLevels);
   // The point's own map coordinates, once: every offset below is worked out from them.
   vec3 pointMap = lightMapCoords(wsPosition);

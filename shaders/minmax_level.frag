@@ -4,15 +4,17 @@
 // copy of them).
 // Two programs (MINMAX_FROM_LAYERS 1: level 1; 0: the coarser levels), each reading one
 // source.
-// A fragment shader drawn over the level's rectangle of the atlas (app/gl/screen_triangle.h:
-// why not a compute pass); the coarser levels read level n-1 of the same atlas through an
-// image unit, a rectangle this draw does not write (no rendering feedback loop: GL 4.5
-// §9.3.1 concerns textures bound to texture units).
+// A fragment shader drawn over the whole of mip level n - 1 (app/gl/screen_triangle.h: why
+// not a compute pass), one texel per invocation; texels past the level's ceil(W / 2^n) x
+// ceil(H / 2^n) (the power-of-two padding, minmax.glsl) are written (0, 0, 0, 0). The coarser
+// levels read level n-1 through a texture view of its mip level alone while the draw writes
+// a view of mip level n - 1 alone: two levels of one texture, neither view reaching the other's
+// level, so no rendering feedback loop (GL 4.5 §9.3.1).
 #include "shared/minmax.glsl"
 #include "shared/minmax_layout.h"
 layout(binding = MINMAX_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = MINMAX_FAR_UNIT) uniform sampler2D farLayer;
-layout(binding = MINMAX_ATLAS_IMAGE, rgba32f) uniform readonly image2D atlas;
+layout(binding = MINMAX_FINER_UNIT) uniform sampler2D finerLevel;
 layout(location = MINMAX_LEVEL_LOCATION) uniform int uLevel;
 layout(location = MINMAX_SIZE_LOCATION) uniform ivec2 uSize;
 layout(location = 0) out vec4 bounds;
@@ -22,7 +24,12 @@ layout(location = 0) out vec4 bounds;
 #endif
 
 void main() {
-  ivec2 texel = ivec2(gl_FragCoord.xy) - minmaxLevelOrigin(uLevel, uSize);
+  ivec2 texel = ivec2(gl_FragCoord.xy);
+  ivec2 levelSize = ivec2(minmaxLevelSize(uLevel, uSize.x), minmaxLevelSize(uLevel, uSize.y));
+  if (any(greaterThanEqual(texel, levelSize))) {  // padding: no cell of the hierarchy
+    bounds = vec4(0.0);
+    return;
+  }
 #if MINMAX_FROM_LAYERS
   // Level 1: the 2 x 2 children from the layers as (near, near, far), each layer in one
   // gather around the children's common corner 2 * texel + 1 (one fetch of four texels);
@@ -36,13 +43,13 @@ void main() {
 #else
   ivec2 finerSize =
       ivec2(minmaxLevelSize(uLevel - 1, uSize.x), minmaxLevelSize(uLevel - 1, uSize.y));
-  ivec2 finerOrigin = minmaxLevelOrigin(uLevel - 1, uSize);
-  // The first child always exists; the others where the finer level reaches them.
-  bounds = imageLoad(atlas, finerOrigin + 2 * texel);
+  // The first child always exists; the others where the finer level reaches them (past it
+  // lies the padding, never read).
+  bounds = texelFetch(finerLevel, 2 * texel, 0);
   for (int child = 1; child < 4; ++child) {
     ivec2 finer = 2 * texel + ivec2(child & 1, child >> 1);
     if (any(greaterThanEqual(finer, finerSize))) continue;
-    vec4 b = imageLoad(atlas, finerOrigin + finer);
+    vec4 b = texelFetch(finerLevel, finer, 0);
     bounds = vec4(min(bounds.x, b.x), max(bounds.y, b.y), max(bounds.z, b.z), 0.0);
   }
 #endif

@@ -144,7 +144,7 @@ std::vector<BenchConfig> referenceMethods(bool rebuildBvh = false) {
 
 // The Monte Carlo method as it ships: hierarchical, deferred, filtered, with `auto` choosing
 // the map, the layers and the rays (docs/accuracy.md) and the hierarchy
-// (docs/decisions/024-minmax-mipmap-atlas.md), to be seen against the fixed ones' frontier.
+// (docs/decisions/024-minmax-mipmap-levels.md), to be seen against the fixed ones' frontier.
 BenchConfig monteCarloAuto() {
   BenchConfig config{"hierarchical auto", "filter", "hierarchical auto",
                      {"trace.search=hierarchical", "trace.hierarchy=auto", "light.layers=auto",

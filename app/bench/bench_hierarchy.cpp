@@ -102,7 +102,7 @@ int runBenchHierarchy(const BenchHierarchyOptions& options) {
     std::fflush(stdout);
   }
   table << "\nRatios: min-max / N-buffer (targets at 2048^2: build <= 1/8, memory <= 1/8, "
-           "fetches within 1.5x; docs/decisions/024-minmax-mipmap-atlas.md). frame ms: the "
+           "fetches within 1.5x; docs/decisions/024-minmax-mipmap-levels.md). frame ms: the "
            "stages trace.visibility needs (classify reads the side's hierarchy, Eq 3.3; the "
            "min-max side builds no N-buffer).\n";
   const std::filesystem::path out(options.out);

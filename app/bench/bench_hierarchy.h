@@ -8,7 +8,7 @@
 
 struct BenchHierarchyOptions {
   // The Markdown file to write (--out, required); the table is printed too. The numbers
-  // that decided the min-max mipmap are in docs/decisions/024-minmax-mipmap-atlas.md.
+  // that decided the min-max mipmap are in docs/decisions/024-minmax-mipmap-levels.md.
   std::string out;
   int frames = 6, warmup = 1;
   int width = 640, height = 480;

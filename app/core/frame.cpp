@@ -5,14 +5,15 @@
 #include "core/pipeline.h"
 
 GlTexture& Frame::output(const Stage& stage, const std::string& name, int width, int height,
-                         int layers) {
+                         int layers, int levels) {
   const Output& declared = stage.output(name);  // throws for undeclared outputs
   if (declared.isBuffer())
     throw std::logic_error(stage.name() + "." + name + " is a buffer output (outputBuffer)");
   GlTexture& texture = textures[stage.name() + "." + name];
   if (texture.id() == 0 || texture.width() != width || texture.height() != height ||
-      texture.layers() != layers || texture.internalFormat() != declared.format)
-    texture = GlTexture(declared.format, width, height, layers);
+      texture.layers() != layers || texture.levels() != levels ||
+      texture.internalFormat() != declared.format)
+    texture = GlTexture(declared.format, width, height, layers, levels);
   return texture;
 }
 

@@ -70,9 +70,10 @@ struct Frame {
   Frame(const Scene& scene, const GpuScene& gpuScene, const Pipeline& pipeline)
       : scene(scene), gpuScene(gpuScene), pipeline(pipeline) {}
 
-  // Allocates (or reuses, when the shape matches) the texture of a declared output.
+  // Allocates (or reuses, when the shape matches) the texture of a declared output; `levels`
+  // mip levels (the min-max mipmap; every other output has one).
   GlTexture& output(const Stage& stage, const std::string& name, int width, int height,
-                    int layers = 0);
+                    int layers = 0, int levels = 1);
   // The storage buffer of a declared buffer output (created empty on first use).
   GlBuffer& outputBuffer(const Stage& stage, const std::string& name);
   // The texture wired to `slot` of `stage`; throws naming the slot and producer if the

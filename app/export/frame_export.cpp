@@ -83,14 +83,24 @@ std::vector<std::string> exportFrame(const std::string& target, const Frame& fra
       const GlTexture& texture = frame.texture(key);
       run["outputs"][key] = {{"size", {texture.width(), texture.height()}},
                              {"layers", std::max(texture.layers(), 1)},
+                             {"mip_levels", texture.levels()},
                              {"channels", output.channels}};
       for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer) {
-        const std::string stem = texture.isArray() ? key + ".L" + std::to_string(layer) : key;
-        for (const auto& path : exportTexture(directory, stem, texture, output, layer))
-          written.push_back((transaction.target() / path.filename()).string());
-        if (annotate)
-          writeAnnotatedPng(directory / (stem + ".png"), frame, key, texture, output, layer,
-                            keyParameters);
+        // A mipmapped output (the min-max mipmap): one file per mip level, "KEY.M<m>", each
+        // at its own size (a view of that level, gl_texture.h).
+        for (int mip = 0; mip < texture.levels(); ++mip) {
+          const GlTexture levelView =
+              texture.levels() > 1 ? GlTexture::levelView(texture, mip) : GlTexture();
+          const GlTexture& shown = texture.levels() > 1 ? levelView : texture;
+          const std::string stem = texture.isArray()        ? key + ".L" + std::to_string(layer)
+                                   : texture.levels() > 1 ? key + ".M" + std::to_string(mip)
+                                                          : key;
+          for (const auto& path : exportTexture(directory, stem, shown, output, layer))
+            written.push_back((transaction.target() / path.filename()).string());
+          if (annotate)
+            writeAnnotatedPng(directory / (stem + ".png"), frame, key, shown, output, layer,
+                              keyParameters);
+        }
       }
       progress.advance(key);
     }

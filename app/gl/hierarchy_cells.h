@@ -5,7 +5,6 @@
 #include <glm/integer.hpp>
 
 namespace cells {
-using glm::bitCount;
 using glm::clamp;
 using glm::findMSB;
 using glm::ivec2;

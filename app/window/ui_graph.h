@@ -47,8 +47,8 @@ Stage* recordingStage(const Pipeline& pipeline);
 std::string recordingInput(const Pipeline& pipeline, const std::string& slot);
 // Where the trace panel draws a ray's visited windows: the hierarchy the recording stage
 // searched when it holds one map-sized layer per level (the N-buffer; `perLevel`: show the
-// finest level visited); else the near layer, level 0, under the cells (a min-max mipmap is
-// an atlas of smaller levels that the windows, in level-0 texels, do not fit). Empty output:
+// finest level visited); else the near layer, level 0, under the cells (a min-max mipmap's
+// levels are smaller mip levels that the windows, in level-0 texels, do not fit). Empty output:
 // nothing to show on.
 struct RayOverlayTarget {
   std::string output;

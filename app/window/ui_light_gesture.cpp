@@ -134,15 +134,16 @@ bool handleLightMouse(UiState& state, ViewPanel& view, glm::ivec2 eyeSize, glm::
 //    grey where it lies behind the receiver's tangent plane. Read back once per pipeline run.
 template <class Screen>
 void drawLightMask(const UiState& state, const std::array<glm::vec3, 4>& corners, const Screen& screen) {
-  static std::vector<float> mask;
-  static int maskRun = -1, maskSide = 0;
+  LightMaskCache& cache = state.views.lightMask;
+  std::vector<float>& mask = cache.mask;
+  int& maskSide = cache.side;
   const std::string output = lightMaskOutput(state.session.pipeline);
   if (output.empty() || !state.views.pick || !state.session.frame->has(output)) return;
-  if (maskRun != state.session.pipelineRuns) {
+  if (cache.run != state.session.pipelineRuns) {
     const GlTexture& texture = state.session.frame->texture(output);
     maskSide = texture.width() == texture.height() ? texture.width() : 0;
     if (maskSide > 0) mask = readRegion(texture, 0, 0, maskSide, maskSide, 0);
-    maskRun = state.session.pipelineRuns;
+    cache.run = state.session.pipelineRuns;
   }
   if (maskSide <= 0 || mask.size() < size_t(maskSide) * maskSide) return;
   const float m = float(maskSide);

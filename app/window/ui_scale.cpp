@@ -9,8 +9,7 @@ bool validUiScale(float scale) {
   return std::isfinite(scale) && scale >= kMinUiScale && scale <= kMaxUiScale;
 }
 
-void applyUiScale(float scale) {
-  static float applied = 0;
+void applyUiScale(float scale, float& applied) {
   if (!validUiScale(scale) || scale == applied) return;
   applied = scale;
   // 1. The font: ImGui's own (ProggyClean), rasterised at the scaled size.

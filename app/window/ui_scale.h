@@ -7,6 +7,7 @@ constexpr float kMinUiScale = 0.75f, kMaxUiScale = 3.0f;
 
 // Whether `scale` is a valid UI scale (finite, in [kMinUiScale, kMaxUiScale]).
 bool validUiScale(float scale);
-// Applies `scale` if it differs from the one applied last; call between frames (before
-// ImGui::NewFrame), after the OpenGL 3 backend is initialised.
-void applyUiScale(float scale);
+// Applies `scale` if it differs from `applied` (the scale applied last, 0 for none; the
+// caller's state: UiState::appliedUiScale), which it then becomes; call between frames
+// (before ImGui::NewFrame), after the OpenGL 3 backend is initialised.
+void applyUiScale(float scale, float& applied);

@@ -4,9 +4,12 @@
 // can also be performed by a script line.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "window/panels/ui_hash_stats.h"
+#include "window/panels/ui_inspector.h"
 #include "window/panels/ui_temporal.h"
 #include "window/script/ui_script_io.h"
 #include "window/ui_live_truth.h"
@@ -14,6 +17,9 @@
 #include "window/ui_session.h"
 #include "window/ui_state_speed_error.h"
 #include "window/views/ui_view_state.h"
+
+struct Param;
+using ParamHandValues = std::map<const Param*, double>;  // as ui_widgets.h (no ImGui here)
 
 class UiState {
 public:
@@ -29,6 +35,9 @@ public:
     bool wasStacked = false;  // the side panel was one column last frame
     std::string scenePath;    // the scene panel's typed path
     std::string settingsPath = "penumbra_settings.json", exportDirectory;  // the tools' paths
+    ParamHandValues handValues;  // a parameter's own value while auto is on (ui_widgets.h)
+    InspectorMemory inspector;   // the pick table and the picked ray (ui_inspector.h)
+    HashStatsPanelState hashStats;  // the hash comparison and dieharder run (ui_hash_stats.h)
     TemporalPanelState temporal;  // the temporal-stability tab's plot (ui_temporal.h)
   } panelMemory;
   SpeedErrorPanelState speedError;  // the "Speed vs error" panel (ui_state_speed_error.h)
@@ -42,6 +51,7 @@ public:
   bool showHelp = false, showShaderLog = false, showLog = false;
   bool showSpeedError = false;  // the right panel's "Speed vs error" tab instead of the inspector
   float uiScale = 1;            // fonts and sizes (projectors, high-DPI): app/window/ui_scale.h
+  float appliedUiScale = 0;     // the scale the fonts were last built at (0: not yet)
   // What this frame's views show that the draw data does not (their textures' contents),
   // mixed in by each view: the window draws a frame only when it differs (ui_frame_change.h).
   std::uint64_t shownContent = 0;

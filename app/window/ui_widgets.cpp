@@ -44,7 +44,7 @@ double shownParamValue(const Param& param, std::optional<double> autoValue) {
   return param.automatic && autoValue ? *autoValue : param.value;
 }
 
-bool drawParam(Param& param, std::optional<double> autoValue) {
+bool drawParam(Param& param, ParamHandValues& handValues, std::optional<double> autoValue) {
   bool changed = false;
   // `auto` (stages/shared_inputs/auto_settings.h): a checkbox before the widget, which is then greyed.
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -57,9 +57,8 @@ bool drawParam(Param& param, std::optional<double> autoValue) {
                              ImGui::GetContentRegionAvail().x;
   const std::string hidden = "##" + param.key;
   if (nameAbove) ImGui::TextUnformatted(param.key.c_str());
-  // A choice the pipeline decides writes it into the value: the hand value is kept here
-  // while auto is on, so that unticking gives it back.
-  static std::map<const Param*, double> handValues;
+  // A choice the pipeline decides writes it into the value: the hand value is kept in
+  // `handValues` while auto is on, so that unticking gives it back.
   if (param.allowsAuto) {
     bool automatic = param.automatic;
     if (ImGui::Checkbox(("auto##" + param.key).c_str(), &automatic)) {

@@ -4,6 +4,7 @@
 #include <epoxy/gl.h>
 
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,9 +18,10 @@ void helpMarker(const std::string& text);
 // 2. Draws `param` from its declaration (checkbox, slider, combo) with a (?) marker giving
 //    its doc and range; returns true when the user changed it. Under `auto` the control
 //    shows `autoValue` (what auto chose this frame, autoChosenValue()), greyed and marked
-//    "(auto)"; the parameter's own value, set by hand, is kept and returns when auto is
-//    unticked.
-bool drawParam(Param& param, std::optional<double> autoValue = {});
+//    "(auto)"; the parameter's own value, set by hand, is kept in `handValues` while auto is
+//    on (the caller's state: UiState::PanelMemory) and returns when auto is unticked.
+using ParamHandValues = std::map<const Param*, double>;
+bool drawParam(Param& param, ParamHandValues& handValues, std::optional<double> autoValue = {});
 // 2b. What `auto` chose for parameter `stage`.`param` in `frame` (stages/shared_inputs/auto_params.h):
 //     the map size, the layers (as the option index) and the rays per side from the frame's
 //     AutoSettings; a choice the pipeline decides (Pipeline::decideAutoChoices) holds its

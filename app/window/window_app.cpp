@@ -455,7 +455,7 @@ struct FrameLoop {
       state.status = problem;
     const bool ran = runRecordingFrame(state, glm::ivec2(state.views.panels[0].eyeRegion));
     // 7d. The UI (fonts rebuilt first when the UI scale changed).
-    applyUiScale(state.uiScale);
+    applyUiScale(state.uiScale, state.appliedUiScale);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     applySyntheticInput(state);
@@ -478,7 +478,7 @@ struct FrameLoop {
     // (An interactive lesson waits for the student: its screenshot shows where it waits.)
     const bool finalShot = (!runner || options.interactiveLesson) && !options.screenshot.empty() &&
                            framesRendered >= options.frames;
-    if (exposed || takeRunOverlayDrawn()) change.forceNext();  // the overlay covered it
+    if (exposed || takeRunOverlayDrawn(window)) change.forceNext();  // the overlay covered it
     exposed = false;
     const bool draw = change.changed(*ImGui::GetDrawData(), state.shownContent);
     if (!draw && !finalShot && state.script.screenshotRequest.empty()) return true;
@@ -576,14 +576,14 @@ int runWindow(const WindowOptions& options) {
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   glfwSetWindowRefreshCallback(window, onRefresh);
   ImGui_ImplOpenGL3_Init("#version 450 core");
-  installRunCancelKeys(window);  // Esc cancels a run in progress
+  auto cancelKeys = std::make_unique<RunCancelKeys>(window);  // Esc cancels a run in progress
 
   int result = 0;
   try {
     auto state = std::make_unique<UiState>();  // GL objects: destroyed before the context
     state->log.echo = true;  // the terminal shows what the log shows
     state->session.renderer = context->renderer();
-    installFrameTraceSource();
+    installFrameTraceSource(state->views);
     result = prepareState(*state, options, std::move(scene), warnings);
     std::unique_ptr<ScriptRunner> runner;
     if (!options.script.empty())
@@ -603,7 +603,7 @@ int runWindow(const WindowOptions& options) {
     result = 1;
   }
   ImGui_ImplOpenGL3_Shutdown();
-  installRunCancelKeys(nullptr);
+  cancelKeys.reset();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   return result;

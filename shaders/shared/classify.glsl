@@ -60,8 +60,8 @@ vec3 nbufferWholeMap(sampler2DArray levels) {
 // higher than over the rectangle itself; a pixel can move from lit or umbra to penumbra,
 // never back (tests/stages/test_classify.cpp counts how many). More cells per axis: a
 // finer level, a cover closer to the rectangle, more fetches (up to cells^2). Level 0 is the
-// layers (near, near, far), not stored in the atlas (minmax.glsl).
-vec3 minmaxBoundsOverRect(sampler2D atlas, sampler2D nearLayer, sampler2D farLayer, ivec2 lo,
+// layers (near, near, far), not stored; level n >= 1 is mip level n - 1 (minmax.glsl).
+vec3 minmaxBoundsOverRect(sampler2D minmaxLevels, sampler2D nearLayer, sampler2D farLayer, ivec2 lo,
                           ivec2 hi, ivec2 mapSize, int cells) {
   int top = levelSpanning(max(mapSize.x, mapSize.y));
   // (hi >> L) - (lo >> L) >= (hi - lo) >> L, so no level below the smallest with
@@ -80,10 +80,9 @@ vec3 minmaxBoundsOverRect(sampler2D atlas, sampler2D nearLayer, sampler2D farLay
       }
     return bounds;
   }
-  ivec2 origin = minmaxLevelOrigin(level, mapSize);
   for (int y = first.y; y <= last.y; ++y)
     for (int x = first.x; x <= last.x; ++x) {
-      vec3 cell = texelFetch(atlas, origin + ivec2(x, y), 0).xyz;
+      vec3 cell = texelFetch(minmaxLevels, ivec2(x, y), level - 1).xyz;
       bounds = vec3(min(bounds.x, cell.x), max(bounds.yz, cell.yz));
     }
   return bounds;

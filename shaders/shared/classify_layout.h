@@ -6,7 +6,7 @@
 #define CLASSIFY_WS_POSITION_UNIT 0
 #define CLASSIFY_WS_NORMAL_UNIT 1
 #define CLASSIFY_LEVELS_UNIT 2      // the N-buffer (2D array texture)
-#define CLASSIFY_MINMAX_UNIT 3      // or the min-max mipmap's atlas (minmax.glsl),
+#define CLASSIFY_MINMAX_UNIT 3      // or the min-max mipmap's levels (minmax.glsl),
 #define CLASSIFY_NEAR_UNIT 4        // whose level 0 is the near
 #define CLASSIFY_FAR_UNIT 5         // and far layers
 #define CLASSIFY_MASK_UNIT 0        // classify_list.comp: the mask classify.frag wrote

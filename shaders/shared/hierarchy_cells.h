@@ -1,6 +1,6 @@
 // The integer window and cell arithmetic of the two depth hierarchies over the light layers,
 // compiled by GLSL (nbuffer.glsl, minmax.glsl include it) and by C++ (app/gl/hierarchy_cells.h
-// includes it with glm's ivec2, clamp, min, max, findMSB and bitCount): one text for the
+// includes it with glm's ivec2, clamp, min, max and findMSB): one text for the
 // shaders that build and search the hierarchies and for the window, the builders and the
 // tests that reason about them. Written in the subset both languages share: int and ivec2,
 // no overloads, no references; CELLS_FN is `inline` in C++ (one definition in many files)
@@ -50,9 +50,14 @@ CELLS_FN ivec2 minmaxCell1D(int level, int c, int size) {
   return ivec2(c << level, min((c + 1) << level, size) - 1);
 }
 
-// Atlas origin of level `level` >= 1. The stacked heights sum_{j=1}^{n-1} ceil(H / 2^j) in closed
-// form: ceil(H / 2^j) = floor((H - 1) / 2^j) + 1, and sum_{j>=1} floor(m / 2^j) = m - bitCount(m).
-CELLS_FN ivec2 minmaxLevelOrigin(int level, ivec2 size) {
-  int m = size.y - 1, tail = m >> (level - 1);
-  return ivec2(0, (m - bitCount(m)) - (tail - bitCount(tail)) + level - 1);
-}
+// Storage (minmax.glsl): level n >= 1 is mip level n - 1 of one texture, level 0 the layers.
+// GL's mip level m has floor(B / 2^m) texels per axis (at least 1), the cells ceil(size / 2^n):
+// the base B must cover ceil(size / 2^(m+1)) at every m. With k = levelSpanning(size),
+// ceil(size / 2^(k-1)) = 2 for size > 1 forces B >= 2^(k-1), and B = 2^(k-1) covers every level
+// (size <= 2^k); no smaller base does, and an exact one (floor = ceil at every level) would need
+// ceil(size / 2) itself a power of two. Texels per axis of mip level 0 (level 1), padded:
+CELLS_FN int minmaxBaseSize(int size) { return 1 << max(levelSpanning(size) - 1, 0); }
+
+// Mip levels stored: levels 1 .. top (top = levelSpanning(max(W, H))), one texel at the top;
+// 1 for a 1 x 1 map (top 0: nothing above the layers; the one texel is never read).
+CELLS_FN int minmaxMipLevels(ivec2 size) { return max(levelSpanning(max(size.x, size.y)), 1); }

@@ -8,10 +8,14 @@
 // ceil(log2(max(W, H))), one texel over the whole map.
 //
 // Storage: level 0 is not stored: it is the light layers themselves, (near, near, far),
-// read there (trace_ray.glsl hierarchyTexel). Levels n >= 1 are one RGBA32F 2D texture, an
-// atlas (C++: app/gl/minmax_build.h): level n at x = 0, y = the heights of levels 1 .. n-1
-// stacked. The atlas is ceil(W/2) x (sum of those heights) texels (1 x 1 for a 1 x 1 map);
-// the stored levels use 1/3 of one level.
+// read there (trace_ray.glsl hierarchyTexel). Levels n >= 1 are the mip levels of one
+// RGBA32F 2D texture (C++: app/gl/minmax_build.h): level n is mip level n - 1, read with
+// texelFetch(levels, cell, n - 1). Its base is minmaxBaseSize(W) x minmaxBaseSize(H), the
+// next power of two of ceil(W/2) x ceil(H/2) (GL's mips round down, the cells up:
+// hierarchy_cells.h says why no smaller base holds every level); texels of a mip level past
+// the level's ceil(W / 2^n) x ceil(H / 2^n) are (0, 0, 0, 0), never read
+// (docs/decisions/024-minmax-mipmap-levels.md).
 
-// The arithmetic, shared with C++: minmaxLevelSize, minmaxCell1D, minmaxLevelOrigin.
+// The arithmetic, shared with C++: minmaxLevelSize, minmaxCell1D, minmaxBaseSize,
+// minmaxMipLevels.
 #include "hierarchy_cells.h"

@@ -26,7 +26,7 @@
 #define TRACE_NEAR_UNIT 2         // trace_ray.glsl: the layers and the hierarchy
 #define TRACE_FAR_UNIT 3
 #define TRACE_LEVELS_UNIT 4       // the N-buffer (2D array texture)
-#define TRACE_MINMAX_UNIT 5       // the min-max mipmap atlas (minmax.glsl)
+#define TRACE_MINMAX_UNIT 5       // the min-max mipmap's levels >= 1 (minmax.glsl)
 #define TRACE_MASK_UNIT 6         // trace.comp: classify's class and bounds
 #define TRACE_ZRANGE_UNIT 7
 #define TRACE_VISIBILITY_IMAGE 0  // trace.comp (written)

@@ -19,7 +19,7 @@ layout(binding = TRACE_NEAR_UNIT) uniform sampler2D nearLayer;
 // texelFetch: every read is of one whole texel.
 layout(binding = TRACE_FAR_UNIT) uniform sampler2D farLayer;
 layout(binding = TRACE_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
-layout(binding = TRACE_MINMAX_UNIT) uniform sampler2D minmaxAtlas;
+layout(binding = TRACE_MINMAX_UNIT) uniform sampler2D minmaxLevels;  // level n >= 1: mip n - 1
 
 struct Ray {
   vec2 a, d;            // texel space start and direction (B - A)
@@ -132,7 +132,7 @@ vec2 fetchLayers(ivec2 texel) {
 vec4 hierarchyTexel(ivec2 texel, int level) {
   if (traceHierarchy() != HIERARCHY_MINMAX) return texelFetch(nbufferLevels, ivec3(texel, level), 0);
   if (level > 0)
-    return texelFetch(minmaxAtlas, minmaxLevelOrigin(level, ivec2(light.mapSize.xy)) + texel, 0);
+    return texelFetch(minmaxLevels, texel, level - 1);
   float nearDepth = texelFetch(nearLayer, texel, 0).r;
   return vec4(nearDepth, nearDepth, texelFetch(farLayer, texel, 0).r, 0.0);
 }

@@ -105,7 +105,7 @@ public:
 
     // 1. The class and the bounds per pixel (classify.frag).
     const GlTexture& levels = frame.input(*this, "levels");
-    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
+    const bool minmax = !levels.isArray();  // the min-max mipmap is 2D, the N-buffer an array
     programs_[std::string("#define CLASSIFY_OVER_MINMAX ") + (minmax ? "1" : "0") + "\n"].use();
     bindLightInput(frame, *this);
     bindTextureForReading(CLASSIFY_WS_POSITION_UNIT, frame.input(*this, "wsPosition"));

@@ -187,7 +187,7 @@ public:
     params.config = {rays, param("sampling").asInt(), param("search").asInt(), frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
                        param("early_out_region").asBool(), param("shorten_rays").asBool()};
-    const bool minmax = !levels.isArray();  // the min-max atlas is 2D, the N-buffer an array
+    const bool minmax = !levels.isArray();  // the min-max mipmap is 2D, the N-buffer an array
     params.limits = {param("max_iterations").asInt(), param("binary_steps").asInt(),
                      minmax ? HIERARCHY_MINMAX : HIERARCHY_NBUFFER,
                      param("use_classification").asBool()};

@@ -15,8 +15,10 @@ TEST(PipelineMemory, MegabytesFollowTheFormatsAndSizes) {
   const double mib = 1024.0 * 1024.0;
   // RGBA32F: 16 bytes a texel; the N-buffer keeps nbufferLevelCount(256, 256) = 9 levels.
   EXPECT_EQ(run.frame->megabytes("nbuffer.levels"), 256.0 * 256 * 9 * 16 / mib);
-  const glm::ivec2 atlas = minmaxAtlasSize(256, 256);
-  EXPECT_EQ(run.frame->megabytes("minmax.levels"), double(atlas.x) * atlas.y * 16 / mib);
+  // The min-max mipmap: mip levels 128^2, 64^2, ..., 1 (levels 1 .. 8 of the hierarchy).
+  double minmaxTexels = 0;
+  for (int side = 128; side >= 1; side /= 2) minmaxTexels += double(side) * side;
+  EXPECT_EQ(run.frame->megabytes("minmax.levels"), minmaxTexels * 16 / mib);
   EXPECT_EQ(run.frame->megabytes("trace.visibility"), 64.0 * 48 * 4 / mib);      // R32F
   EXPECT_EQ(run.frame->megabytes("light_layers.near"), 256.0 * 256 * 4 / mib);   // DEPTH32F
   EXPECT_EQ(run.frame->megabytes("gbuffer.albedo"), 64.0 * 48 * 4 / mib);        // RGBA8
@@ -24,9 +26,14 @@ TEST(PipelineMemory, MegabytesFollowTheFormatsAndSizes) {
   EXPECT_EQ(run.frame->megabytes("no_stage.nothing"), 0.0);
   EXPECT_EQ(run.frame->megabytes(run.pipeline->stage("nbuffer")),
             run.frame->megabytes("nbuffer.levels"));
-  // The target: the min-max mipmap in at most 1/8 of the N-buffer's memory at 2048^2.
-  const glm::ivec2 big = minmaxAtlasSize(2048, 2048);
-  EXPECT_LE(double(big.x) * big.y, 2048.0 * 2048 * nbufferLevelCount(2048, 2048) / 8);
+  // The min-max mipmap in at most 1/8 of the N-buffer's memory at 2048^2
+  // (docs/decisions/024-minmax-mipmap-levels.md): its mip levels from 1024^2 down.
+  const glm::ivec2 big = minmaxBaseSize(2048, 2048);
+  EXPECT_EQ(big, glm::ivec2(1024, 1024));
+  EXPECT_EQ(minmaxMipLevels(2048, 2048), 11);
+  double bigTexels = 0;
+  for (int side = big.x; side >= 1; side /= 2) bigTexels += double(side) * side;
+  EXPECT_LE(bigTexels, 2048.0 * 2048 * nbufferLevelCount(2048, 2048) / 8);
 }
 
 TEST(PipelineTiming, LlvmpipeUsesGlFinishAndQueriesWorkWhenForced) {

@@ -6,6 +6,7 @@
 // past the top.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <set>
 
@@ -114,12 +115,29 @@ TEST(HierarchyCells, MinMaxCellsMatchBruteForce) {
   }
 }
 
-TEST(HierarchyCells, AtlasOriginIsTheStackedHeights) {
-  for (int height = 1; height <= 300; ++height) {
-    int stacked = 0;
-    for (int level = 1; level <= bruteSpanning(height) + 1; ++level) {
-      EXPECT_EQ(cells::minmaxLevelOrigin(level, {7, height}), glm::ivec2(0, stacked)) << height << " " << level;
-      stacked += (height + power(level) - 1) / power(level);
+// The stored base (GL's mip level m: max(1, floor(B / 2^m)) texels) holds level m + 1's
+// ceil(size / 2^(m+1)) cells at every level, and no smaller base does: found by trying every
+// base from ceil(size / 2) up, with GL's rounding written out; the mip count is GL's for
+// that base (floor(log2(B)) + 1) and reaches the one-cell top level.
+TEST(HierarchyCells, MinMaxBaseIsTheSmallestHoldingEveryLevel) {
+  for (int size = 1; size <= 300; ++size) {
+    const int top = bruteSpanning(size);
+    auto holds = [&](int base) {
+      for (int level = 1; level <= top; ++level) {
+        const int mip = std::max(1, base / power(level - 1));
+        if (mip < (size + power(level) - 1) / power(level)) return false;
+      }
+      return true;
+    };
+    int smallest = (size + 1) / 2;
+    while (!holds(smallest)) ++smallest;
+    EXPECT_EQ(cells::minmaxBaseSize(size), smallest) << size;
+    int glLevels = 1;
+    while (power(glLevels) <= smallest) ++glLevels;
+    EXPECT_EQ(cells::minmaxMipLevels({size, 1}), std::max(top, 1)) << size;
+    EXPECT_EQ(cells::minmaxMipLevels({1, size}), std::max(top, 1)) << size;
+    if (size > 1) {
+      EXPECT_EQ(glLevels, top) << size;  // every stored mip level is a hierarchy level
     }
   }
 }

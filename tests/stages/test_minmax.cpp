@@ -1,9 +1,9 @@
 // Oracle for the min-max mipmap (layout in shaders/shared/minmax.glsl;
-// docs/decisions/024-minmax-mipmap-atlas.md): every texel of every level equals the brute-force
+// docs/decisions/024-minmax-mipmap-levels.md): every texel of every level equals the brute-force
 // min/max over its aligned cell of level-0 texels, computed on the CPU from the cell definition
-// alone (never from the 2 x 2 recurrence the shader uses), and the atlas places the levels >= 1
-// where the layout says (level 0 is the layers, not stored; the trace oracle tests read it through
-// the search).
+// alone (never from the 2 x 2 recurrence the shader uses), read back from mip level n - 1 of the
+// texture, and the padding past each level's cells is 0 (level 0 is the layers, not stored; the
+// trace oracle tests read it through the search).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,24 +21,28 @@ void checkEveryTexel(int width, int height, unsigned seed) {
   const Layers layers = randomLayers(width, height, seed);
   const GlTexture nearLayer = uploadDepth(layers.nearDepth, width, height);
   const GlTexture farLayer = uploadDepth(layers.farDepth, width, height);
-  const glm::ivec2 atlasSize = minmaxAtlasSize(width, height);
-  GlTexture atlas(GL_RGBA32F, atlasSize.x, atlasSize.y);
-  buildMinMax(nearLayer, farLayer, atlas);
-  const std::vector<float> texels = atlas.readFloats();
+  const GlTexture levels = buildMinMaxLevels(nearLayer, farLayer);
   const int top = minmaxTopLevel(width, height);
   ASSERT_GE(1 << top, std::max(width, height));
-  std::vector<bool> covered(size_t(atlasSize.x) * atlasSize.y, false);
+  ASSERT_EQ(levels.levels(), std::max(top, 1));
   for (int level = 1; level <= top; ++level) {
-    const int span = 1 << level;
-    const glm::ivec2 size = minmaxLevelSize(level, width, height), origin =
-        minmaxLevelOrigin(level, width, height);
-    ASSERT_LE(origin.x + size.x, atlasSize.x);
-    ASSERT_LE(origin.y + size.y, atlasSize.y);
+    const int span = 1 << level, mip = level - 1;
+    const std::vector<float> texels = levels.readLevelFloats(mip);
+    const int stride = levels.levelWidth(mip);
+    const glm::ivec2 size = minmaxLevelSize(level, width, height);
+    ASSERT_LE(size.x, levels.levelWidth(mip)) << "level " << level;
+    ASSERT_LE(size.y, levels.levelHeight(mip)) << "level " << level;
     if (level == top) {
       ASSERT_EQ(size, glm::ivec2(1, 1));
     }
-    for (int cy = 0; cy < size.y; ++cy)
-      for (int cx = 0; cx < size.x; ++cx) {
+    for (int cy = 0; cy < levels.levelHeight(mip); ++cy)
+      for (int cx = 0; cx < stride; ++cx) {
+        const size_t at = (size_t(cy) * stride + cx) * 4;
+        if (cx >= size.x || cy >= size.y) {  // padding: no cell there
+          for (int c = 0; c < 4; ++c)
+            ASSERT_EQ(texels[at + c], 0.0f) << "level " << level << " padding " << cx << "," << cy;
+          continue;
+        }
         float nearMin = 1e30f, nearMax = -1e30f, farMax = -1e30f;
         for (int y = cy * span; y < std::min((cy + 1) * span, height); ++y)
           for (int x = cx * span; x < std::min((cx + 1) * span, width); ++x) {
@@ -46,45 +50,29 @@ void checkEveryTexel(int width, int height, unsigned seed) {
             nearMax = std::max(nearMax, layers.nearDepth[size_t(y) * width + x]);
             farMax = std::max(farMax, layers.farDepth[size_t(y) * width + x]);
           }
-        const size_t at = (size_t(origin.y + cy) * atlasSize.x + origin.x + cx) * 4;
-        ASSERT_FALSE(covered[at / 4]) << "levels overlap at level " << level;
-        covered[at / 4] = true;
         ASSERT_EQ(texels[at + 0], nearMin) << "level " << level << " cell " << cx << "," << cy;
         ASSERT_EQ(texels[at + 1], nearMax) << "level " << level << " cell " << cx << "," << cy;
         ASSERT_EQ(texels[at + 2], farMax) << "level " << level << " cell " << cx << "," << cy;
+        ASSERT_EQ(texels[at + 3], 0.0f);
       }
   }
-  // The rest of the atlas is cleared (no stale or uninitialized values in the view).
-  for (size_t i = 0; i < covered.size(); ++i)
-    if (!covered[i]) {
-      for (int c = 0; c < 4; ++c) ASSERT_EQ(texels[i * 4 + c], 0.0f) << "atlas texel " << i;
-    }
 }
 
 }  // namespace
 
-// The levels never overlap in the atlas, and the atlas holds 1/3 of one level (plus the
-// padding right of levels >= 2) instead of the N-buffer's log2(W) + 1 levels.
-TEST(MinMax, AtlasLayoutLevelsAreDisjointAndSmall) {
-  for (glm::ivec2 map : {glm::ivec2(1, 1), {1, 7}, {5, 3}, {100, 37}, {256, 256}, {2048, 2048}}) {
-    const glm::ivec2 atlas = minmaxAtlasSize(map.x, map.y);
-    long used = 0;
-    for (int level = 1; level <= minmaxTopLevel(map.x, map.y); ++level) {
-      const glm::ivec2 size = minmaxLevelSize(level, map.x, map.y);
-      used += long(size.x) * size.y;
-      const glm::ivec2 origin = minmaxLevelOrigin(level, map.x, map.y);
-      EXPECT_EQ(origin.x, 0);
-      EXPECT_LE(size.x, atlas.x);
-      // stacked right below the previous level
-      const int below = level == 1 ? 0 : minmaxLevelOrigin(level - 1, map.x, map.y).y +
-                                             minmaxLevelSize(level - 1, map.x, map.y).y;
-      EXPECT_EQ(origin.y, below);
-      EXPECT_LE(origin.y + size.y, atlas.y);
-    }
+// The stored levels hold 1/3 of one level at a power-of-two map, and under 4/3 of one level
+// (the padding) at any map, instead of the N-buffer's log2(W) + 1 levels.
+TEST(MinMax, MipLevelsAreSmall) {
+  for (glm::ivec2 map : {glm::ivec2(1, 1), {1, 7}, {5, 3}, {100, 37}, {300, 300}, {256, 256},
+                         {2048, 2048}}) {
+    const glm::ivec2 base = minmaxBaseSize(map.x, map.y);
+    double stored = 0;
+    for (int mip = 0; mip < minmaxMipLevels(map.x, map.y); ++mip)
+      stored += double(std::max(1, base.x >> mip)) * std::max(1, base.y >> mip);
     const double levelTexels = double(map.x) * map.y;
-    EXPECT_LE(double(used), 1.0 / 3.0 * levelTexels + 2 * (map.x + map.y) + 16) << map.x;
-    if (map.x >= 256) {
-      EXPECT_LE(double(atlas.x) * atlas.y, 0.5 * levelTexels) << map.x;
+    EXPECT_LE(stored, 4.0 / 3.0 * levelTexels + 2 * (map.x + map.y) + 16) << map.x;
+    if (map.x == 256 || map.x == 2048) {
+      EXPECT_LE(stored, levelTexels / 3.0) << map.x;
     }
   }
 }
@@ -99,25 +87,27 @@ TEST(MinMax, EveryTexelOfEveryLevelEqualsBruteForceNonSquare) {
 }
 TEST(MinMax, EveryTexelOfEveryLevelEqualsBruteForce512) { checkEveryTexel(512, 512, 6); }
 
-TEST(MinMax, RejectsAnAtlasOfTheWrongShape) {
+TEST(MinMax, RejectsLevelsOfTheWrongShape) {
   headlessContext();
   const GlTexture nearLayer(GL_DEPTH_COMPONENT32F, 16, 16), farLayer(GL_DEPTH_COMPONENT32F, 16, 16);
-  GlTexture wrong(GL_RGBA32F, 16, 16);
-  EXPECT_THROW(buildMinMax(nearLayer, farLayer, wrong), std::invalid_argument);
+  GlTexture wrongSize(GL_RGBA32F, 16, 16, 0, 4), oneLevel(GL_RGBA32F, 8, 8);
+  EXPECT_THROW(buildMinMax(nearLayer, farLayer, wrongSize), std::invalid_argument);
+  EXPECT_THROW(buildMinMax(nearLayer, farLayer, oneLevel), std::invalid_argument);
 }
 
 // In the pipeline: built from the frame's light layers; the top texel bounds the whole map.
 TEST(MinMaxStage, BuiltFromTheLightLayersOfTheFrame) {
   PipelineRun run(makeBuiltinScene("cube"), {"light.resolution=128", "trace.hierarchy=minmax"},
                   64, 64);
-  const GlTexture& atlas = run.frame->texture("minmax.levels");
-  EXPECT_EQ(glm::ivec2(atlas.width(), atlas.height()), minmaxAtlasSize(128, 128));
+  const GlTexture& levels = run.frame->texture("minmax.levels");
+  EXPECT_EQ(glm::ivec2(levels.width(), levels.height()), glm::ivec2(64, 64));
+  EXPECT_EQ(levels.levels(), 7);  // levels 1 .. 7: 64^2 .. 1
   EXPECT_EQ(run.frame->counters.at("minmax.levels"), 8.0);
   const auto nearLayer = run.read("light_layers.near");
   const auto farLayer = run.read("light_layers.far");
-  const auto texels = atlas.readFloats();
-  const glm::ivec2 top = minmaxLevelOrigin(7, 128, 128);
-  const size_t at = (size_t(top.y) * atlas.width() + top.x) * 4;
+  const auto texels = levels.readLevelFloats(6);  // level 7, one texel
+  ASSERT_EQ(texels.size(), 4u);
+  const size_t at = 0;
   EXPECT_LT(*std::min_element(nearLayer.begin(), nearLayer.end()), 1.0f);  // the cube is in the map
   EXPECT_EQ(texels[at + 0], *std::min_element(nearLayer.begin(), nearLayer.end()));
   EXPECT_EQ(texels[at + 1], *std::max_element(nearLayer.begin(), nearLayer.end()));

@@ -129,7 +129,7 @@ std::vector<RaySet> allRaySets() {
 // Thesis §3.5: the hierarchical search is exact (it "eliminates aliasing"): it must agree
 // with the exact traversal on >= 99.99% of >= 100,000 rays; every disagreement is printed.
 // The same for Algorithm 2 on the min-max mipmap's aligned cells
-// (docs/decisions/024-minmax-mipmap-atlas.md), one and two layers, with the fetches per ray of both
+// (docs/decisions/024-minmax-mipmap-levels.md), one and two layers, with the fetches per ray of both
 // hierarchies written down side by side.
 void expectExact(int hierarchy, int layers) {
   const char* name = hierarchy == HIERARCHY_MINMAX ? "minmax" : "nbuffer";

@@ -16,9 +16,7 @@ RayQueryRunner::RayQueryRunner(int width, int height, const std::vector<float>& 
   glTextureSubImage2D(far_.id(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, farLayer.data());
   levels_ = GlTexture(GL_RGBA32F, width, height, nbufferLevelCount(width, height));
   buildNBuffer(near_, far_, levels_);
-  const glm::ivec2 atlas = minmaxAtlasSize(width, height);
-  minmax_ = GlTexture(GL_RGBA32F, atlas.x, atlas.y);
-  buildMinMax(near_, far_, minmax_);
+  minmax_ = buildMinMaxLevels(near_, far_);
 }
 
 std::vector<RayQueryOutcome> RayQueryRunner::run(const std::vector<gpu::RayQuery>& queries,

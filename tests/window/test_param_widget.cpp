@@ -37,7 +37,7 @@ protected:
     ImGui::Begin("params", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove);
     checkbox = ImGui::GetCursorScreenPos();  // the auto checkbox is the first item
     ImGui::PushItemWidth(300);
-    const bool changed = drawParam(param, autoValue);
+    const bool changed = drawParam(param, handValues, autoValue);
     ImGui::PopItemWidth();
     ImGui::End();
     ImGui::Render();
@@ -52,6 +52,7 @@ protected:
     return changed;
   }
   ImVec2 checkbox{8, 8};
+  ParamHandValues handValues;  // the window keeps these in UiState::PanelMemory
 };
 
 }  // namespace

@@ -1,8 +1,8 @@
 // Where the trace panel's "Show on ..." button draws a ray's visited windows
 // (window/ui_graph.h rayOverlayTarget): over the N-buffer's levels, one map-sized layer each;
-// over the near layer when the trace searched the min-max mipmap, whose atlas of smaller
+// over the near layer when the trace searched the min-max mipmap, whose smaller mip
 // levels the windows (in level-0 texels) do not fit. trace.hierarchy=auto chooses the min-max
-// mipmap on large maps (docs/decisions/024-minmax-mipmap-atlas.md), so this is the default on the
+// mipmap on large maps (docs/decisions/024-minmax-mipmap-levels.md), so this is the default on the
 // window's engine and dragon.
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@ TEST(WindowRayOverlay, TheNBufferShowsItsLevelsTheMinMaxMipmapItsLevelZero) {
   target = rayOverlayTarget(*run.pipeline, run.frame.get());
   EXPECT_EQ(target.output, "light_layers.near");
   EXPECT_FALSE(target.perLevel);
-  // The windows are drawn in the map's texels: the near layer is that size, the atlas is not.
+  // The windows are drawn in the map's texels: the near layer is that size, the mip levels are not.
   EXPECT_EQ(run.frame->texture(target.output).width(), 256);
   EXPECT_NE(run.frame->texture("minmax.levels").width(), 256);
 }

@@ -49,9 +49,11 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 // 1. Scene, output, level, eye size, then the producing stage's changed parameters.
 std::string exportStem(const UiState& state, const std::string& stageDotOutput, int layer) {
   std::string stem = state.session.scene.name + "_" + stageDotOutput;
-  if (state.session.frame && state.session.frame->has(stageDotOutput) &&
-      state.session.frame->texture(stageDotOutput).isArray())
-    stem += "_L" + std::to_string(layer);
+  if (state.session.frame && state.session.frame->has(stageDotOutput)) {
+    const GlTexture& texture = state.session.frame->texture(stageDotOutput);
+    if (texture.isArray()) stem += "_L" + std::to_string(layer);
+    else if (texture.levels() > 1) stem += "_M" + std::to_string(layer);  // the mip level
+  }
   if (state.session.frame) {
     char size[40];
     std::snprintf(size, sizeof size, "_%dx%d", state.session.frame->eyeWidth, state.session.frame->eyeHeight);
@@ -86,7 +88,8 @@ std::string exportViewFiles(const UiState& state, const ViewPanel& view, const s
     else {
       const fs::path directory = target.empty() ? fs::path(kDefaultExportDirectory) : fs::path(target);
       const GlTexture& source = state.session.frame->texture(view.output);  // a difference is 2D
-      const int sourceLayer = source.isArray() ? std::clamp(view.settings.layer, 0, source.layers() - 1) : 0;
+      const int sourceLayer = std::clamp(view.settings.layer, 0,
+                                         std::max(source.isArray() ? source.layers() : source.levels(), 1) - 1);
       std::string stem = exportStem(state, view.output, sourceLayer);
       if (!view.minus.empty())  // "cube_light_layers.far-minus-light_layers.near_..."
         stem.insert(state.session.scene.name.size() + 1 + view.output.size(),

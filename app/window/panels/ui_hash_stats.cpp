@@ -60,11 +60,7 @@ void drawTable(const UiState& state) {
 }
 
 // 2. Every hash on the stage's pattern, 2^16 samples each, with measured throughput.
-struct Comparison {
-  std::vector<std::string> hashes;
-  std::vector<Result> results;
-  std::vector<double> hashesPerSecond;
-};
+using Comparison = HashStatsPanelState::Comparison;
 
 void drawComparison(UiState& state, std::unique_ptr<Comparison>& comparison) {
   const bool compare = ImGui::Button("compare all hashes");
@@ -152,9 +148,8 @@ void drawDieharder(UiState& state, std::unique_ptr<DieharderRun>& run) {
 }  // namespace
 
 void drawHashStatsPanel(UiState& state) {
-  static std::unique_ptr<Comparison> comparison;
-  static std::unique_ptr<DieharderRun> run;
+  HashStatsPanelState& memory = state.panelMemory.hashStats;
   drawTable(state);
-  drawComparison(state, comparison);
-  drawDieharder(state, run);
+  drawComparison(state, memory.comparison);
+  drawDieharder(state, memory.run);
 }

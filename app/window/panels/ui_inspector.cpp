@@ -13,24 +13,18 @@
 
 namespace {
 
-// One row of the pick table: an output (and level) with its raw values at the pick.
-struct PickRow {
-  std::string label;
-  std::vector<std::string> channelNames;
-  std::array<float, 4> values;
-  int channelCount;
-};
+using PickRow = InspectorMemory::PickRow;
 
 // 1. Read back once per pipeline run and pick, not every UI frame.
-const std::vector<PickRow>& pickRows(const UiState& state) {
-  static std::vector<PickRow> rows;
-  static int cachedRuns = -1;
-  static glm::ivec2 cachedPick{-1}, cachedSpace{-1};
-  if (cachedRuns == state.session.pipelineRuns && cachedPick == *state.views.pick && cachedSpace == state.views.pickSpace)
+const std::vector<PickRow>& pickRows(UiState& state) {
+  InspectorMemory& memory = state.panelMemory.inspector;
+  std::vector<PickRow>& rows = memory.rows;
+  if (memory.rowsRuns == state.session.pipelineRuns && memory.rowsPick == *state.views.pick &&
+      memory.rowsSpace == state.views.pickSpace)
     return rows;
-  cachedRuns = state.session.pipelineRuns;
-  cachedPick = *state.views.pick;
-  cachedSpace = state.views.pickSpace;
+  memory.rowsRuns = state.session.pipelineRuns;
+  memory.rowsPick = *state.views.pick;
+  memory.rowsSpace = state.views.pickSpace;
   rows.clear();
   for (const auto& stage : state.session.pipeline.stages())
     for (const Output& output : stage->outputs()) {
@@ -40,13 +34,13 @@ const std::vector<PickRow>& pickRows(const UiState& state) {
       if (texture.width() != state.views.pickSpace.x || texture.height() != state.views.pickSpace.y) continue;
       for (int layer = 0; layer < std::max(texture.layers(), 1); ++layer)
         rows.push_back({texture.isArray() ? key + " L" + std::to_string(layer) : key, output.channels,
-                        readTexel(texture, cachedPick.x, cachedPick.y, layer),
+                        readTexel(texture, memory.rowsPick.x, memory.rowsPick.y, layer),
                         texture.channelCount()});
     }
   return rows;
 }
 
-void drawPick(const UiState& state) {
+void drawPick(UiState& state) {
   if (!state.views.pick || !state.session.frame) {
     hintText("Click a view to pick a texel; arrow keys move the pick.");
     return;
@@ -160,7 +154,7 @@ void drawAutoReasons(const UiState& state) {
 // 4. The ray trace hook: the picked eye pixel, ray i of n x n.
 void drawRayTrace(UiState& state) {
   state.views.overlays.clear();
-  if (!rayTraceSource()) {
+  if (!state.views.traceSource) {
     hintText("No trace source installed (ui_trace_panel.h).");
     return;
   }
@@ -170,15 +164,15 @@ void drawRayTrace(UiState& state) {
     return;
   }
   // The source may replay a whole ray on the CPU: once per run, pick and ray.
-  static RayTraceInfo trace;
-  static int cachedRuns = -1, cachedRay = -1;
-  static glm::ivec2 cachedPick{-1};
-  if (cachedRuns != state.session.pipelineRuns || cachedPick != *state.views.pick || cachedRay != state.views.selectedRay) {
-    trace = rayTraceSource()(*state.session.frame, *state.views.pick, state.views.selectedRay);
+  InspectorMemory& memory = state.panelMemory.inspector;
+  RayTraceInfo& trace = memory.trace;
+  if (memory.traceRuns != state.session.pipelineRuns || memory.tracePick != *state.views.pick ||
+      memory.traceRay != state.views.selectedRay) {
+    trace = state.views.traceSource(*state.session.frame, *state.views.pick, state.views.selectedRay);
     describeTraceCommand(state, trace);
-    cachedRuns = state.session.pipelineRuns;
-    cachedPick = *state.views.pick;
-    cachedRay = state.views.selectedRay;
+    memory.traceRuns = state.session.pipelineRuns;
+    memory.tracePick = *state.views.pick;
+    memory.traceRay = state.views.selectedRay;
   }
   if (trace.raysPerPixel > 1) {
     ImGui::SetNextItemWidth(-uiPixels(60));

@@ -27,7 +27,9 @@ void drawOutput(UiState& state, const Stage& stage, const Output& output) {
     const GlTexture& texture = state.session.frame->texture(key);
     char text[96];
     std::snprintf(text, sizeof text, "%dx%d%s %.1f MiB", texture.width(), texture.height(),
-                  texture.isArray() ? (" x" + std::to_string(texture.layers())).c_str() : "",
+                  texture.isArray()        ? (" x" + std::to_string(texture.layers())).c_str()
+                  : texture.levels() > 1 ? (" +" + std::to_string(texture.levels() - 1) + " mips").c_str()
+                                         : "",
                   state.session.frame->megabytes(key));
     size = text;
   }
@@ -141,7 +143,7 @@ void drawStage(UiState& state, Stage& stage, int number) {
   const float rest = avail - names - buttonsWidth({"(?)"}) - ImGui::GetStyle().ItemInnerSpacing.x;
   ImGui::PushItemWidth(std::min(std::max(rest, uiPixels(80)), 0.55f * avail));  // else the name goes above
   for (Param& param : stage.params())
-    if (drawParam(param, autoChosenValue(stage.name(), param, state.session.frame.get()))) {
+    if (drawParam(param, state.panelMemory.handValues, autoChosenValue(stage.name(), param, state.session.frame.get()))) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();
     }
   ImGui::PopItemWidth();

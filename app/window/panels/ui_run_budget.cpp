@@ -54,24 +54,30 @@ namespace {
 constexpr double kOverlayAfterSeconds = 1.0;  // shorter runs never show it
 constexpr double kOverlayInterval = 0.1;      // seconds between two overlay frames
 
-struct Overlay {
+}  // namespace
+
+struct RunCancelKeys::Overlay {
   unsigned run = ~0u;           // runSerial() of the run it was captured for
   std::vector<ImDrawList*> lists;  // copies of the frame on screen when the run began
   ImVec2 displayPos{0, 0}, displaySize{0, 0}, framebufferScale{1, 1};
   double lastDrawn = -1;
   bool announced = false;
   bool drawnSinceTaken = false;
-} overlay;
+};
 
-void releaseCapture() {
+namespace {
+
+using Overlay = RunCancelKeys::Overlay;
+
+void releaseCapture(Overlay& overlay) {
   for (ImDrawList* list : overlay.lists) IM_DELETE(list);
   overlay.lists.clear();
 }
 
 // The last frame ImGui rendered (what the screen shows), copied; the commands of textures
 // deleted since (a view's texture that a stage reallocated) are dropped.
-void captureLastFrame() {
-  releaseCapture();
+void captureLastFrame(Overlay& overlay) {
+  releaseCapture(overlay);
   const ImDrawData* data = ImGui::GetDrawData();
   if (!data || !data->Valid) return;
   const ImTextureID font = ImGui::GetIO().Fonts->TexID;
@@ -96,7 +102,7 @@ void captureLastFrame() {
   overlay.framebufferScale = data->FramebufferScale;
 }
 
-void renderCapture() {
+void renderCapture(Overlay& overlay) {
   if (overlay.lists.empty()) return;
   ImDrawData data;
   data.Valid = true;
@@ -115,14 +121,14 @@ void renderCapture() {
 // One overlay frame, from the poll hook, in the middle of a run: the GL state the stage has
 // set is kept (ImGui's renderer restores what it changes; the framebuffers, colour mask,
 // clear colour and scissor test are restored here).
-void drawRunningOverlay(GLFWwindow* window) {
+void drawRunningOverlay(GLFWwindow* window, Overlay& overlay) {
   ImGuiContext* context = ImGui::GetCurrentContext();
   if (!context || context->WithinFrameScope) return;  // a run started from inside a UI frame
   const double elapsed = secondsSinceRunStart();
   if (elapsed < kOverlayAfterSeconds) return;
   if (overlay.run != runSerial()) {
     overlay.run = runSerial();
-    captureLastFrame();
+    captureLastFrame(overlay);
     overlay.lastDrawn = -1;
     overlay.announced = false;
   }
@@ -176,7 +182,7 @@ void drawRunningOverlay(GLFWwindow* window) {
   glDisable(GL_SCISSOR_TEST);
   glClearColor(0.1f, 0.1f, 0.1f, 1);
   glClear(GL_COLOR_BUFFER_BIT);
-  renderCapture();
+  renderCapture(overlay);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   glfwSwapBuffers(window);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer));
@@ -189,40 +195,47 @@ void drawRunningOverlay(GLFWwindow* window) {
 
 // Esc seen by a key callback (chained before ImGui's): a press and its release can both
 // arrive within one poll during a long tile, where glfwGetKey would read "released".
-GLFWkeyfun previousKeyCallback = nullptr;
-bool escapePressed = false;
-
 void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) escapePressed = true;
-  if (previousKeyCallback) previousKeyCallback(window, key, scancode, action, mods);
+  if (auto* keys = static_cast<RunCancelKeys*>(glfwGetWindowUserPointer(window)))
+    keys->onKey(window, key, scancode, action, mods);
 }
 
 }  // namespace
 
-void installRunCancelKeys(GLFWwindow* window) {
-  static GLFWwindow* installed = nullptr;
-  if (!window) {
-    setRunCancelPoll(nullptr);
-    releaseCapture();
-    if (installed) glfwSetKeyCallback(installed, previousKeyCallback);
-    installed = nullptr;
-    return;
-  }
-  installed = window;
-  previousKeyCallback = glfwSetKeyCallback(window, keyCallback);
-  setRunCancelPoll([window] {
-    escapePressed = false;
+RunCancelKeys::RunCancelKeys(GLFWwindow* window)
+    : window_(window), overlay_(std::make_unique<Overlay>()) {
+  glfwSetWindowUserPointer(window, this);
+  previousKeyCallback_ = glfwSetKeyCallback(window, keyCallback);
+  setRunCancelPoll([this] {
+    escapePressed_ = false;
     glfwPollEvents();
-    if (escapePressed || glfwGetKey(window, GLFW_KEY_ESCAPE) == GLFW_PRESS)
+    if (escapePressed_ || glfwGetKey(window_, GLFW_KEY_ESCAPE) == GLFW_PRESS)
       requestRunCancel("Esc pressed");
-    else if (glfwWindowShouldClose(window))
+    else if (glfwWindowShouldClose(window_))
       requestRunCancel("the window is closing");
-    drawRunningOverlay(window);
+    drawRunningOverlay(window_, *overlay_);
   });
 }
 
-bool takeRunOverlayDrawn() {
-  const bool drawn = overlay.drawnSinceTaken;
-  overlay.drawnSinceTaken = false;
+RunCancelKeys::~RunCancelKeys() {
+  setRunCancelPoll(nullptr);
+  releaseCapture(*overlay_);
+  glfwSetKeyCallback(window_, previousKeyCallback_);
+  glfwSetWindowUserPointer(window_, nullptr);
+}
+
+void RunCancelKeys::onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) escapePressed_ = true;
+  if (previousKeyCallback_) previousKeyCallback_(window, key, scancode, action, mods);
+}
+
+bool RunCancelKeys::takeOverlayDrawn() {
+  const bool drawn = overlay_->drawnSinceTaken;
+  overlay_->drawnSinceTaken = false;
   return drawn;
+}
+
+bool takeRunOverlayDrawn(GLFWwindow* window) {
+  auto* keys = static_cast<RunCancelKeys*>(glfwGetWindowUserPointer(window));
+  return keys && keys->takeOverlayDrawn();
 }

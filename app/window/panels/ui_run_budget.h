@@ -6,12 +6,36 @@
 // is doing and a Cancel button that does the same (drawn from the run's own checks, so it is
 // live exactly when a cancel can take effect).
 #pragma once
+#include <memory>
 
 struct UiState;
 
 void drawRunBudgetModal(UiState& state);
-// Installs the poll that lets Esc (or closing the window) cancel a run in progress.
+
+// For its lifetime, the poll that lets Esc (or closing the window) cancel a run in progress
+// and draws the "running" overlay: the key callback chained before ImGui's (installed after
+// ImGui's GLFW backend, gone before it shuts down), what it saw, and the overlay's captured
+// frame. One per window; the key callback finds it through the window's user pointer.
 struct GLFWwindow;
-void installRunCancelKeys(GLFWwindow* window);
-// Whether the overlay covered the screen since the last call: the next frame must be drawn.
-bool takeRunOverlayDrawn();
+class RunCancelKeys {
+public:
+  explicit RunCancelKeys(GLFWwindow* window);
+  ~RunCancelKeys();
+  RunCancelKeys(const RunCancelKeys&) = delete;
+  RunCancelKeys& operator=(const RunCancelKeys&) = delete;
+
+  // Whether the overlay covered the screen since the last call: the next frame must be drawn.
+  bool takeOverlayDrawn();
+  // The key callback's: notes Esc, then passes the key on to the callback it replaced.
+  void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+
+  struct Overlay;  // the frame captured when the run began (ui_run_budget.cpp)
+
+private:
+  GLFWwindow* window_;
+  void (*previousKeyCallback_)(GLFWwindow*, int, int, int, int) = nullptr;
+  bool escapePressed_ = false;
+  std::unique_ptr<Overlay> overlay_;
+};
+// takeOverlayDrawn() of the window's RunCancelKeys (false without one).
+bool takeRunOverlayDrawn(GLFWwindow* window);

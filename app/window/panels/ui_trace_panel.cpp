@@ -8,11 +8,6 @@
 #include "export/trace_json.h"
 #include "window/ui_state.h"
 
-RayTraceSource& rayTraceSource() {
-  static RayTraceSource source;
-  return source;
-}
-
 // Level colours: a small categorical ramp, repeating past 8 levels.
 unsigned levelColor(int level) {
   static const ImU32 colors[8] = {IM_COL32(250, 220, 90, 255),  IM_COL32(90, 210, 220, 255),

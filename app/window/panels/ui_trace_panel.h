@@ -4,11 +4,12 @@
 // without knowing the search: a table, a plot of ray depth against step with each visited
 // neighbourhood's [zNearMin, zFarMax] band, and the visited windows as rectangles (plus the
 // ray's projected path) over views of light-map size (the layers, the N-buffer levels).
-// The steps come from rayTraceSource(); app/window/views/ui_trace_source.cpp installs the one that reads
+// The steps come from the views' traceSource (ViewState, ui_view_state.h);
+// app/window/views/ui_trace_source.cpp installs the one that reads
 // the recorded steps (stages/monte_carlo/trace_steps.h) (recorded for trace.record_x / record_y, which the window sets from the
 // pick). Another search can install its own:
 //
-//     rayTraceSource() = [](const Frame& frame, glm::ivec2 pixel, int ray) {
+//     state.views.traceSource = [](const Frame& frame, glm::ivec2 pixel, int ray) {
 //       return RayTraceInfo{...};  // steps converted to RayStepRecord
 //     };
 //
@@ -52,8 +53,9 @@ struct UiState;
 // or the light moved since the scene loaded (the command uses the scene's).
 void describeTraceCommand(const UiState& state, RayTraceInfo& trace);
 
+// Held by the views (ViewState::traceSource), empty until one is installed
+// (app/window/views/ui_trace_source.h).
 using RayTraceSource = std::function<RayTraceInfo(const Frame&, glm::ivec2 pixel, int ray)>;
-RayTraceSource& rayTraceSource();  // empty until the trace stage installs one
 
 // A shape over views whose texture has size `space`, in continuous texel coordinates
 // (texel (i, j) covers [i, i+1] x [j, j+1], GL rows): a rectangle with corners a, b, or a

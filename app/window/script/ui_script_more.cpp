@@ -193,9 +193,9 @@ void printPick(const UiState& state, const std::string& label) {
     for (int c = 0; c < texture.channelCount(); ++c) std::printf(" %.9g", texel[size_t(c)]);
     std::printf("\n");
   }
-  if (rayTraceSource()) {
+  if (state.views.traceSource) {
     const RayTraceInfo trace =
-        rayTraceSource()(*state.session.frame, pick, state.views.selectedRay);
+        state.views.traceSource(*state.session.frame, pick, state.views.selectedRay);
     int samples = 0, refinements = 0;
     for (const RayStepRecord& step : trace.steps) {
       samples += step.point && !step.refinement;

@@ -73,6 +73,8 @@ void TextureView::autoRange(const GlTexture& source, ViewSettings& settings, lon
 // 3. Read-back of a rectangle, in the formats GlTexture::readFloats uses.
 std::vector<float> readRegion(const GlTexture& texture, int x0, int y0, int width, int height,
                               int layer) {
+  // A 2D texture has one layer (a view's level slider may say more: the shown mip level).
+  layer = texture.isArray() ? std::clamp(layer, 0, texture.layers() - 1) : 0;
   x0 = std::clamp(x0, 0, texture.width());
   y0 = std::clamp(y0, 0, texture.height());
   width = std::clamp(width, 0, texture.width() - x0);

@@ -13,14 +13,13 @@ void drawCategoryLegend(const UiState& state, const ViewPanel& view) {
   const GlTexture& texture = state.session.frame->texture(view.output);
   const int channel = singleChannel(view.settings, texture.channelCount());
   if (channel < 0 || view.settings.colormap != Colormap::Categorical) return;
-  static std::map<int, long> counts;
-  static std::string cachedKey;
+  std::map<int, long>& counts = view.categories.counts;
   const std::string key = std::to_string(state.session.pipelineRuns) + view.output + "/" +
                           std::to_string(view.settings.layer) + "/" + std::to_string(channel);
-  if (key != cachedKey) {
+  if (key != view.categories.key) {
     counts = categoryCounts(texture.readFloats(texture.isArray() ? view.settings.layer : 0),
                             texture.channelCount(), channel);
-    cachedKey = key;
+    view.categories.key = key;
   }
   const Output* output = state.session.outputOf(view.output);
   const auto names = categoryNamesFromDoc(output ? output->doc : "");

@@ -114,8 +114,11 @@ void drawImage(const UiState& state, const ViewPanel& view, const GlTexture& dis
     else draw->AddRect({std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)},
                        shape.color, 0, 0, 1.5f);
   }
-  // N-buffer: the level-0 window the hovered texel of this level summarises.
-  if (hover && view.output == recordingInput(state.session.pipeline, "levels") && view.settings.layer > 0 && hover->x >= 0 &&
+  // N-buffer: the level-0 window the hovered texel of this level summarises (a min-max
+  // mipmap's level is shown at its own size: a texel is its cell there).
+  if (hover && view.output == recordingInput(state.session.pipeline, "levels") && view.settings.layer > 0 &&
+      state.session.frame && state.session.frame->has(view.output) &&
+      state.session.frame->texture(view.output).isArray() && hover->x >= 0 &&
       hover->y >= 0 && hover->x < size.x && hover->y < size.y) {
     glm::ivec2 lo, hi;
     nbufferWindow(view.settings.layer, *hover, size, lo, hi);

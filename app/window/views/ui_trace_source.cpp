@@ -89,7 +89,7 @@ RayTraceInfo stepsOfRay(const Frame& frame, glm::ivec2 pixel, int ray) {
 
 }  // namespace
 
-void installFrameTraceSource() { rayTraceSource() = stepsOfRay; }
+void installFrameTraceSource(ViewState& views) { views.traceSource = stepsOfRay; }
 
 // 3. Eye-sized picks become the recorded pixel (image coordinates: row 0 at the top), and
 //    the picked pixel of every stage that declares kCapabilityPicksEyePixel (raster4d's

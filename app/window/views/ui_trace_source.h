@@ -6,8 +6,9 @@
 #pragma once
 
 class UiState;
+struct ViewState;
 
-// Installs the rayTraceSource() that converts the recorded steps (stages/monte_carlo/trace_steps.h) of one ray.
-void installFrameTraceSource();
+// Installs the views' traceSource that converts the recorded steps (stages/monte_carlo/trace_steps.h) of one ray.
+void installFrameTraceSource(ViewState& views);
 // Points the recording at the pick when the pick is an eye pixel (re-runs the pipeline).
 void recordPickedPixel(UiState& state);

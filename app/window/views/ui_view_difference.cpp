@@ -49,10 +49,23 @@ const GlTexture* ViewDifference::update(const GlTexture& a, const GlTexture& b, 
   return &result_;
 }
 
+const GlTexture& ViewLevel::update(const GlTexture& source, int level, long generation) {
+  level = std::clamp(level, 0, source.levels() - 1);
+  if (view_.id() == 0 || last_.source != source.id() || last_.level != level ||
+      last_.generation != generation) {
+    view_ = GlTexture::levelView(source, level);
+    last_ = {source.id(), level, generation};
+  }
+  return view_;
+}
+
 // 3. What a view shows.
 const GlTexture* shownTexture(const UiState& state, const ViewPanel& view, std::string* problem) {
   if (!state.session.frame || !state.session.frame->has(view.output)) return nullptr;
-  const GlTexture& a = state.session.frame->texture(view.output);
+  const GlTexture& output = state.session.frame->texture(view.output);
+  const GlTexture& a = output.levels() > 1
+                           ? view.level.update(output, view.settings.layer, state.session.pipelineRuns)
+                           : output;
   if (view.minus.empty()) return &a;
   if (!state.session.frame->has(view.minus)) {
     if (problem) *problem = "'" + view.minus + "' was not written this frame";

@@ -38,7 +38,25 @@ private:
   } last_;
 };
 
-// The texture a view shows: its output, or output - minus. Null when not written (or when
+// One mip level of a mipmapped output (the min-max mipmap) as a texture of its own, a view
+// of that level's storage (GlTexture::levelView): what the view renders, reads back, fits
+// and exports is the level, at its size. Made again when the source, the level or
+// `generation` (the pipeline's run count) changed.
+class ViewLevel {
+public:
+  const GlTexture& update(const GlTexture& source, int level, long generation);
+
+private:
+  GlTexture view_;
+  struct Key {
+    GLuint source = 0;
+    int level = -1;
+    long generation = -1;
+  } last_;
+};
+
+// The texture a view shows: its output (of a mipmapped output, mip level settings.layer),
+// or output - minus. Null when not written (or when
 // the difference is impossible: `problem` says why, if given).
 const GlTexture* shownTexture(const UiState& state, const ViewPanel& view,
                               std::string* problem = nullptr);

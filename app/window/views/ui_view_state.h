@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "window/panels/ui_trace_panel.h"
+#include "window/views/ui_categories.h"
 #include "window/views/texture_view.h"
 #include "window/views/ui_view_difference.h"
 #include "window/views/ui_view_settings.h"
@@ -35,6 +36,15 @@ struct ViewPanel {
   std::string minus;
   bool clipNegative = false;  // negative differences shown as 0 (thickness: uncovered texels)
   mutable ViewDifference difference;  // a cache of the GPU result
+  mutable ViewLevel level;  // the shown mip level of a mipmapped output (ui_view_difference.h)
+  mutable CategoryCounts categories;  // the categorical legend's counts (ui_categories.h)
+};
+
+// The picked pixel's occlusion mask drawn on the light (ui_light_gesture.cpp), read back
+// once per pipeline run: `side` x `side` values, GL order (side 0: nothing to draw).
+struct LightMaskCache {
+  std::vector<float> mask;
+  int run = -1, side = 0;
 };
 
 // How the centre area is split: one view, A | B, or A B / C D.
@@ -54,8 +64,10 @@ struct ViewState {
   int selectedRay = 0;
   std::vector<ViewOverlayShape> overlays;  // drawn by views of matching size (ray trace)
   bool showLight = true;    // the light's outline over eye-sized views (ui_light_gesture.h)
+  mutable LightMaskCache lightMask;  // what the outline draws of the picked pixel's mask
   bool traceShown = false;  // the inspector's ray trace section is open (it needs the trace)
   bool traceWindow = false;  // the ray trace panel in its own window instead of the inspector
+  RayTraceSource traceSource;  // the panel's steps of one ray; empty until installed (ui_trace_source.h)
 
   // 1. Layout: how many views are shown; opening a view copies what A shows into a view
   //    that shows nothing yet (so nothing new has to run).

@@ -145,6 +145,13 @@ bool drawSourceControls(UiState& state, ViewPanel& view, const GlTexture* textur
     ImGui::SetNextItemWidth(uiPixels(110));
     ImGui::SliderInt("level", &view.settings.layer, 0, source->layers() - 1);
     helpMarker("Array layer: for the N-buffer, level n holds min/max over 2^n x 2^n texels.");
+  } else if (source && source->levels() > 1) {
+    sameLineIfFits(170);
+    ImGui::SetNextItemWidth(uiPixels(110));
+    ImGui::SliderInt("mip", &view.settings.layer, 0, source->levels() - 1);
+    helpMarker("Mip level, shown at its own size: for the min-max mipmap, mip m is level m + 1, "
+               "min/max over aligned 2^(m+1) x 2^(m+1) texels of the light layers (level 0 is "
+               "the layers). The base is padded to a power of two; the padding reads 0.");
   }
   return false;
 }
