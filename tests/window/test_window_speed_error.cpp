@@ -48,7 +48,10 @@ TEST(SpeedErrorPanel, ResultsJsonReadsBackWhatWasWritten) {
   results[1].stageMs = {{"light", 0.5}, {"trace", 8}};
   results[1].counters = {{"trace.fetchesPerRay", 4.9}};
   results[1].pareto = true;
-  const std::string text = benchJson(info, {{"cube, 256x256", "", 0, 256, 256}}, results);
+  BenchSetupInfo setup;
+  setup.label = "cube, 256x256";
+  setup.width = setup.height = 256;
+  const std::string text = benchJson(info, {setup}, results);
   BenchRunInfo readInfo;
   std::vector<BenchSetupInfo> setups;
   std::vector<BenchResult> read;
