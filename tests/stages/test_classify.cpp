@@ -222,7 +222,11 @@ TEST(Classify, LitIsConservativeOverTheMinMaxMipmap) {
 // texels, then behind the upper plate's. This documents the caveat with numbers; the trace
 // stage, not classify, decides those pixels when the umbra rule is off.
 TEST(Classify, TwoLayerUmbraRuleMissesRaysBetweenAbuttingOccluders) {
-  PipelineRun run(stackedPlates(), {}, 128, 128);
+  // The settings the caveat is about, pinned: two layers (`auto` takes three here, the plates
+  // being separate occluders along light rays: decision 116) and the 90-degree frustum the
+  // case was built for (`auto` widens it to cover the upper plate from every light point,
+  // decision 135, which moves the plates' images off the abutting texels).
+  PipelineRun run(stackedPlates(), {"light.layers=two", "light.fov_degrees=90"}, 128, 128);
   const Findings found = checkClassification(run);
   std::printf("[ stacked plates ] umbra %d pixels, %d with rays that miss both plates in the "
               "two-layer model (%ld of %ld rays); lit %d, penumbra %d\n",
