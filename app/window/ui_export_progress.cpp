@@ -9,17 +9,15 @@
 #include "window/script/ui_script.h"
 #include "window/ui_state.h"
 
-namespace {
-
-std::optional<std::string> pendingExportAll;
-std::unique_ptr<ProgressTask> scriptTask;
-size_t scriptStepsCounted = 0;
-
-}  // namespace
-
-void requestExportAll(const std::string& directory) { pendingExportAll = directory; }
+void requestExportAll(UiState& state, const std::string& directory) {
+  state.panelMemory.exportProgress.pendingExportAll = directory;
+}
 
 void exportsBetweenFrames(UiState& state, const ScriptRunner* runner, bool unattended) {
+  ExportProgressState& progress = state.panelMemory.exportProgress;
+  std::optional<std::string>& pendingExportAll = progress.pendingExportAll;
+  std::unique_ptr<ProgressTask>& scriptTask = progress.scriptTask;
+  size_t& scriptStepsCounted = progress.scriptStepsCounted;
   if (pendingExportAll) {
     const std::string directory = *pendingExportAll;
     pendingExportAll.reset();

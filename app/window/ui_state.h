@@ -12,6 +12,7 @@
 #include "window/panels/ui_inspector.h"
 #include "window/panels/ui_temporal.h"
 #include "window/script/ui_script_io.h"
+#include "window/ui_export_progress.h"
 #include "window/ui_live_truth.h"
 #include "window/ui_log.h"
 #include "window/ui_session.h"
@@ -38,6 +39,7 @@ public:
     ParamHandValues handValues;  // a parameter's own value while auto is on (ui_widgets.h)
     InspectorMemory inspector;   // the pick table and the picked ray (ui_inspector.h)
     HashStatsPanelState hashStats;  // the hash comparison and dieharder run (ui_hash_stats.h)
+    ExportProgressState exportProgress;  // Export all and the script's progress (ui_export_progress.h)
     TemporalPanelState temporal;  // the temporal-stability tab's plot (ui_temporal.h)
   } panelMemory;
   SpeedErrorPanelState speedError;  // the "Speed vs error" panel (ui_state_speed_error.h)

@@ -89,7 +89,7 @@ void handleShortcuts(UiState& state, GLFWwindow* window, int& screenshotCount) {
       const std::string result = saveSettingsFile(state, "penumbra_settings.json");
       state.reportResult("settings", result, result.rfind("saved ", 0) == 0);
     }
-    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) requestExportAll("");  // ui_export_progress.h
+    if (ImGui::IsKeyPressed(GLFW_KEY_E, false)) requestExportAll(state, "");  // ui_export_progress.h
     return;
   }
   ViewState& views = state.views;

@@ -159,7 +159,7 @@ void drawTools(UiState& state) {
   helpMarker("Settings JSON: scene, eye size, camera, light, every parameter. "
              "Open one at start with `penumbra --config FILE`.");
   pathField("##exportdir", exportDirectory, kDefaultExportDirectory, {"Export all", "(?)"});
-  if (ImGui::Button("Export all")) requestExportAll(exportDirectory);  // between frames: its progress shows
+  if (ImGui::Button("Export all")) requestExportAll(state, exportDirectory);  // between frames: its progress shows
   helpMarker("Every stage output (EXR raw + PNG) and run.json: the same files as "
              "`penumbra export` with these settings.");
   if (ImGui::Button("Reload shaders (F5)")) state.reloadShaders();
