@@ -97,7 +97,7 @@ TEST(LessonNumbers, EveryLessonsPlaceholdersAreOfAKnownKind) {
   const std::regex placeholder(R"(\{([^{}"]*)\})");
   const std::regex known(
       R"(^(ms|ms:[a-z0-9_+]+|crop\.[A-Za-z]+|(pixels|share):[a-z0-9_]+\.[A-Za-z0-9_]+(<|>|<=|>=|==)-?[0-9.]+|)"
-      R"((min|max|p99|pick):[a-z0-9_]+\.[A-Za-z0-9_]+|temporal(_pixel)?:[a-z0-9_]+|(pct|ratio):[A-Za-z0-9_.:]+/[A-Za-z0-9_.:]+|[A-Za-z0-9_.]+)$)");
+      R"((min|max|p99|pick):[a-z0-9_]+\.[A-Za-z0-9_]+|temporal(_pixel|_spread)?:[a-z0-9_]+|(pct|ratio):[A-Za-z0-9_.:]+/[A-Za-z0-9_.:]+|[A-Za-z0-9_.]+)$)");
   int count = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(PENUMBRA_SOURCE_DIR) / "lessons")) {
     if (entry.path().extension() != ".json") continue;

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 #include <map>
@@ -243,14 +244,15 @@ void drawTemporalPanel(UiState& state) {
                                                "or the final image in a view.");
 }
 
-bool temporalNumber(const UiState& state, const std::string& method, bool worstPixel, double& value,
+bool temporalNumber(const UiState& state, const std::string& method, TemporalNumber kind, double& value,
                     std::string& problem) {
   const TemporalPanelState& panel = state.panelMemory.temporal;
+  const bool pixel = kind == TemporalNumber::WorstPixel;
   const std::deque<float>* values = nullptr;
   if (method == "truth") {
-    if (!worstPixel) values = &panel.truthChange;
+    if (!pixel) values = &panel.truthChange;
   } else if (const auto series = panel.series.find(method); series != panel.series.end()) {
-    values = worstPixel ? &series->second.worstPixel : &series->second.change;
+    values = pixel ? &series->second.worstPixel : &series->second.change;
   }
   if (!values || values->empty()) {
     problem = "no pair of runs measured for '" + method +
@@ -259,7 +261,18 @@ bool temporalNumber(const UiState& state, const std::string& method, bool worstP
   }
   double sum = 0, worst = 0;
   for (float v : *values) sum += v, worst = std::max(worst, double(v));
-  value = worstPixel ? worst : sum / double(values->size());
+  const double mean = sum / double(values->size());
+  if (kind == TemporalNumber::Mean) value = mean;
+  else if (kind == TemporalNumber::WorstPixel) value = worst;
+  else {  // the spread: standard deviation over the mean of the pairs' change
+    if (values->size() < 2 || mean <= 0) {
+      problem = "the spread of '" + method + "' needs two pairs with a change";
+      return false;
+    }
+    double squares = 0;
+    for (float v : *values) squares += (v - mean) * (v - mean);
+    value = std::sqrt(squares / double(values->size() - 1)) / mean;
+  }
   return true;
 }
 

@@ -42,10 +42,14 @@ struct TemporalPanelState {
 void stepTemporalPanel(UiState& state);
 // The tab's contents, drawn into the current window.
 void drawTemporalPanel(UiState& state);
-// For lesson texts ({temporal:METHOD}, {temporal_pixel:METHOD}; lessons/README.md): the mean
-// of the kept pairs' change of METHOD ("truth": the ground truth's own change), or the
-// largest single pixel's change over them. False, with the reason, when no pair was measured.
-bool temporalNumber(const UiState& state, const std::string& method, bool worstPixel, double& value,
+// For lesson texts (lessons/README.md): {temporal:METHOD} the mean of the kept pairs' change
+// of METHOD ("truth": the ground truth's own change); {temporal_pixel:METHOD} the largest
+// single pixel's change over them; {temporal_spread:METHOD} their standard deviation over
+// their mean (a shadow that moves evenly has a small spread; a coarse map's texels that
+// stand still and then pop have a large one: docs/temporal.md). False, with the reason,
+// when no pair was measured.
+enum class TemporalNumber { Mean, WorstPixel, Spread };
+bool temporalNumber(const UiState& state, const std::string& method, TemporalNumber kind, double& value,
                     std::string& problem);
 // Script actions {"temporal_clear": true} and {"temporal_key": bool} (the tab's Clear button
 // and its "new frame key every run" box).

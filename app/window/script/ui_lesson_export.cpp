@@ -111,17 +111,18 @@ std::string number(const UiState& state, const ScriptContext& context, const std
     const bool count = name.rfind("pixels:", 0) == 0;
     return formatted(value, count ? "%.0f" : name.rfind("share:", 0) == 0 ? "%.0f" : "%.4g");
   }
-  if (name.rfind("temporal:", 0) == 0 || name.rfind("temporal_pixel:", 0) == 0) {
-    // The temporal-stability tab's kept pairs (window/panels/ui_temporal.h).
-    const bool pixel = name[8] == '_';
-    double value = 0;
-    std::string why;
-    if (!temporalNumber(state, name.substr(pixel ? 15 : 9), pixel, value, why)) {
-      problem = "{" + name + "}: " + why;
-      return "";
+  for (const auto& [prefix, kind] : {std::pair{std::string("temporal:"), TemporalNumber::Mean},
+                                     std::pair{std::string("temporal_pixel:"), TemporalNumber::WorstPixel},
+                                     std::pair{std::string("temporal_spread:"), TemporalNumber::Spread}})
+    if (name.rfind(prefix, 0) == 0) {  // the Temporal tab's kept pairs (window/panels/ui_temporal.h)
+      double value = 0;
+      std::string why;
+      if (!temporalNumber(state, name.substr(prefix.size()), kind, value, why)) {
+        problem = "{" + name + "}: " + why;
+        return "";
+      }
+      return formatted(value, "%.3g");
     }
-    return formatted(value, "%.3g");
-  }
   if (name.rfind("ms:", 0) == 0) {
     double total = 0;
     std::stringstream stages(name.substr(3));
@@ -150,7 +151,7 @@ std::string number(const UiState& state, const ScriptContext& context, const std
                  : formatted(counter->second, "%.4g");
   }
   problem = "{" + name + "}: no such number in this run (ms, ms:stage, crop.*, pixels:, share:, min:, "
-            "max:, p99:, pick:, pct:a/b, ratio:a/b, temporal:, temporal_pixel:, triangles, a kept name, or a counter such as error.rmse)";
+            "max:, p99:, pick:, pct:a/b, ratio:a/b, temporal:, temporal_pixel:, temporal_spread:, triangles, a kept name, or a counter such as error.rmse)";
   return "";
 }
 
