@@ -1,6 +1,7 @@
 #include "shared_inputs/auto_settings.h"
 
 #include "gl/renderer_calibration.h"
+#include "shared_inputs/weighted_percentile.h"
 
 #include <embree3/rtcore.h>
 
@@ -72,22 +73,6 @@ double percentile(std::vector<double> values, double fraction) {
   const size_t k = std::min(values.size() - 1, size_t(fraction * double(values.size())));
   std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
   return values[k];
-}
-
-// The value below which `fraction` of the total weight lies.
-double weightedPercentile(const std::vector<double>& values, const std::vector<double>& weights,
-                          double fraction) {
-  std::vector<std::pair<double, double>> sorted;
-  double total = 0;
-  for (size_t i = 0; i < values.size(); ++i) {
-    sorted.emplace_back(values[i], weights[i]);
-    total += weights[i];
-  }
-  std::sort(sorted.begin(), sorted.end());
-  double below = 0;
-  for (const auto& [value, weight] : sorted)
-    if ((below += weight) >= fraction * total) return value;
-  return sorted.empty() ? 0 : sorted.back().first;
 }
 
 // Work to build a map of this size, in texel-levels: the N-buffer's log2(resolution) + 1

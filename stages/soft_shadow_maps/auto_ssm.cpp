@@ -6,26 +6,7 @@
 #include <utility>
 
 #include "soft_shadow_maps/ssm_cost.h"
-
-namespace {
-
-// The value below which `fraction` of the total weight lies.
-double weightedPercentile(const std::vector<double>& values, const std::vector<double>& weights,
-                          double fraction) {
-  std::vector<std::pair<double, double>> sorted;
-  double total = 0;
-  for (size_t i = 0; i < values.size() && i < weights.size(); ++i) {
-    sorted.emplace_back(values[i], weights[i]);
-    total += weights[i];
-  }
-  std::sort(sorted.begin(), sorted.end());
-  double below = 0;
-  for (const auto& [value, weight] : sorted)
-    if ((below += weight) >= fraction * total) return value;
-  return sorted.empty() ? 0 : sorted.back().first;
-}
-
-}  // namespace
+#include "shared_inputs/weighted_percentile.h"
 
 SsmResolutionNeed ssmResolutionNeeded(const std::vector<double>& texelsPerResolution,
                                       const std::vector<double>& areas) {
