@@ -469,7 +469,10 @@ struct FrameLoop {
     // A slider dragged since its press counts as moving too: preview until released.
     if (!ImGui::IsAnyItemActive()) draggingSlider = false;
     else if (state.currentKey() != before) draggingSlider = true;
-    state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera);
+    // A playing timeline moves the scene every frame: it previews like a drag (the full
+    // size runs again on Pause). Not under a script, whose exports are of full-size frames.
+    const bool playing = state.session.playing && state.session.animated() && !runner;
+    state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera || playing);
     ImGui::Render();
     ++framesRendered;
     ++state.session.uiFramesBuilt;
