@@ -24,27 +24,10 @@
 #include "scene/light_frame.h"
 #include "scene/scene_builtin.h"
 #include "support/command.h"
+#include "support/read_csv.h"
 #include "support/temp_directory.h"
 
 namespace {
-
-std::vector<std::vector<std::string>> readCsv(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  std::vector<std::vector<std::string>> rows;
-  for (std::string line; std::getline(file, line);) {
-    std::vector<std::string> fields;
-    std::string field;
-    bool quoted = false;
-    for (char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) { fields.push_back(field); field.clear(); }
-      else field += c;
-    }
-    fields.push_back(field);
-    rows.push_back(fields);
-  }
-  return rows;
-}
 
 glm::vec3 occluderCentre(const Scene& scene) {
   const Bounds b = scene.bounds(true);
