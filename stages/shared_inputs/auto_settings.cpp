@@ -50,8 +50,10 @@ struct SceneRays {
     rtcReleaseScene(scene);
     rtcReleaseDevice(device);
   }
-  // Nearest hit along origin + t direction, t in (tNear, inf): t (inf: none), geometry id.
-  float hit(const glm::vec3& origin, const glm::vec3& direction, float tNear, unsigned& geometry) const {
+  // Nearest hit along origin + t direction, t in (tNear, inf): t (inf: none), geometry id and,
+  // when asked, the geometric normal there.
+  float hit(const glm::vec3& origin, const glm::vec3& direction, float tNear, unsigned& geometry,
+            glm::vec3* normal = nullptr) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query{};
@@ -63,6 +65,7 @@ struct SceneRays {
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene, &context, &query);
     geometry = query.hit.geomID;
+    if (normal) *normal = glm::vec3(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
     return geometry == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
                                                : query.ray.tfar;
   }
@@ -115,21 +118,12 @@ std::vector<RaySurface> occluderSurfacesAlong(const SceneRays& rays, const glm::
   std::vector<RaySurface> surfaces;
   float tFrom = 0;
   for (int k = 0; k < 8; ++k) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit query{};
-    query.ray.org_x = origin.x; query.ray.org_y = origin.y; query.ray.org_z = origin.z;
-    query.ray.dir_x = direction.x; query.ray.dir_y = direction.y; query.ray.dir_z = direction.z;
-    query.ray.tnear = tFrom;
-    query.ray.tfar = std::numeric_limits<float>::infinity();
-    query.ray.mask = 0xffffffffu;
-    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(rays.scene, &context, &query);
-    const unsigned g = query.hit.geomID;
+    unsigned g = 0;
+    glm::vec3 normal(0);
+    const float t = rays.hit(origin, direction, tFrom, g, &normal);
     if (g == RTC_INVALID_GEOMETRY_ID || !rays.occluder[g]) break;
-    const glm::vec3 normal(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
-    surfaces.push_back({query.ray.tfar, g, glm::dot(normal, direction) > 0.0f});
-    tFrom = query.ray.tfar + 1e-4f * std::max(1.0f, query.ray.tfar);
+    surfaces.push_back({t, g, glm::dot(normal, direction) > 0.0f});
+    tFrom = t + 1e-4f * std::max(1.0f, t);
   }
   return surfaces;
 }
