@@ -123,7 +123,8 @@ public:
     const LightFrame& l = frame.light;
     // `auto` (stages/shared_inputs/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
-    chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
+    chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight,
+                                 param("normal_offset").asFloat());
     const AutoSettings& chosen = chosen_;
     frame.autoReasons = chosen.reasons;
     if (fov.automatic) frame.autoReasons.push_back(fit.reason);
