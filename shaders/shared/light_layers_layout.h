@@ -6,4 +6,3 @@
 #define RISERS_NEAR_UNIT 0
 #define RISERS_FAR_UNIT 1            // the far layer as rasterized (the far pass's depth buffer)
 #define RISERS_SLOPE_UNIT 2          // the far surface's slope (LIGHT_LAYERS_SLOPE_LOCATION)
-#define RISERS_CLOSE_LOCATION 0

@@ -9,11 +9,12 @@
 // values; the risers pass then changes only sheet texels:
 // docs/decisions/015-far-layer-as-colour.md), and the far surface's slope beside it, which the
 // risers pass reads to tell a neighbour on the same sheet from another occluder
-// (docs/decisions/115-risers-closed-along-the-sheets-plane.md).
+// (docs/decisions/115-risers-closed-along-the-sheets-plane.md) and to give a sheet texel the
+// depth range of its plane over the texel's footprint, far and near
+// (docs/decisions/145-a-sheet-texel-spans-its-footprint.md).
 #include "core/frame.h"
 #include "shared_inputs/light_input.h"
 #include "gl/gpu_layout.h"
-#include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
 #include "shared/light_layers_layout.h"
 
@@ -41,10 +42,16 @@ public:
                        "A zero-thickness sheet's far layer reaches down to its neighbours' "
                        "depths, so rays cannot slip between the steps a tilted sheet makes in "
                        "the map (off, a sheet tilted 35 degrees lets 1-4% of the rays through "
-                       "its umbra: docs/accuracy.md).",
+                       "its umbra: docs/accuracy.md); its near and far span its plane's depths "
+                       "over the texel's footprint.",
                        true),
     };
   }
+  ~LightLayersStage() override {
+    if (risersVertexArray_) glDeleteVertexArrays(1, &risersVertexArray_);
+  }
+  LightLayersStage(const LightLayersStage&) = delete;
+  LightLayersStage& operator=(const LightLayersStage&) = delete;
   std::string name() const override { return "light_layers"; }
   std::string summary() const override {
     return "Near (nearest surface) and far (farthest surface) depth layers from the light, "
@@ -76,6 +83,7 @@ public:
     if (farRasterized_.width() != size) {
       farRasterized_ = GlTexture(GL_DEPTH_COMPONENT32F, size, size);
       farSlope_ = GlTexture(GL_RG16F, size, size);
+      nearRasterized_ = GlTexture(GL_DEPTH_COMPONENT32F, size, size);
     }
     glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, farRasterized_.id(), 0);
     glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, far.id(), 0);
@@ -90,17 +98,43 @@ public:
       glDepthFunc(GL_GREATER);
     });
     glDepthFunc(GL_LESS);
-    // 3. Sheets close their risers (light_layers_risers.frag) over the texels the occluders
-    //    can cover; the other texels keep step 2's far.
+    // 3. Sheets close their risers and span their footprint (light_layers_risers.frag) over
+    //    the texels the occluders can cover: far as a colour target, near as the depth
+    //    written (the depth test passes every fragment), read from a copy of the near pass's
+    //    (a neighbour's near must be the rasterized one). The texels it discards, and those
+    //    outside the rectangle, keep steps 1 and 2's layers.
+    if (!param("close_risers").asBool()) return;
     const auto [origin, extent] = occluderRect(frame, size);
     if (extent.x <= 0 || extent.y <= 0) return;
+    // Every texel a sheet texel reads (its 4-neighbours) lies in the rectangle: it has a
+    // texel of margin around the occluders' projection.
+    glCopyImageSubData(nearLayer.id(), GL_TEXTURE_2D, 0, origin.x, origin.y, 0,
+                       nearRasterized_.id(), GL_TEXTURE_2D, 0, origin.x, origin.y, 0, extent.x,
+                       extent.y, 1);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, nearLayer.id(), 0);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, far.id(), 0);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, 0, 0);
+    glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
+    framebuffer_.checkComplete("light_layers risers");
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glViewport(origin.x, origin.y, extent.x, extent.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
     risers_.use();
-    glUniform1i(RISERS_CLOSE_LOCATION, param("close_risers").asBool() ? 1 : 0);
-    glBindTextureUnit(RISERS_NEAR_UNIT, nearLayer.id());
+    glBindTextureUnit(RISERS_NEAR_UNIT, nearRasterized_.id());
     glBindTextureUnit(RISERS_FAR_UNIT, farRasterized_.id());
     glBindTextureUnit(RISERS_SLOPE_UNIT, farSlope_.id());
     glTextureBarrier();
-    screen_.drawRect(far, origin, extent);  // framebuffer writes: no barrier needed
+    if (!risersVertexArray_) glCreateVertexArrays(1, &risersVertexArray_);
+    glBindVertexArray(risersVertexArray_);  // empty: the triangle's corners from gl_VertexID
+    glDrawArrays(GL_TRIANGLES, 0, 3);       // shaders/screen_triangle.vert
+    glBindVertexArray(0);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
 private:
@@ -150,9 +184,10 @@ private:
   GlFramebuffer framebuffer_;
   GlTexture farRasterized_;  // the far layer as rasterized, before close_risers
   GlTexture farSlope_;       // d(1/z) per texel along x and y of the far surface's plane
+  GlTexture nearRasterized_;  // the near layer as rasterized (a copy), which the risers read
   ShaderProgram risers_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
                          {GL_FRAGMENT_SHADER, "light_layers_risers.frag"}}};
-  ScreenTriangle screen_;
+  GLuint risersVertexArray_ = 0;  // empty: core profile needs one bound to draw
 };
 
 }  // namespace
