@@ -15,6 +15,7 @@
 #include "window/ui_export_progress.h"
 #include "window/ui_live_truth.h"
 #include "window/ui_log.h"
+#include "window/ui_record.h"
 #include "window/ui_session.h"
 #include "window/ui_state_speed_error.h"
 #include "window/views/ui_view_colorbar.h"
@@ -43,6 +44,7 @@ public:
     ExportProgressState exportProgress;  // Export all and the script's progress (ui_export_progress.h)
     TemporalPanelState temporal;  // the temporal-stability tab's plot (ui_temporal.h)
     DrawnColorBars colorBars;     // the views' colour bars last drawn (ui_view_colorbar.h)
+    RecordingState recording;     // the Record window and its recording (ui_record.h)
   } panelMemory;
   SpeedErrorPanelState speedError;  // the "Speed vs error" panel (ui_state_speed_error.h)
 

@@ -207,7 +207,7 @@ bool drawUi(UiState& state, const Layout& layout) {
 
   drawStatusLine(state, layout);
   if (layout.timeline > 0)
-    if (std::string problem = drawTimeline(state.session, state.uiScale, layout.left, layout.viewsHeight(),
+    if (std::string problem = drawTimeline(state, state.uiScale, layout.left, layout.viewsHeight(),
                                            layout.centerWidth(), layout.timeline);
         !problem.empty())
       state.status = problem;
@@ -336,7 +336,7 @@ struct FrameLoop {
     // 7a. Events: wait when idle, so an idle window costs no CPU.
     const bool busy = (runner && !state.lesson.waiting) || !options.screenshot.empty() ||
                       state.needsRun() || !state.script.syntheticInput.empty() ||
-                      state.session.playing || recordingActive();
+                      state.session.playing || recordingActive(state);
     if (busy) glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
     // The inspector's "measure again": between frames, outside any run (its own pipeline).
