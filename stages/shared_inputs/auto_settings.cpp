@@ -225,15 +225,16 @@ void chooseLayers(const std::vector<double>& gapsPerResolution, AutoSettings& ou
   }
 }
 
-// Runs work(begin, end, part) over [0, count) cut into at most kChunks runs in order, shared
+// Runs work(begin, end, part) over [0, count) cut into at most kChunks runs in order (each
+// part starting as `initial`), shared
 // out to the CPU's threads (Embree's queries are thread-safe), and returns the runs' parts in
 // that order: joined, the same results in the same order whatever the thread count. `rays`
 // of each part: the rays its run cast.
 inline constexpr size_t kChunks = 64, kItemsPerThreadAtLeast = 256;
 template <class Part, class Work>
-std::vector<Part> inChunks(size_t count, const Work& work) {
+std::vector<Part> inChunks(size_t count, const Work& work, const Part& initial = Part{}) {
   const size_t chunks = std::min(kChunks, std::max<size_t>(1, count));
-  std::vector<Part> parts(chunks);
+  std::vector<Part> parts(chunks, initial);
   std::atomic<size_t> next{0};
   const auto worker = [&] {
     for (size_t c = next++; c < chunks; c = next++) {
@@ -303,8 +304,9 @@ void probeTriangle(const Scene& scene, const SceneRays& rays, const LightFrame& 
       const float t1 = rays.hit(q, direction, epsilon, geometry);
       if (!std::isfinite(t1)) continue;
       const glm::vec3 receiver = q + t1 * direction;
-      // Only their most counts (at most kMostCrossings): once a probe of this set has met
-      // that many, no other can raise it, and the walk is skipped.
+      // Only their most counts (at most kMostCrossings): once a probe of this set, or of
+      // the first ones (castProbes), has met that many, no other can raise it, and the
+      // walk is skipped.
       if (out.depthComplexity < kMostCrossings) {
         int crossings = 0;
         float tFrom = 0;
@@ -352,11 +354,23 @@ ProbeSet castProbes(const Scene& scene, const SceneRays& rays, const LightFrame&
     for (size_t t = 0; t + 2 < object.mesh.indices.size(); t += 3)
       if (seen++ % stride == 0) sampled.emplace_back(&object.mesh, t);
   }
+  // The first 1/kChunks of the triangles first, on this thread: where its probes already
+  // count the most crossings, no other probe walks them (the same maximum, fewer rays).
+  const size_t first = sampled.size() / kChunks;
   ProbeSet all;
-  for (const ProbeSet& part : inChunks<ProbeSet>(sampled.size(), [&](size_t begin, size_t end, ProbeSet& out) {
-         for (size_t i = begin; i < end; ++i)
-           probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, out);
-       }))
+  const std::uint64_t raysBefore = raysOnThisThread;
+  for (size_t i = 0; i < first; ++i)
+    probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, all);
+  all.rays = raysOnThisThread - raysBefore;
+  ProbeSet initial;
+  if (all.depthComplexity == kMostCrossings) initial.depthComplexity = kMostCrossings;
+  for (const ProbeSet& part : inChunks<ProbeSet>(
+           sampled.size() - first,
+           [&](size_t begin, size_t end, ProbeSet& out) {
+             for (size_t i = first + begin; i < first + end; ++i)
+               probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, out);
+           },
+           initial))
     all.append(part);
   return all;
 }

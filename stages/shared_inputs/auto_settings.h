@@ -41,8 +41,9 @@
 //    where no ray crosses more than two surfaces; elsewhere its rays are not cast.
 // Cost per pose (an animated scene's frame: a new Embree scene of the posed triangles, the
 // rays above; docs/decisions/140-auto-per-pose.md): the probes are shared out to the CPU's
-// threads in a fixed order (the same answer whatever their number), and the depth-complexity
-// walk stops once a run of probes has counted its most (8).
+// threads in a fixed order (the same answer whatever their number), and where the first
+// 1/64 of the probes already count the most the depth-complexity walk counts (8), no other
+// probe walks.
 #pragma once
 #include <cstdint>
 #include <string>
