@@ -225,6 +225,24 @@ void chooseLayers(const std::vector<double>& gapsPerResolution, AutoSettings& ou
   }
 }
 
+// How far the normal offset's lift moves the receiver's penumbra, per texel of offset, in
+// texels (bias.glsl: normal_offset texel widths along the receiver's normal n). Its part
+// along the light's axis f, (n . f) f, lifts the point towards the light; carried along the
+// light's ray from the light's centre (direction) to the plane through the receiver normal to
+// the axis (where the penumbra's width is measured), that lift moves the point across the
+// rays by |n . f| tan(angle between the ray and the axis): nothing under the light, twice the
+// lift at the edge of a 127-degree frustum (tan 63 degrees). The penumbra moves with the
+// point (a linear ramp: about shift / width mean |error| across it). The offset's part across
+// the axis (a box's side face) is what the offset is for, and as large at any frustum: not
+// counted.
+double liftShiftPerOffset(const glm::vec3& normal, const glm::vec3& direction,
+                          const glm::vec3& forward) {
+  const float along = glm::dot(direction, forward);
+  if (along <= 1e-6f || glm::dot(normal, normal) <= 0.0f) return 0.0;
+  const float slant = glm::length(forward - direction / along);  // tan of the ray's angle
+  return double(std::fabs(glm::dot(glm::normalize(normal), forward)) * slant);
+}
+
 // Runs work(begin, end, part) over [0, count) cut into at most kChunks runs in order (each
 // part starting as `initial`), shared
 // out to the CPU's threads (Embree's queries are thread-safe), and returns the runs' parts in
@@ -260,6 +278,9 @@ void appendTo(std::vector<T>& to, const std::vector<T>& from) {
 // What the probes of some of the occluders' triangles measured (steps 1-2).
 struct ProbeSet {
   std::vector<double> widthsWorld, texelsPerResolution, widthsPixels, areasPixels;
+  // Step 4's texels per unit resolution, divided by how many more than kPenumbraTexels the
+  // normal offset's lift asks for.
+  std::vector<double> resolvingTexelsPerResolution;
   // Step 5's probes in view: the probe's point and its triangle's centroid.
   std::vector<std::pair<glm::vec3, glm::vec3>> inView;
   int depthComplexity = 0;
@@ -267,6 +288,7 @@ struct ProbeSet {
   void append(const ProbeSet& more) {
     appendTo(widthsWorld, more.widthsWorld);
     appendTo(texelsPerResolution, more.texelsPerResolution);
+    appendTo(resolvingTexelsPerResolution, more.resolvingTexelsPerResolution);
     appendTo(widthsPixels, more.widthsPixels);
     appendTo(areasPixels, more.areasPixels);
     appendTo(inView, more.inView);
@@ -279,6 +301,7 @@ struct ProbeSet {
 struct ProbeView {
   glm::mat4 viewFromWorld;
   float tanX, tanY, pixelAngle, lightSide, tanHalfFov;
+  double normalOffsetTexels;  // light.normal_offset (the lift of step 4)
 };
 
 // The most occluder surfaces counted on one light ray (step 5's depth complexity).
@@ -301,7 +324,8 @@ void probeTriangle(const Scene& scene, const SceneRays& rays, const LightFrame& 
       // surfaces the whole ray crosses from the light (depth complexity).
       const float epsilon = 1e-4f * std::max(1.0f, glm::length(q));
       unsigned geometry;
-      const float t1 = rays.hit(q, direction, epsilon, geometry);
+      glm::vec3 receiverNormal(0);
+      const float t1 = rays.hit(q, direction, epsilon, geometry, &receiverNormal);
       if (!std::isfinite(t1)) continue;
       const glm::vec3 receiver = q + t1 * direction;
       // Only their most counts (at most kMostCrossings): once a probe of this set, or of
@@ -333,6 +357,13 @@ void probeTriangle(const Scene& scene, const SceneRays& rays, const LightFrame& 
       const float receiverZ = glm::dot(receiver - light.wsProjectionPoint, light.forward);
       out.widthsWorld.push_back(width);
       out.texelsPerResolution.push_back(width / (2.0 * receiverZ * v.tanHalfFov));
+      // The lift shifts this penumbra by liftTexels texels of the map: at most
+      // kLiftShiftFraction of its width when it spans liftTexels / kLiftShiftFraction.
+      const double liftTexels =
+          v.normalOffsetTexels * liftShiftPerOffset(receiverNormal, direction, light.forward);
+      out.resolvingTexelsPerResolution.push_back(
+          out.texelsPerResolution.back() * kPenumbraTexels /
+          std::max(kPenumbraTexels, liftTexels / kLiftShiftFraction));
       const double pixelWorld = glm::length(receiver - camera.position) * v.pixelAngle;
       out.widthsPixels.push_back(width / pixelWorld);
       // The penumbra strip this probe stands for: its width times the quarter edge's
@@ -395,7 +426,8 @@ GapSet castGapProbes(const Scene& scene, const SceneRays& rays, const LightFrame
 }
 
 AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame& light,
-                     int eyeWidth, int eyeHeight, std::uint64_t& raysCast) {
+                     int eyeWidth, int eyeHeight, double normalOffsetTexels,
+                     std::uint64_t& raysCast) {
   AutoSettings out;
   const Camera& camera = scene.camera;
   ProbeView view;
@@ -405,6 +437,8 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   view.pixelAngle = 2.0f * view.tanY / float(std::max(eyeHeight, 1));
   view.lightSide = std::min(scene.light.width, scene.light.height);
   view.tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
+  view.normalOffsetTexels = normalOffsetTexels;
+  const float tanHalfFov = view.tanHalfFov;
   size_t triangles = 0;
   for (const SceneObject& object : scene.objects)
     if (!object.receiverOnly) triangles += object.mesh.triangleCount();
@@ -416,6 +450,7 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   out.depthComplexity = probes.depthComplexity;
   const std::vector<double>& widthsWorld = probes.widthsWorld;
   const std::vector<double>& texelsPerResolution = probes.texelsPerResolution;
+  const std::vector<double>& resolvingTexelsPerResolution = probes.resolvingTexelsPerResolution;
   const std::vector<double>& widthsPixels = probes.widthsPixels;
   const std::vector<double>& areasPixels = probes.areasPixels;
   // Step 5's free gaps decide only where the depth complexity does not (at most two
@@ -442,12 +477,19 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   const auto resolutionFor = [](double texelsPerUnitResolution) {  // kPenumbraTexels across
     return kPenumbraTexels / std::max(texelsPerUnitResolution, 1e-9);
   };
-  const auto roundUp = [](double resolution) {
-    return int(std::clamp(std::ceil(resolution / 128.0) * 128.0, 256.0, 2048.0));
+  // The smallest map: 256 at a 90-degree frustum, and as many more texels as a wider frustum
+  // (light.fov_degrees=auto, auto_frustum.h) spreads over its larger cross-section, so that a
+  // texel is no wider in the world than at 256 and 90 degrees (docs/decisions/150).
+  const int floorResolution = int(std::min(
+      2048.0, std::ceil(kMinResolution * std::max(1.0, double(tanHalfFov)) / 128.0) * 128.0));
+  const auto roundUp = [floorResolution](double resolution) {
+    return int(std::clamp(std::ceil(resolution / 128.0) * 128.0, double(floorResolution), 2048.0));
   };
-  const double needed = resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.02));
+  const double needed = resolutionFor(weightedPercentile(resolvingTexelsPerResolution, areasPixels, 0.02));
   out.neededResolution = roundUp(needed);
-  out.halfAreaResolution = roundUp(resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.5)));
+  out.halfAreaResolution = roundUp(resolutionFor(weightedPercentile(resolvingTexelsPerResolution, areasPixels, 0.5)));
+  // What the penumbrae alone would need (without the lift), for the reason.
+  const int penumbraResolution = roundUp(resolutionFor(weightedPercentile(texelsPerResolution, areasPixels, 0.02)));
   // The crossover measured on this renderer (gl/renderer_calibration.h; kTexelLevelsPerPixelRay
   // where it is not calibrated).
   const double traceWork = activeRendererCalibration().texelLevelsPerPixelRay * double(eyeWidth) * double(eyeHeight) *
@@ -465,11 +507,26 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
         "map %.0f: 98%% of the penumbra area in view spans at least 6 texels; the narrowest "
         "penumbra is %.3g world units wide, %.2g texels",
         out.resolution, out.smallestPenumbraWorld, out.smallestPenumbraTexels));
+    if (out.resolution > penumbraResolution)
+      out.reasons.back() += format(
+          "; not %.0f, so that the normal offset's lift (%.2g texel) moves it by at most %.0f%% of "
+          "its width where the light's rays reach the receivers at a slant",
+          penumbraResolution, normalOffsetTexels, 100.0 * kLiftShiftFraction);
+    else if (out.resolution == floorResolution && floorResolution > kMinResolution)
+      out.reasons.back() += format(
+          "; at least %.0f: the light's frustum is %.0f degrees wide, and its texels as wide in "
+          "the world as %.0f's at 90 degrees",
+          floorResolution, 2.0 * std::atan(double(tanHalfFov)) * 180.0 / M_PI, kMinResolution);
   } else {
     out.reasons.push_back(format(
         "map %.0f, not the %.0f that would give 98%% of the penumbra area 6 texels: a larger "
         "map's build would cost more than the trace",
         out.resolution, out.neededResolution) +
+        (out.neededResolution > penumbraResolution
+             ? format(" (%.0f for the penumbrae alone; the rest so that the normal offset's lift "
+                      "moves them by at most %.0f%% of their width)",
+                      penumbraResolution, 100.0 * kLiftShiftFraction)
+             : std::string()) +
         format(" (%.0fx%.0f rays per pixel)", out.raysPerSide, out.raysPerSide) +
         format(", and the penumbrae holding half that area need only %.0f", out.halfAreaResolution));
   }
@@ -501,7 +558,7 @@ AutoSettingsWork autoSettingsWork() {
 }
 
 AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
-                                int eyeHeight) {
+                                int eyeHeight, double normalOffsetTexels) {
   // One cached answer and one Embree scene, for the last scene seen (the window and the
   // tests run one scene at a time).
   struct Cache {
@@ -542,9 +599,10 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
                             c.target.z, c.up.x, c.up.y, c.up.z, c.fovYDegrees, l.center.x,
                             l.center.y, l.center.z, l.forward.x, l.forward.y, l.forward.z,
                             l.width, l.height, light.tanHalfFovX, float(eyeWidth), float(eyeHeight),
-                            float(activeRendererCalibration().texelLevelsPerPixelRay)};
+                            float(activeRendererCalibration().texelLevelsPerPixelRay),
+                            float(normalOffsetTexels)};
   if (key != cache.key) {
-    cache.settings = analyze(scene, *cache.rays, light, eyeWidth, eyeHeight, work.rays);
+    cache.settings = analyze(scene, *cache.rays, light, eyeWidth, eyeHeight, normalOffsetTexels, work.rays);
     cache.key = key;
     ++work.analyses;
   }

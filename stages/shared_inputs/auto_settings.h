@@ -26,8 +26,15 @@
 //    halfArea: the map on which the penumbrae holding half the area span 6 texels. The map
 //    is min(needed, max(affordable, halfArea)): beyond the trace's cost only when the narrow
 //    penumbrae are most of the shadow in view (a contact shadow), never beyond the need.
-//    Multiples of 128 in [256, 2048]; where 2048 is not enough the reason says so (the limit
-//    of depth maps, thesis §4.1, Atty 2006 §4.2).
+//    Multiples of 128 in [256 x max(1, tan(fov/2)), 2048]: a frustum widened past 90 degrees
+//    (light.fov_degrees=auto) keeps its texels as narrow in the world as 256's at 90, since
+//    every texel-sized offset (the normal offset, Eq 3.2's bias, the outline rounded to
+//    texels) grows with the texel; where 2048 is not enough the reason says so (the limit
+//    of depth maps, thesis §4.1, Atty 2006 §4.2). A probe's penumbra must also span
+//    liftTexels / kLiftShiftFraction texels: the normal offset's part along the light's axis
+//    (a lift towards the light), carried along a ray that reaches the receiver at angle a
+//    from the axis, moves the receiver, and its penumbra, by the lift x tan a across the rays
+//    (docs/decisions/150-auto-map-texels-at-a-wide-frustum.md).
 // Rasterizing the occluders rounds their outlines to texels, which shifts a penumbra by up
 // to half a texel: with 6 texels per penumbra that is a bias of up to 8% across it.
 // 5. Layers: the depth complexity along the probes' light rays (occluder surfaces crossed
@@ -75,6 +82,13 @@ struct AutoSettings {
 };
 
 inline constexpr double kPenumbraTexels = 6.0;
+// The smallest map `auto` takes at a 90-degree frustum; a wider one (light.fov_degrees=auto)
+// scales it by tan(fov / 2), so that its texels are no wider in the world (step 4).
+inline constexpr double kMinResolution = 256.0;
+// The normal offset's lift (light.normal_offset texel widths, its part along the light's
+// axis) moves a penumbra across the ground where the light's rays reach it at a slant; the
+// map is fine enough that it moves at most this fraction of the penumbra's width (step 4).
+inline constexpr double kLiftShiftFraction = 0.05;
 inline constexpr double kEffectiveSamples = 24.0;
 inline constexpr int kMaxProbes = 20000;
 // One ray for one eye pixel costs about this many texel-levels of map build. On llvmpipe,
@@ -89,7 +103,7 @@ inline constexpr double kTexelLevelsPerPixelRay = kFallbackTexelLevelsPerPixelRa
 // return the stored answer; the
 // Embree scene is rebuilt only when the scene's geometry changes.
 AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
-                                int eyeHeight);
+                                int eyeHeight, double normalOffsetTexels = 1.0);
 
 // What chooseAutoSettings has done since the program started (every scene, every thread):
 // for tests and measurements of its cost per pose.

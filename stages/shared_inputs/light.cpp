@@ -44,7 +44,9 @@ public:
             "depth-map method's maps. auto (the default): so that 98% of the penumbra area in "
             "view spans 6 texels, but no larger than the map whose build costs what the trace "
             "does unless the narrow penumbrae hold half the shadow (a contact shadow), in "
-            "[256, 2048] (stages/shared_inputs/auto_settings.h; the choice and its reasons: the auto.* "
+            "[256, 2048], at least 256 x tan(fov/2) at a frustum wider than 90 degrees, and so "
+            "that the normal offset's lift moves a penumbra by at most 5% of its width "
+            "(stages/shared_inputs/auto_settings.h; the choice and its reasons: the auto.* "
             "counters and the inspector). The limit of every "
             "depth-map method (thesis §4.1, Atty 2006 §4.2): a penumbra narrower than a few "
             "texels is lost. A plate 0.06 above the ground under a 1x1 light 3 units up casts "
@@ -124,7 +126,8 @@ public:
     // `auto` (stages/shared_inputs/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
     const AutoSettingsWork workBefore = autoSettingsWork();
-    chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
+    chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight,
+                                 param("normal_offset").asFloat());
     const AutoSettingsWork workAfter = autoSettingsWork();
     const AutoSettings& chosen = chosen_;
     frame.autoReasons = chosen.reasons;

@@ -158,8 +158,9 @@ TEST(AutoFrustum, StraddlingCasterIsShadowedOnBothSidesOfTheOldEdge) {
         const AnalyticError in = compareWithAnalytic(values, inside);
         const AnalyticError out = compareWithAnalytic(values, outside);
         const AnalyticError all = compareWithAnalytic(values, exact);
-        std::printf(" %s %.4f (in %.4f %zu px, out %.4f %zu px)", output, all.meanAbsInShadow,
-                    in.meanAbsInShadow, in.pixelsInShadow, out.meanAbsInShadow, out.pixelsInShadow);
+        std::printf(" %s %.4f (in %.4f %+.4f %zu px, out %.4f %+.4f %zu px)", output, all.meanAbsInShadow,
+                    in.meanAbsInShadow, in.meanSigned, in.pixelsInShadow, out.meanAbsInShadow,
+                    out.meanSigned, out.pixelsInShadow);
         EXPECT_EQ(all.outOfRange, 0u) << output;
         EXPECT_GT(out.pixelsInShadow, 300u) << "the camera should see the shadow outside the old edge";
         if (output == std::string("filter.visibility")) {
@@ -175,13 +176,86 @@ TEST(AutoFrustum, StraddlingCasterIsShadowedOnBothSidesOfTheOldEdge) {
       } else {
         // No seam at the old edge: outside it the filtered result is as good as inside (what
         // is left is the method's error on this penumbra, not the frustum's), and a fifth of
-        // what it was at 90 degrees (measured: a tenth on the box, 0.10 on the plate, whose wide
-        // penumbra at auto's 2x2 rays is noisy on both sides).
+        // what it was at 90 degrees (measured: 0.032 of it on the box, 0.044 on the plate).
         EXPECT_GT(run.frame->counters["auto.fov_degrees"], 100.0);
         EXPECT_LE(filteredOutside, filteredInside + 0.02) << scene.name;
         EXPECT_LE(filteredOutside, 0.2 * outsideAt90) << scene.name;
         EXPECT_LE(filteredInside, 0.05) << scene.name;
       }
     }
+  }
+}
+
+namespace {
+
+// A plate (a quad facing the light) straddling a side of the 90-degree frustum, under a light
+// 3 above a receiver-only ground; the camera looks down at its shadow's centre.
+struct Straddle {
+  const char* name;
+  float lightWidth, lightHeight, plateSize;
+  glm::vec3 plateCentre;
+};
+
+Scene straddleScene(const Straddle& s) {
+  Scene scene;
+  scene.name = s.name;
+  scene.light = {{0, 3, 0}, {0, -1, 0}, {0, 0, -1}, s.lightWidth, s.lightHeight};
+  scene.objects.push_back(quadAt("ground", 40, {0, 0, 0}, true));
+  scene.objects.push_back(quadAt("plate", s.plateSize, s.plateCentre, false));
+  const glm::vec3 light = scene.light.center;
+  const glm::vec3 shadow = light + (s.plateCentre - light) * (3.0f / (3.0f - s.plateCentre.y));
+  const float reach = 2.0f + 3.0f * glm::length(glm::vec2(shadow.x, shadow.z)) / 3.0f;
+  scene.camera = {shadow + glm::vec3(0, 1.1f * reach, 0.9f * reach), shadow, {0, 1, 0}, 45};
+  return scene;
+}
+
+}  // namespace
+
+// The straddling plate's penumbra beyond the old side: with the frustum widened, texel-sized
+// offsets (the normal offset, thesis Eq 3.2's bias, the occluder's outline rounded to texels)
+// grow with the texel, and the normal offset's shadow shift with the slant at which the rays
+// reach the ground (tan 63 degrees = 2 at a 127-degree frustum's edge). Auto keeps the texels
+// as small as at 90 degrees (docs/decisions/150), so the defaults meet the target on both
+// sides of the old edge: filtered <= 0.03 mean |error| in shadow, and never worse than
+// unfiltered by more than 0.005. Several placements: both axes, both signs, several depths and
+// sizes, a square and a rectangular light.
+TEST(AutoFrustum, StraddlingPlatesMeetTheTargetWithTheDefaults) {
+  const Straddle cases[] = {
+      {"plate_x_depth_1.5", 1, 1, 1.0f, {2.0f, 1.5f, 0}},
+      {"plate_minus_z_depth_1.2", 1, 1, 1.0f, {0.3f, 1.8f, -1.7f}},
+      {"plate_x_depth_2.0", 1, 1, 0.8f, {2.5f, 1.0f, 0.4f}},
+      {"plate_minus_x_depth_0.8", 1, 1, 0.6f, {-1.3f, 2.2f, 0.5f}},
+      {"rect_light_z_depth_1.5", 1.6f, 0.8f, 0.8f, {0, 1.5f, 1.15f}},
+  };
+  for (const Straddle& c : cases) {
+    const Scene scene = straddleScene(c);
+    std::vector<std::string> sets;  // measurements: PENUMBRA_FRUSTUM_SETS (not in CI)
+    if (const char* extra = std::getenv("PENUMBRA_FRUSTUM_SETS")) {
+      std::istringstream words(extra);
+      for (std::string word; words >> word;) sets.push_back(word);
+    }
+    PipelineRun run(scene, sets, 256, 192);
+    const LightFrame at90 = computeLightFrame(scene.light, scene.bounds(), 90.0f);
+    const std::vector<double> exact = analyticImage(run);
+    const std::vector<float> positions = run.read("gbuffer.wsPosition");
+    std::vector<double> outside(exact.size(), -1.0);
+    for (size_t i = 0; i < exact.size(); ++i)
+      if (!insideFrustum(at90, {positions[4 * i], positions[4 * i + 1], positions[4 * i + 2]}, 0))
+        outside[i] = exact[i];
+    const auto filtered = run.read("filter.visibility"), traced = run.read("trace.visibility");
+    const AnalyticError all = compareWithAnalytic(filtered, exact);
+    const AnalyticError out = compareWithAnalytic(filtered, outside);
+    const AnalyticError unfiltered = compareWithAnalytic(traced, exact);
+    std::printf("%-24s fov %.1f map %.0f rays %.0f: filter %.4f (signed %+.4f; outside the 90-degree "
+                "side %.4f %+.4f, %zu px of %zu), trace %.4f\n",
+                c.name, run.frame->counters["auto.fov_degrees"], run.frame->counters["auto.resolution"],
+                run.frame->counters["auto.rays_per_side"], all.meanAbsInShadow, all.meanSigned,
+                out.meanAbsInShadow, out.meanSigned, out.pixelsInShadow, all.pixelsInShadow,
+                unfiltered.meanAbsInShadow);
+    EXPECT_GT(run.frame->counters["auto.fov_degrees"], 95.0) << c.name << ": the plate should straddle";
+    EXPECT_GT(out.pixelsInShadow, 300u) << c.name << ": the camera should see the shadow beyond the side";
+    EXPECT_LE(all.meanAbsInShadow, 0.03) << c.name;
+    EXPECT_LE(out.meanAbsInShadow, 0.03) << c.name;
+    EXPECT_LE(all.meanAbsInShadow, unfiltered.meanAbsInShadow + 0.005) << c.name;
   }
 }
