@@ -214,7 +214,7 @@ LayoutFrame measureLayout(const ImDrawData& data) {
 
 #include "window/views/ui_view_colorbar.h"
 
-void printLayout(const std::string& label) {
+void printLayout(const UiState& state, const std::string& label) {
   const ImGuiContext& context = *ImGui::GetCurrentContext();
   for (const ImGuiWindow* window : context.Windows) {
     if (!window->WasActive || window->Hidden) continue;  // not drawn in the last frame
@@ -240,6 +240,6 @@ void printLayout(const std::string& label) {
                   image.rect.x1 - image.rect.x0, image.rect.y1 - image.rect.y0, image.clip.x0,
                   image.clip.y0, image.clip.x1, image.clip.y1);
   }
-  printColorBars(label);
+  printColorBars(state, label);
   std::fflush(stdout);
 }

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+class UiState;
+
 struct ImDrawData;
 
 struct LayoutRect {
@@ -72,4 +74,4 @@ LayoutFrame measureLayout(const ImDrawData& data);
 // vertically (0.5 px tolerance: ImGui's pixel snapping), SX SY: 1 when its window scrolls horizontally, vertically; E: 1
 // when ImGui cut it short with its own ellipsis (three dots drawn closer than the font's
 // advance; a "..." inside the text, as comboPreview() writes it, is the text's own).
-void printLayout(const std::string& label);
+void printLayout(const UiState& state, const std::string& label);

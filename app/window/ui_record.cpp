@@ -19,22 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Recording {
-  bool windowOpen = false;
-  bool initialised = false;  // the range follows the first animated scene shown
-  float start = 0, end = 4, fps = 24;
-  bool sideBySide = true, videos = true;
-  std::string directory;
-  // Under way:
-  std::unique_ptr<VideoExport> exporter;
-  int next = 0;           // the frame being recorded
-  bool posed = false;     // the scene is posed at frame `next`'s time
-  bool cancel = false;
-  double savedTime = 0;
-  bool savedPlaying = false;
-  std::string target, result;
-} recording;
-
 std::string sanitized(std::string text) {
   for (char& c : text)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_') c = '-';
@@ -61,6 +45,7 @@ std::string poseAtTime(UiState& state, double t) {
 }
 
 void stopRecording(UiState& state, const std::string& message, bool ok) {
+  RecordingState& recording = state.panelMemory.recording;
   recording.exporter.reset();  // not committed: the temporary directory goes
   recording.posed = false;
   recording.cancel = false;
@@ -71,6 +56,7 @@ void stopRecording(UiState& state, const std::string& message, bool ok) {
 }
 
 std::string startRecording(UiState& state) {
+  RecordingState& recording = state.panelMemory.recording;
   Session& session = state.session;
   if (!session.animated()) return "record: the scene is not animated (nothing moves over time)";
   VideoRequest request;
@@ -102,6 +88,7 @@ std::string startRecording(UiState& state) {
 // The videos and run.json, after the last frame: ffmpeg runs with the run overlay's
 // Cancel (this is outside the UI frame, so the poll hook draws it).
 void finishRecording(UiState& state) {
+  RecordingState& recording = state.panelMemory.recording;
   clearRunCancel();
   markRunStart();
   setRunProgress("encoding the recording's videos (ffmpeg)");
@@ -126,10 +113,11 @@ void finishRecording(UiState& state) {
 
 }  // namespace
 
-bool recordingActive() { return recording.exporter != nullptr; }
+bool recordingActive(const UiState& state) { return state.panelMemory.recording.exporter != nullptr; }
 
-void drawRecordButton() {
-  if (ImGui::Button(recordingActive() ? "Recording" : "Record")) recording.windowOpen = true;
+void drawRecordButton(UiState& state) {
+  if (ImGui::Button(recordingActive(state) ? "Recording" : "Record"))
+    state.panelMemory.recording.windowOpen = true;
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Record the views over a time range: numbered EXR + PNG per frame,\n"
                       "an MP4 and a GIF per view (ffmpeg), like penumbra export --time-range.");
@@ -138,6 +126,7 @@ void drawRecordButton() {
 namespace {
 
 void beginRecordedFrame(UiState& state) {
+  RecordingState& recording = state.panelMemory.recording;
   if (!recording.exporter) return;
   if (recording.cancel) {
     stopRecording(state, "recording cancelled after " + std::to_string(recording.exporter->framesWritten()) +
@@ -154,6 +143,7 @@ void beginRecordedFrame(UiState& state) {
 }
 
 void endRecordedFrame(UiState& state) {
+  RecordingState& recording = state.panelMemory.recording;
   if (!recording.exporter || !recording.posed) return;
   const Session& session = state.session;
   if (!session.runError.empty()) {
@@ -181,6 +171,7 @@ void endRecordedFrame(UiState& state) {
 }  // namespace
 
 bool runRecordingFrame(UiState& state, glm::ivec2 viewRegion) {
+  RecordingState& recording = state.panelMemory.recording;
   beginRecordedFrame(state);
   const bool ran = state.runIfNeeded(viewRegion);
   endRecordedFrame(state);
@@ -188,6 +179,7 @@ bool runRecordingFrame(UiState& state, glm::ivec2 viewRegion) {
 }
 
 void drawRecordWindow(UiState& state) {
+  RecordingState& recording = state.panelMemory.recording;
   if (!recording.windowOpen) return;
   const Session& session = state.session;
   if (!recording.initialised && session.animated()) {
@@ -199,7 +191,7 @@ void drawRecordWindow(UiState& state) {
     ImGui::End();
     return;
   }
-  const bool busy = recordingActive();
+  const bool busy = recordingActive(state);
   ImGui::BeginDisabled(busy);
   ImGui::SetNextItemWidth(uiPixels(160));
   float range[2] = {recording.start, recording.end};

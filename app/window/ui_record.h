@@ -10,14 +10,35 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <memory>
+#include <string>
+
 class UiState;
+class VideoExport;
+
+// The Record window's settings and the recording under way (UiState::panelMemory).
+struct RecordingState {
+  bool windowOpen = false;
+  bool initialised = false;  // the range follows the first animated scene shown
+  float start = 0, end = 4, fps = 24;
+  bool sideBySide = true, videos = true;
+  std::string directory;
+  // Under way (the one owner: reset, it removes its temporary directory):
+  std::shared_ptr<VideoExport> exporter;
+  int next = 0;           // the frame being recorded
+  bool posed = false;     // the scene is posed at frame `next`'s time
+  bool cancel = false;
+  double savedTime = 0;
+  bool savedPlaying = false;
+  std::string target, result;
+};
 
 // The timeline's button that opens the Record window (app/window/ui_timeline.cpp).
-void drawRecordButton();
+void drawRecordButton(UiState& state);
 // The Record window, when open (drawUi, app/window/window_app.cpp).
 void drawRecordWindow(UiState& state);
 // Whether a recording is under way (the main loop then polls instead of waiting).
-bool recordingActive();
+bool recordingActive(const UiState& state);
 // The frame loop's run (outside the UI frame; UiState::runIfNeeded), and around it while
 // recording: before, the scene posed at the next frame's time; after, that frame written
 // once the views hold it at full resolution. Returns whether it ran.

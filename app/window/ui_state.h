@@ -15,8 +15,10 @@
 #include "window/ui_export_progress.h"
 #include "window/ui_live_truth.h"
 #include "window/ui_log.h"
+#include "window/ui_record.h"
 #include "window/ui_session.h"
 #include "window/ui_state_speed_error.h"
+#include "window/views/ui_view_colorbar.h"
 #include "window/views/ui_view_state.h"
 
 struct Param;
@@ -41,6 +43,8 @@ public:
     HashStatsPanelState hashStats;  // the hash comparison and dieharder run (ui_hash_stats.h)
     ExportProgressState exportProgress;  // Export all and the script's progress (ui_export_progress.h)
     TemporalPanelState temporal;  // the temporal-stability tab's plot (ui_temporal.h)
+    DrawnColorBars colorBars;     // the views' colour bars last drawn (ui_view_colorbar.h)
+    RecordingState recording;     // the Record window and its recording (ui_record.h)
   } panelMemory;
   SpeedErrorPanelState speedError;  // the "Speed vs error" panel (ui_state_speed_error.h)
 

@@ -7,6 +7,7 @@
 
 #include "window/ui_record.h"
 #include "window/ui_session.h"
+#include "window/ui_state.h"
 
 std::string advanceTimeline(Session& session, TimelineClock& clock, double now) {
   const double elapsed = clock.last < 0 ? 0 : now - clock.last;
@@ -28,7 +29,8 @@ float timelineHeight(const Session& session) {
          ImGui::GetTextLineHeightWithSpacing();
 }
 
-std::string drawTimeline(Session& session, float uiScale, float x, float y, float width, float height) {
+std::string drawTimeline(UiState& state, float uiScale, float x, float y, float width, float height) {
+  Session& session = state.session;
   if (!session.animated()) return "";
   Animation& animation = session.rest.animation;
   ImGui::SetNextWindowPos({x, y}, ImGuiCond_Always);
@@ -62,7 +64,7 @@ std::string drawTimeline(Session& session, float uiScale, float x, float y, floa
       next = animation.cycleTime(session.time);  // the same pose, in the new mode's terms
     }
     ImGui::SameLine();
-    drawRecordButton();  // the views over a time range, as frames and videos (ui_record.h)
+    drawRecordButton(state);  // the views over a time range, as frames and videos (ui_record.h)
     if (next != session.time) problem = session.setTime(next);
     ImGui::Text("t = %.3f s  (%.3f of %.2f s, %s)", session.time, animation.cycleTime(session.time),
                 animation.duration, repeatName(animation.repeat));

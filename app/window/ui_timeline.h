@@ -7,6 +7,7 @@
 #include <string>
 
 struct Session;
+class UiState;
 
 // The wall clock of the last advance (seconds, steady clock; < 0: none yet).
 struct TimelineClock {
@@ -25,4 +26,4 @@ float timelineHeight(const Session& session);
 
 // Draws the timeline strip at (x, y), width x height (nothing for a static scene).
 // Returns "" or a refused pose.
-std::string drawTimeline(Session& session, float uiScale, float x, float y, float width, float height);
+std::string drawTimeline(UiState& state, float uiScale, float x, float y, float width, float height);

@@ -207,7 +207,7 @@ bool drawUi(UiState& state, const Layout& layout) {
 
   drawStatusLine(state, layout);
   if (layout.timeline > 0)
-    if (std::string problem = drawTimeline(state.session, state.uiScale, layout.left, layout.viewsHeight(),
+    if (std::string problem = drawTimeline(state, state.uiScale, layout.left, layout.viewsHeight(),
                                            layout.centerWidth(), layout.timeline);
         !problem.empty())
       state.status = problem;
@@ -317,10 +317,6 @@ int prepareState(UiState& state, const WindowOptions& options, Scene scene,
   return 0;
 }
 
-// The window was exposed (uncovered, restored): its contents must be drawn again.
-bool exposed = false;
-void onRefresh(GLFWwindow*) { exposed = true; }
-
 // 7. One frame: events, script, run, UI, screenshots. Returns false when the window is done
 //    (a script ended or failed, --screenshot written); `result` then holds the exit status.
 struct FrameLoop {
@@ -340,7 +336,7 @@ struct FrameLoop {
     // 7a. Events: wait when idle, so an idle window costs no CPU.
     const bool busy = (runner && !state.lesson.waiting) || !options.screenshot.empty() ||
                       state.needsRun() || !state.script.syntheticInput.empty() ||
-                      state.session.playing || recordingActive();
+                      state.session.playing || recordingActive(state);
     if (busy) glfwPollEvents();
     else glfwWaitEventsTimeout(0.1);
     // The inspector's "measure again": between frames, outside any run (its own pipeline).
@@ -410,8 +406,9 @@ struct FrameLoop {
     // (An interactive lesson waits for the student: its screenshot shows where it waits.)
     const bool finalShot = (!runner || options.interactiveLesson) && !options.screenshot.empty() &&
                            framesRendered >= options.frames;
-    if (exposed || takeRunOverlayDrawn(window)) change.forceNext();  // the overlay covered it
-    exposed = false;
+    // Exposed (uncovered, restored: RunCancelKeys's refresh callback), or the overlay covered it.
+    const bool exposed = takeWindowExposed(window);
+    if (exposed || takeRunOverlayDrawn(window)) change.forceNext();
     const bool draw = change.changed(*ImGui::GetDrawData(), state.shownContent);
     if (!draw && !finalShot && state.script.screenshotRequest.empty()) return true;
     present(width, height);
@@ -506,7 +503,6 @@ int runWindow(const WindowOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
-  glfwSetWindowRefreshCallback(window, onRefresh);
   ImGui_ImplOpenGL3_Init("#version 450 core");
   auto cancelKeys = std::make_unique<RunCancelKeys>(window);  // Esc cancels a run in progress
 

@@ -6,6 +6,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -14,17 +15,29 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <thread>
 
 namespace {
 
+// Rays this thread handed to Embree (SceneRays::hit runs on the probe threads).
+thread_local std::uint64_t raysOnThisThread = 0;
+
+// One Embree device for the program's analyses (its threads and allocators outlive each
+// scene built on it).
+RTCDevice embreeDevice() {
+  static RTCDevice device = rtcNewDevice(nullptr);
+  return device;
+}
+
 // Every triangle of the scene (receivers too: the penumbra falls on them), with which
-// geometry ids are occluders.
+// geometry ids are occluders. One level, built from the posed triangles as they are: a new
+// pose is a new build (docs/decisions/140-auto-per-pose.md: a two-level scene refitted per
+// pose, or instances of each mesh at rest, would answer some rays differently).
 struct SceneRays {
-  RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<bool> occluder;  // by geometry id
   explicit SceneRays(const Scene& source) {
-    device = rtcNewDevice(nullptr);
+    RTCDevice device = embreeDevice();
     scene = rtcNewScene(device);
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
     for (const SceneObject& object : source.objects) {
@@ -46,10 +59,9 @@ struct SceneRays {
     }
     rtcCommitScene(scene);
   }
-  ~SceneRays() {
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(device);
-  }
+  SceneRays(const SceneRays&) = delete;
+  SceneRays& operator=(const SceneRays&) = delete;
+  ~SceneRays() { rtcReleaseScene(scene); }
   // Nearest hit along origin + t direction, t in (tNear, inf): t (inf: none), geometry id and,
   // when asked, the geometric normal there.
   float hit(const glm::vec3& origin, const glm::vec3& direction, float tNear, unsigned& geometry,
@@ -64,6 +76,7 @@ struct SceneRays {
     query.ray.mask = 0xffffffffu;
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene, &context, &query);
+    ++raysOnThisThread;
     geometry = query.hit.geomID;
     if (normal) *normal = glm::vec3(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
     return geometry == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
@@ -230,93 +243,223 @@ double liftShiftPerOffset(const glm::vec3& normal, const glm::vec3& direction,
   return double(std::fabs(glm::dot(glm::normalize(normal), forward)) * slant);
 }
 
+// Runs work(begin, end, part) over [0, count) cut into at most kChunks runs in order (each
+// part starting as `initial`), shared
+// out to the CPU's threads (Embree's queries are thread-safe), and returns the runs' parts in
+// that order: joined, the same results in the same order whatever the thread count. `rays`
+// of each part: the rays its run cast.
+inline constexpr size_t kChunks = 64, kItemsPerThreadAtLeast = 256;
+template <class Part, class Work>
+std::vector<Part> inChunks(size_t count, const Work& work, const Part& initial = Part{}) {
+  const size_t chunks = std::min(kChunks, std::max<size_t>(1, count));
+  std::vector<Part> parts(chunks, initial);
+  std::atomic<size_t> next{0};
+  const auto worker = [&] {
+    for (size_t c = next++; c < chunks; c = next++) {
+      const std::uint64_t before = raysOnThisThread;
+      work(c * count / chunks, (c + 1) * count / chunks, parts[c]);
+      parts[c].rays = raysOnThisThread - before;
+    }
+  };
+  const size_t threads = std::clamp<size_t>(count / kItemsPerThreadAtLeast, 1,
+                                      std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (size_t i = 1; i < std::min(threads, chunks); ++i) pool.emplace_back(worker);
+  worker();
+  for (std::thread& thread : pool) thread.join();
+  return parts;
+}
+
+template <class T>
+void appendTo(std::vector<T>& to, const std::vector<T>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+// What the probes of some of the occluders' triangles measured (steps 1-2).
+struct ProbeSet {
+  std::vector<double> widthsWorld, texelsPerResolution, widthsPixels, areasPixels;
+  // Step 4's texels per unit resolution, divided by how many more than kPenumbraTexels the
+  // normal offset's lift asks for.
+  std::vector<double> resolvingTexelsPerResolution;
+  // Step 5's probes in view: the probe's point and its triangle's centroid.
+  std::vector<std::pair<glm::vec3, glm::vec3>> inView;
+  int depthComplexity = 0;
+  std::uint64_t rays = 0;
+  void append(const ProbeSet& more) {
+    appendTo(widthsWorld, more.widthsWorld);
+    appendTo(texelsPerResolution, more.texelsPerResolution);
+    appendTo(resolvingTexelsPerResolution, more.resolvingTexelsPerResolution);
+    appendTo(widthsPixels, more.widthsPixels);
+    appendTo(areasPixels, more.areasPixels);
+    appendTo(inView, more.inView);
+    depthComplexity = std::max(depthComplexity, more.depthComplexity);
+    rays += more.rays;
+  }
+};
+
+// The view and light quantities every probe uses.
+struct ProbeView {
+  glm::mat4 viewFromWorld;
+  float tanX, tanY, pixelAngle, lightSide, tanHalfFov;
+  double normalOffsetTexels;  // light.normal_offset (the lift of step 4)
+};
+
+// The most occluder surfaces counted on one light ray (step 5's depth complexity).
+inline constexpr int kMostCrossings = 8;
+
+// Steps 1-2 for the 12 probes of one triangle (t = 0, 1/4, 1/2, 3/4 of each edge).
+void probeTriangle(const Scene& scene, const SceneRays& rays, const LightFrame& light,
+                   const ProbeView& v, const Mesh& mesh, size_t t, ProbeSet& out) {
+  const Camera& camera = scene.camera;
+  for (int e = 0; e < 3; ++e)
+    for (float along : {0.0f, 0.25f, 0.5f, 0.75f}) {
+      const glm::vec3 a = mesh.positions[mesh.indices[t + e]];
+      const glm::vec3 b = mesh.positions[mesh.indices[t + (e + 1) % 3]];
+      const glm::vec3 q = a + along * (b - a);
+      const glm::vec3 fromLight = q - scene.light.center;
+      const float occluderDepth = glm::dot(fromLight, light.forward);
+      if (occluderDepth <= 0) continue;  // not in front of the light
+      const glm::vec3 direction = glm::normalize(fromLight);
+      // The next surface past the occluder along the light's ray, and the occluder
+      // surfaces the whole ray crosses from the light (depth complexity).
+      const float epsilon = 1e-4f * std::max(1.0f, glm::length(q));
+      unsigned geometry;
+      glm::vec3 receiverNormal(0);
+      const float t1 = rays.hit(q, direction, epsilon, geometry, &receiverNormal);
+      if (!std::isfinite(t1)) continue;
+      const glm::vec3 receiver = q + t1 * direction;
+      // Only their most counts (at most kMostCrossings): once a probe of this set, or of
+      // the first ones (castProbes), has met that many, no other can raise it, and the
+      // walk is skipped.
+      if (out.depthComplexity < kMostCrossings) {
+        int crossings = 0;
+        float tFrom = 0;
+        for (int k = 0; k < kMostCrossings; ++k) {
+          unsigned g;
+          const float tk = rays.hit(scene.light.center, direction, tFrom, g);
+          if (!std::isfinite(tk) || !rays.occluder[g]) break;
+          ++crossings;
+          tFrom = tk + 1e-4f * std::max(1.0f, tk);
+        }
+        out.depthComplexity = std::max(out.depthComplexity, crossings);
+      }
+      // 2. Only what the camera sees.
+      const glm::vec3 view = glm::vec3(v.viewFromWorld * glm::vec4(receiver, 1));
+      const float eyeDepth = -view.z;
+      if (eyeDepth <= 0 || std::fabs(view.x) > v.tanX * eyeDepth ||
+          std::fabs(view.y) > v.tanY * eyeDepth)
+        continue;
+      const glm::vec3 centroid = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
+                                  mesh.positions[mesh.indices[t + 2]]) / 3.0f;
+      out.inView.emplace_back(q, centroid);
+      const float gap = glm::dot(receiver - q, light.forward);
+      const double width = double(v.lightSide) * gap / occluderDepth;
+      const float receiverZ = glm::dot(receiver - light.wsProjectionPoint, light.forward);
+      out.widthsWorld.push_back(width);
+      out.texelsPerResolution.push_back(width / (2.0 * receiverZ * v.tanHalfFov));
+      // The lift shifts this penumbra by liftTexels texels of the map: at most
+      // kLiftShiftFraction of its width when it spans liftTexels / kLiftShiftFraction.
+      const double liftTexels =
+          v.normalOffsetTexels * liftShiftPerOffset(receiverNormal, direction, light.forward);
+      out.resolvingTexelsPerResolution.push_back(
+          out.texelsPerResolution.back() * kPenumbraTexels /
+          std::max(kPenumbraTexels, liftTexels / kLiftShiftFraction));
+      const double pixelWorld = glm::length(receiver - camera.position) * v.pixelAngle;
+      out.widthsPixels.push_back(width / pixelWorld);
+      // The penumbra strip this probe stands for: its width times the quarter edge's
+      // shadow (scaled by receiver / occluder distance from the light), in pixels.
+      const float receiverFromLight = glm::dot(receiver - scene.light.center, light.forward);
+      const double stripPixels =
+          0.25 * glm::length(b - a) * receiverFromLight / occluderDepth / pixelWorld;
+      out.areasPixels.push_back(out.widthsPixels.back() * stripPixels);
+    }
+}
+
+// Steps 1-2 over every stride-th occluder triangle, in scene order.
+ProbeSet castProbes(const Scene& scene, const SceneRays& rays, const LightFrame& light,
+                    const ProbeView& view, size_t stride) {
+  std::vector<std::pair<const Mesh*, size_t>> sampled;  // (mesh, first index of the triangle)
+  size_t seen = 0;
+  for (const SceneObject& object : scene.objects) {
+    if (object.receiverOnly) continue;
+    for (size_t t = 0; t + 2 < object.mesh.indices.size(); t += 3)
+      if (seen++ % stride == 0) sampled.emplace_back(&object.mesh, t);
+  }
+  // The first 1/kChunks of the triangles first, on this thread: where its probes already
+  // count the most crossings, no other probe walks them (the same maximum, fewer rays).
+  const size_t first = sampled.size() / kChunks;
+  ProbeSet all;
+  const std::uint64_t raysBefore = raysOnThisThread;
+  for (size_t i = 0; i < first; ++i)
+    probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, all);
+  all.rays = raysOnThisThread - raysBefore;
+  ProbeSet initial;
+  if (all.depthComplexity == kMostCrossings) initial.depthComplexity = kMostCrossings;
+  for (const ProbeSet& part : inChunks<ProbeSet>(
+           sampled.size() - first,
+           [&](size_t begin, size_t end, ProbeSet& out) {
+             for (size_t i = first + begin; i < first + end; ++i)
+               probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, out);
+           },
+           initial))
+    all.append(part);
+  return all;
+}
+
+// Step 5's free gap on each in-view probe's light ray, in their order.
+struct GapSet {
+  std::vector<double> gapsPerResolution;
+  std::uint64_t rays = 0;
+};
+GapSet castGapProbes(const Scene& scene, const SceneRays& rays, const LightFrame& light,
+                     const std::vector<std::pair<glm::vec3, glm::vec3>>& inView) {
+  GapSet all;
+  for (const GapSet& part : inChunks<GapSet>(inView.size(), [&](size_t begin, size_t end, GapSet& out) {
+         for (size_t i = begin; i < end; ++i)
+           out.gapsPerResolution.push_back(
+               freeGapTexelsPerResolution(rays, scene.light, light, inView[i].first, inView[i].second));
+       })) {
+    appendTo(all.gapsPerResolution, part.gapsPerResolution);
+    all.rays += part.rays;
+  }
+  return all;
+}
+
 AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame& light,
-                     int eyeWidth, int eyeHeight, double normalOffsetTexels) {
+                     int eyeWidth, int eyeHeight, double normalOffsetTexels,
+                     std::uint64_t& raysCast) {
   AutoSettings out;
   const Camera& camera = scene.camera;
-  const glm::mat4 viewFromWorld = glm::lookAt(camera.position, camera.target, camera.up);
-  const float tanY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
-  const float tanX = tanY * float(eyeWidth) / float(std::max(eyeHeight, 1));
-  const float pixelAngle = 2.0f * tanY / float(std::max(eyeHeight, 1));
-  const float lightSide = std::min(scene.light.width, scene.light.height);
-  const float tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
+  ProbeView view;
+  view.viewFromWorld = glm::lookAt(camera.position, camera.target, camera.up);
+  view.tanY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
+  view.tanX = view.tanY * float(eyeWidth) / float(std::max(eyeHeight, 1));
+  view.pixelAngle = 2.0f * view.tanY / float(std::max(eyeHeight, 1));
+  view.lightSide = std::min(scene.light.width, scene.light.height);
+  view.tanHalfFov = std::max(light.tanHalfFovX, light.tanHalfFovY);
+  view.normalOffsetTexels = normalOffsetTexels;
+  const float tanHalfFov = view.tanHalfFov;
   size_t triangles = 0;
   for (const SceneObject& object : scene.objects)
     if (!object.receiverOnly) triangles += object.mesh.triangleCount();
   const size_t stride = std::max<size_t>(1, 3 * triangles / kMaxProbes);
 
-  // 1-2. Probes along the occluders' edges (t = 0, 1/4, 1/2, 3/4 of each edge).
-  std::vector<double> widthsWorld, texelsPerResolution, widthsPixels, areasPixels;
-  // Step 4's texels per unit resolution, divided by how many more than kPenumbraTexels the
-  // normal offset's lift asks for.
-  std::vector<double> resolvingTexelsPerResolution;
-  std::vector<double> gapsPerResolution;  // step 5: the free gap on each probe's light ray
-  size_t seen = 0;
-  for (unsigned id = 0; id < scene.objects.size(); ++id) {
-    const SceneObject& object = scene.objects[id];
-    if (object.receiverOnly) continue;
-    const Mesh& mesh = object.mesh;
-    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-      if (seen++ % stride != 0) continue;
-      for (int e = 0; e < 3; ++e)
-        for (float along : {0.0f, 0.25f, 0.5f, 0.75f}) {
-          const glm::vec3 a = mesh.positions[mesh.indices[t + e]];
-          const glm::vec3 b = mesh.positions[mesh.indices[t + (e + 1) % 3]];
-          const glm::vec3 q = a + along * (b - a);
-          const glm::vec3 fromLight = q - scene.light.center;
-          const float occluderDepth = glm::dot(fromLight, light.forward);
-          if (occluderDepth <= 0) continue;  // not in front of the light
-          const glm::vec3 direction = glm::normalize(fromLight);
-          // The next surface past the occluder along the light's ray, and the occluder
-          // surfaces the whole ray crosses from the light (depth complexity).
-          const float epsilon = 1e-4f * std::max(1.0f, glm::length(q));
-          unsigned geometry;
-          glm::vec3 receiverNormal(0);
-          const float t1 = rays.hit(q, direction, epsilon, geometry, &receiverNormal);
-          if (!std::isfinite(t1)) continue;
-          const glm::vec3 receiver = q + t1 * direction;
-          int crossings = 0;
-          float tFrom = 0;
-          for (int k = 0; k < 8; ++k) {
-            unsigned g;
-            const float tk = rays.hit(scene.light.center, direction, tFrom, g);
-            if (!std::isfinite(tk) || !rays.occluder[g]) break;
-            ++crossings;
-            tFrom = tk + 1e-4f * std::max(1.0f, tk);
-          }
-          out.depthComplexity = std::max(out.depthComplexity, crossings);
-          // 2. Only what the camera sees.
-          const glm::vec3 view = glm::vec3(viewFromWorld * glm::vec4(receiver, 1));
-          const float eyeDepth = -view.z;
-          if (eyeDepth <= 0 || std::fabs(view.x) > tanX * eyeDepth ||
-              std::fabs(view.y) > tanY * eyeDepth)
-            continue;
-          const glm::vec3 centroid = (mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
-                                      mesh.positions[mesh.indices[t + 2]]) / 3.0f;
-          gapsPerResolution.push_back(freeGapTexelsPerResolution(rays, scene.light, light, q, centroid));
-          const float gap = glm::dot(receiver - q, light.forward);
-          const double width = double(lightSide) * gap / occluderDepth;
-          const float receiverZ = glm::dot(receiver - light.wsProjectionPoint, light.forward);
-          widthsWorld.push_back(width);
-          texelsPerResolution.push_back(width / (2.0 * receiverZ * tanHalfFov));
-          // The lift shifts this penumbra by liftTexels texels of the map: at most
-          // kLiftShiftFraction of its width when it spans liftTexels / kLiftShiftFraction.
-          const double liftTexels =
-              normalOffsetTexels * liftShiftPerOffset(receiverNormal, direction, light.forward);
-          resolvingTexelsPerResolution.push_back(
-              texelsPerResolution.back() * kPenumbraTexels /
-              std::max(kPenumbraTexels, liftTexels / kLiftShiftFraction));
-          const double pixelWorld = glm::length(receiver - camera.position) * pixelAngle;
-          widthsPixels.push_back(width / pixelWorld);
-          // The penumbra strip this probe stands for: its width times the quarter edge's
-          // shadow (scaled by receiver / occluder distance from the light), in pixels.
-          const float receiverFromLight = glm::dot(receiver - scene.light.center, light.forward);
-          const double stripPixels =
-              0.25 * glm::length(b - a) * receiverFromLight / occluderDepth / pixelWorld;
-          areasPixels.push_back(widthsPixels.back() * stripPixels);
-        }
-    }
-  }
+  // 1-2. Probes along the occluders' edges.
+  ProbeSet probes = castProbes(scene, rays, light, view, stride);
+  raysCast += probes.rays;
+  out.depthComplexity = probes.depthComplexity;
+  const std::vector<double>& widthsWorld = probes.widthsWorld;
+  const std::vector<double>& texelsPerResolution = probes.texelsPerResolution;
+  const std::vector<double>& resolvingTexelsPerResolution = probes.resolvingTexelsPerResolution;
+  const std::vector<double>& widthsPixels = probes.widthsPixels;
+  const std::vector<double>& areasPixels = probes.areasPixels;
+  // Step 5's free gaps decide only where the depth complexity does not (at most two
+  // surfaces on every light ray); with more, three layers whatever they are, and their rays
+  // are not cast.
+  GapSet gaps;
+  if (out.depthComplexity <= 2) gaps = castGapProbes(scene, rays, light, probes.inView);
+  raysCast += gaps.rays;
+  const std::vector<double>& gapsPerResolution = gaps.gapsPerResolution;
   out.probes = int(widthsWorld.size());
   if (widthsWorld.empty()) {
     out.reasons.push_back("no occluder's shadow falls in view: fixed defaults (512, two layers, 2x2)");
@@ -404,6 +547,16 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
 
 }  // namespace
 
+namespace {
+std::mutex workMutex;           // the cache below and the counts
+AutoSettingsWork workSoFar;
+}  // namespace
+
+AutoSettingsWork autoSettingsWork() {
+  const std::lock_guard<std::mutex> lock(workMutex);
+  return workSoFar;
+}
+
 AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
                                 int eyeHeight, double normalOffsetTexels) {
   // One cached answer and one Embree scene, for the last scene seen (the window and the
@@ -414,9 +567,9 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
     std::vector<float> key;
     AutoSettings settings;
   };
-  static std::mutex mutex;
   static Cache cache;
-  const std::lock_guard<std::mutex> lock(mutex);
+  const std::lock_guard<std::mutex> lock(workMutex);
+  AutoSettingsWork& work = workSoFar;
   // FNV-1a over every position, index and flag, a 32-bit word at a time (this runs on every
   // light run: a quarter of the steps of a byte-wise hash on the dragon's 1.6 MB).
   std::uint64_t geometry = 1469598103934665603ull;
@@ -434,9 +587,11 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
     mix(&receiverOnly, 1);
   }
   if (!cache.rays || cache.geometry != geometry) {
+    cache.rays.reset();  // the old scene's memory back before the new one's
     cache.rays = std::make_unique<SceneRays>(scene);
     cache.geometry = geometry;
     cache.key.clear();
+    ++work.bvhBuilds;
   }
   const Camera& c = scene.camera;
   const AreaLight& l = scene.light;
@@ -447,8 +602,9 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
                             float(activeRendererCalibration().texelLevelsPerPixelRay),
                             float(normalOffsetTexels)};
   if (key != cache.key) {
-    cache.settings = analyze(scene, *cache.rays, light, eyeWidth, eyeHeight, normalOffsetTexels);
+    cache.settings = analyze(scene, *cache.rays, light, eyeWidth, eyeHeight, normalOffsetTexels, work.rays);
     cache.key = key;
+    ++work.analyses;
   }
   return cache.settings;
 }

@@ -44,8 +44,15 @@
 //    surfaces can be two occluders too (two plates one above the other): the surfaces on
 //    each in-view probe's ray are paired into solids by their facing, and where at least 5%
 //    of those rays have free space of 2 texels or more between two occluders, three layers
-//    (docs/decisions/116-auto-layers-from-separate-occluders.md).
+//    (docs/decisions/116-auto-layers-from-separate-occluders.md). That pairing decides only
+//    where no ray crosses more than two surfaces; elsewhere its rays are not cast.
+// Cost per pose (an animated scene's frame: a new Embree scene of the posed triangles, the
+// rays above; docs/decisions/140-auto-per-pose.md): the probes are shared out to the CPU's
+// threads in a fixed order (the same answer whatever their number), and where the first
+// 1/64 of the probes already count the most the depth-complexity walk counts (8), no other
+// probe walks.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -68,7 +75,8 @@ struct AutoSettings {
   double smallestPenumbraPixels = 0;    // and in eye pixels
   int depthComplexity = 0;              // most occluder surfaces on one probe's light ray
   int separateOccluderProbes = 0;       // in-view probes whose light ray has free space
-                                        // between two occluders (step 5)
+                                        // between two occluders (step 5; 0 where the
+                                        // depth complexity is above 2: not traced)
   std::vector<std::string> reasons;     // one sentence per choice
   SsmResolutionNeed ssmNeed;            // ssm.resolution=auto's need (auto_ssm.h; the ssm stage caps it)
 };
@@ -96,6 +104,15 @@ inline constexpr double kTexelLevelsPerPixelRay = kFallbackTexelLevelsPerPixelRa
 // Embree scene is rebuilt only when the scene's geometry changes.
 AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int eyeWidth,
                                 int eyeHeight, double normalOffsetTexels = 1.0);
+
+// What chooseAutoSettings has done since the program started (every scene, every thread):
+// for tests and measurements of its cost per pose.
+struct AutoSettingsWork {
+  std::uint64_t analyses = 0;   // analyses run (a new scene, light, camera or eye size)
+  std::uint64_t bvhBuilds = 0;  // Embree scenes built (a new scene, or a new pose)
+  std::uint64_t rays = 0;       // rays the analyses cast
+};
+AutoSettingsWork autoSettingsWork();
 
 // What the `light` stage of `frame`'s pipeline chose in its last run (the defaults before it
 // ran, or where the pipeline has no light stage); stages/shared_inputs/light.cpp.

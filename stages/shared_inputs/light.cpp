@@ -125,8 +125,10 @@ public:
     const LightFrame& l = frame.light;
     // `auto` (stages/shared_inputs/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
+    const AutoSettingsWork workBefore = autoSettingsWork();
     chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight,
                                  param("normal_offset").asFloat());
+    const AutoSettingsWork workAfter = autoSettingsWork();
     const AutoSettings& chosen = chosen_;
     frame.autoReasons = chosen.reasons;
     if (fov.automatic) frame.autoReasons.push_back(fit.reason);
@@ -157,6 +159,10 @@ public:
     frame.counters["auto.penumbra_texels"] = chosen.smallestPenumbraTexels;
     frame.counters["auto.penumbra_pixels"] = chosen.smallestPenumbraPixels;
     frame.counters["auto.depth_complexity"] = chosen.depthComplexity;
+    // What this run's choice cost: the rays its analysis cast (0: the stored answer) and
+    // whether it built the Embree scene (a new scene or pose; docs/decisions/140).
+    frame.counters["auto.analysis_rays"] = double(workAfter.rays - workBefore.rays);
+    frame.counters["auto.bvh_builds"] = double(workAfter.bvhBuilds - workBefore.bvhBuilds);
     const unsigned size = unsigned(frame.light.mapSize);
 
     // 2. The uniform block (layout: shaders/shared/light_block.h, checked in gpu_layout.h).

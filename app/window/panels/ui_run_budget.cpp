@@ -200,12 +200,17 @@ void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods
     keys->onKey(window, key, scancode, action, mods);
 }
 
+void refreshCallback(GLFWwindow* window) {
+  if (auto* keys = static_cast<RunCancelKeys*>(glfwGetWindowUserPointer(window))) keys->onRefresh();
+}
+
 }  // namespace
 
 RunCancelKeys::RunCancelKeys(GLFWwindow* window)
     : window_(window), overlay_(std::make_unique<Overlay>()) {
   glfwSetWindowUserPointer(window, this);
   previousKeyCallback_ = glfwSetKeyCallback(window, keyCallback);
+  glfwSetWindowRefreshCallback(window, refreshCallback);
   setRunCancelPoll([this] {
     escapePressed_ = false;
     glfwPollEvents();
@@ -221,6 +226,7 @@ RunCancelKeys::~RunCancelKeys() {
   setRunCancelPoll(nullptr);
   releaseCapture(*overlay_);
   glfwSetKeyCallback(window_, previousKeyCallback_);
+  glfwSetWindowRefreshCallback(window_, nullptr);
   glfwSetWindowUserPointer(window_, nullptr);
 }
 
@@ -233,6 +239,17 @@ bool RunCancelKeys::takeOverlayDrawn() {
   const bool drawn = overlay_->drawnSinceTaken;
   overlay_->drawnSinceTaken = false;
   return drawn;
+}
+
+bool RunCancelKeys::takeExposed() {
+  const bool exposed = exposed_;
+  exposed_ = false;
+  return exposed;
+}
+
+bool takeWindowExposed(GLFWwindow* window) {
+  auto* keys = static_cast<RunCancelKeys*>(glfwGetWindowUserPointer(window));
+  return keys && keys->takeExposed();
 }
 
 bool takeRunOverlayDrawn(GLFWwindow* window) {

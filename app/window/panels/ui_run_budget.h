@@ -15,7 +15,8 @@ void drawRunBudgetModal(UiState& state);
 // For its lifetime, the poll that lets Esc (or closing the window) cancel a run in progress
 // and draws the "running" overlay: the key callback chained before ImGui's (installed after
 // ImGui's GLFW backend, gone before it shuts down), what it saw, and the overlay's captured
-// frame. One per window; the key callback finds it through the window's user pointer.
+// frame. One per window; the key and refresh callbacks find it through the window's user
+// pointer.
 struct GLFWwindow;
 class RunCancelKeys {
 public:
@@ -26,6 +27,10 @@ public:
 
   // Whether the overlay covered the screen since the last call: the next frame must be drawn.
   bool takeOverlayDrawn();
+  // Whether the window was exposed (uncovered, restored) since the last call: its contents
+  // must be drawn again. Set by the refresh callback.
+  bool takeExposed();
+  void onRefresh() { exposed_ = true; }
   // The key callback's: notes Esc, then passes the key on to the callback it replaced.
   void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
 
@@ -35,7 +40,10 @@ private:
   GLFWwindow* window_;
   void (*previousKeyCallback_)(GLFWwindow*, int, int, int, int) = nullptr;
   bool escapePressed_ = false;
+  bool exposed_ = false;
   std::unique_ptr<Overlay> overlay_;
 };
 // takeOverlayDrawn() of the window's RunCancelKeys (false without one).
 bool takeRunOverlayDrawn(GLFWwindow* window);
+// takeExposed() of the window's RunCancelKeys (false without one).
+bool takeWindowExposed(GLFWwindow* window);

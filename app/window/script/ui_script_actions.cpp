@@ -444,8 +444,8 @@ std::vector<ScriptActionSpec> makeTable() {
          return std::string();
        }},
       {"print_layout", kString,
-       [=](S&, const json& a, C&) {
-         printLayout(label(a));
+       [=](S& s, const json& a, C&) {
+         printLayout(s, label(a));
          return std::string();
        }},
       {"ui_scale", number(0, 1e3, true),

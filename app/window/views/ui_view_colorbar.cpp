@@ -13,16 +13,6 @@
 
 namespace {
 
-struct DrawnBar {
-  int view = 0;
-  ImVec2 min, size;
-  float low = 0, high = 1;
-  bool automatic = false;
-  std::string label;
-};
-std::vector<DrawnBar> drawnBars;  // this frame's bars (ImGui frame count below)
-int drawnFrame = -1;
-
 std::string number(float value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", double(value));
@@ -51,11 +41,12 @@ void updateAutoRange(const UiState& state, ViewPanel& view, const GlTexture& tex
   view.renderer.autoRange(texture, view.settings, state.session.pipelineRuns);
 }
 
-void drawViewColorBar(const UiState& state, const ViewPanel& view, const GlTexture& texture,
+void drawViewColorBar(UiState& state, const ViewPanel& view, const GlTexture& texture,
                       glm::vec2 origin, glm::vec2 regionSize) {
-  if (drawnFrame != ImGui::GetFrameCount()) {
-    drawnBars.clear();
-    drawnFrame = ImGui::GetFrameCount();
+  DrawnColorBars& drawn = state.panelMemory.colorBars;
+  if (drawn.frame != ImGui::GetFrameCount()) {
+    drawn.bars.clear();
+    drawn.frame = ImGui::GetFrameCount();
   }
   const std::string label = colorBarLabel(state, view, texture);
   if (label.empty()) return;
@@ -93,12 +84,14 @@ void drawViewColorBar(const UiState& state, const ViewPanel& view, const GlTextu
     draw->AddText({middleX, ticks}, text, middle.c_str());
   draw->AddText({x0, ticks + line + pad}, text, label.c_str());  // clipped to the region if long
   draw->PopClipRect();
-  drawnBars.push_back({viewIndex(state, view), box, {width, height}, s.black, s.white, s.autoRange, label});
+  drawn.bars.push_back({viewIndex(state, view), {box.x, box.y}, {width, height}, s.black, s.white,
+                        s.autoRange, label});
 }
 
-void printColorBars(const std::string& label) {
-  if (drawnFrame != ImGui::GetFrameCount() && drawnFrame != ImGui::GetFrameCount() - 1) return;
-  for (const DrawnBar& bar : drawnBars)
+void printColorBars(const UiState& state, const std::string& label) {
+  const DrawnColorBars& drawn = state.panelMemory.colorBars;
+  if (drawn.frame != ImGui::GetFrameCount() && drawn.frame != ImGui::GetFrameCount() - 1) return;
+  for (const DrawnColorBar& bar : drawn.bars)
     std::printf("layout %s: colorbar %c at %.0f %.0f size %.0f %.0f range %.6g %.6g auto %d label %s\n",
                 label.c_str(), "ABCD"[bar.view], bar.min.x, bar.min.y, bar.size.x, bar.size.y,
                 double(bar.low), double(bar.high), bar.automatic ? 1 : 0, bar.label.c_str());
