@@ -3,7 +3,7 @@
 // tends to the center as the light shrinks (Eq 3.1), so this is the point-light limit.
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
-#include "shared/hard_shadow_layout.h"
+#include "stages/baselines/hard_shadow/hard_shadow_layout.h"
 layout(binding = HARD_SHADOW_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;
 layout(binding = HARD_SHADOW_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = HARD_SHADOW_WS_NORMAL_UNIT) uniform sampler2D wsNormalImage;

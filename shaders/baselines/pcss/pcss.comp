@@ -15,7 +15,7 @@
 #include "shared/screen_pass.glsl"
 #include "shared/bias.glsl"
 #include "shared/hash.glsl"
-#include "shared/pcss_layout.h"
+#include "stages/baselines/pcss/pcss_layout.h"
 #include "shared/ssm_layout.h"
 layout(std140, binding = PCSS_PARAMS_BINDING) uniform PcssBlock { PcssParams pcss; };
 // The near layer's depth bounds (depth_bounds.comp, run just before on the same layer).

@@ -1,10 +1,10 @@
 // Stage `error`, per pixel (Atty et al. 2006 §4.2.1): the method's visibility minus the
-// ground truth's where the pixel counts (shared/error.glsl), written as the signed and the
+// ground truth's where the pixel counts (error.glsl), written as the signed and the
 // absolute error images, and this 8 x 8 group's sums for the statistics: pixels, pixels in
 // shadow (truth < 1), the sum of the signed error, of |error| in shadow, of error^2 (for the
 // RMSE) and the largest |error|. The sums are reduced in shared memory, the group's record
 // written once (no per-pixel atomics); error_reduce.comp then adds the records.
-#include "shared/error.glsl"
+#include "error.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = ERROR_SIGNED_IMAGE, r32f) uniform writeonly image2D signedImage;
 layout(binding = ERROR_ABSOLUTE_IMAGE, r32f) uniform writeonly image2D absoluteImage;

@@ -1,7 +1,7 @@
-// Shared by the error passes (layouts: shared/error_layout.h): which pixels count and their
+// Shared by the error passes (layouts: stages/ground_truth/error/error_layout.h): which pixels count and their
 // error, computed identically by every pass that reads it.
-#include "error_layout.h"
-#include "classes.h"
+#include "stages/ground_truth/error/error_layout.h"
+#include "shared/classes.h"
 layout(binding = ERROR_METHOD_UNIT) uniform sampler2D methodTexture;
 layout(binding = ERROR_TRUTH_UNIT) uniform sampler2D truthTexture;
 layout(binding = ERROR_MASK_UNIT) uniform sampler2D maskTexture;

@@ -4,7 +4,7 @@
 // current bits, the counted pixels whose higher bits equal those already found
 // (ErrorTotals.select.x); error_reduce.comp then picks the bin holding the rank. The
 // group's histogram is built in shared memory, then added to the global one.
-#include "shared/error.glsl"
+#include "error.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(location = ERROR_RADIX_PASS_LOCATION) uniform int uPass;
 layout(std430, binding = ERROR_TOTALS_BINDING) readonly buffer Totals { ErrorTotals totals; };

@@ -6,7 +6,7 @@
 //   rank: an inclusive prefix sum of the bins (Hillis-Steele), the one bin whose range
 //   [sum below, sum through) contains the rank appends its bits to the value found so far
 //   and leaves the rank within it. After ERROR_RADIX_PASSES passes, the value's bits.
-#include "shared/error_layout.h"
+#include "stages/ground_truth/error/error_layout.h"
 layout(local_size_x = ERROR_REDUCE_GROUP) in;
 layout(location = ERROR_REDUCE_MODE_LOCATION) uniform int uMode;
 layout(std430, binding = ERROR_GROUP_SUMS_BINDING) readonly buffer GroupSums { ErrorSums groupSums[]; };

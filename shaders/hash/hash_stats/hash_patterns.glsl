@@ -1,8 +1,8 @@
 // Input patterns of the hash statistics (Jarzynski & Olano 2020 test every hash on
 // several): input number i -> (seed, key) for hashRand. C++ twin in
 // tests/support/hash_stats_oracle.cpp.
-#include "hash_stats_layout.h"
-#include "hash.glsl"
+#include "shared/hash_stats_layout.h"
+#include "shared/hash.glsl"
 
 // The even bits of v packed together (Morton decode of one axis).
 uint compactEvenBits(uint v) {

@@ -1,7 +1,7 @@
 // hash_stats pass 4: the avalanche matrix. Invocation (input bit i, block of 64 inputs):
 // for each input of the pattern whose seed.x has bit i clear, set it and count, per bit j of
 // word x, how often the output bit flips; an ideal hash flips each with probability 1/2.
-#include "shared/hash_patterns.glsl"
+#include "hash_patterns.glsl"
 layout(local_size_x = HASH_STATS_GROUP_SIZE) in;
 layout(std430, binding = HASH_STATS_AVALANCHE_BINDING) buffer Flips { uint flips[]; };
 layout(location = HASH_STATS_LOC_COUNT) uniform uint uCount;  // inputs

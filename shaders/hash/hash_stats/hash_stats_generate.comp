@@ -2,7 +2,7 @@
 // hash of input i, the x word of its right-hand pixel (seed.x + 1) and of the next frame key.
 // With HASH_STATS_THROUGHPUT defined it computes only the hash, folds the four words into
 // one and writes that (for the hashes-per-second column).
-#include "shared/hash_patterns.glsl"
+#include "hash_patterns.glsl"
 layout(local_size_x = HASH_STATS_GROUP_SIZE) in;
 layout(std430, binding = HASH_STATS_SAMPLES_BINDING) writeonly buffer Samples { uvec4 samples[]; };
 layout(location = HASH_STATS_LOC_COUNT) uniform uint uCount;  // samples in this chunk

@@ -17,9 +17,9 @@
 #include "shared/bias.glsl"
 #include "shared/nbuffer.glsl"
 #include "shared/minmax.glsl"
-#include "shared/classify.glsl"
+#include "classify.glsl"
 #include "shared/classes.h"
-#include "shared/classify_layout.h"
+#include "stages/monte_carlo/classify/classify_layout.h"
 layout(binding = CLASSIFY_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = CLASSIFY_WS_NORMAL_UNIT) uniform sampler2D wsNormalTexture;
 layout(binding = CLASSIFY_LEVELS_UNIT) uniform sampler2DArray nbufferLevels;
@@ -34,7 +34,7 @@ layout(location = CLASSIFY_MINMAX_CELLS_LOCATION) uniform int uMinMaxCells;
 // The stage compiles one program per hierarchy, CLASSIFY_OVER_MINMAX 0 (N-buffer, §3.5) or
 // 1 (min-max mipmap), so each reads as the one hierarchy it walks.
 #if !defined(CLASSIFY_OVER_MINMAX)
-#error "classify.frag is compiled with CLASSIFY_OVER_MINMAX 0 or 1 (stages/monte_carlo/classify.cpp)"
+#error "classify.frag is compiled with CLASSIFY_OVER_MINMAX 0 or 1 (stages/monte_carlo/classify/classify.cpp)"
 #endif
 
 bool wholeLightInFront(vec3 wsPosition, vec3 wsNormal) {

@@ -6,7 +6,7 @@
 // of slots in the list for its penumbra pixels and then its umbra pixels.
 #include "shared/screen_pass.glsl"
 #include "shared/classes.h"
-#include "shared/classify_layout.h"
+#include "stages/monte_carlo/classify/classify_layout.h"
 layout(binding = CLASSIFY_MASK_UNIT) uniform sampler2D classMask;
 layout(std430, binding = CLASSIFY_COUNTS_BINDING) buffer ClassifyCountsBlock {
   ClassifyCounts counts;

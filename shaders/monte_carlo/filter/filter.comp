@@ -32,8 +32,8 @@
 // into shared memory, each tap once, with the tap's eye distance and penumbra width worked
 // out there; then each invocation adds its own pixel's taps k = -r .. r from shared memory.
 #include "shared/frame.glsl"
-#include "shared/filter_layout.h"
-#include "shared/filter_tiles.glsl"
+#include "stages/monte_carlo/filter/filter_layout.h"
+#include "filter_tiles.glsl"
 layout(local_size_x = FILTER_TILE_SIZE, local_size_y = FILTER_TILE_SIZE) in;
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceImage;
 layout(binding = FILTER_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;

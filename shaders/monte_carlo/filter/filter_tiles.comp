@@ -9,7 +9,7 @@
 // One 8 x 8 workgroup per tile (screen_pass.glsl): its invocations read the grown tile
 // together, each every 8th pixel per axis, and gather what they saw in shared memory.
 #include "shared/screen_pass.glsl"
-#include "shared/filter_layout.h"
+#include "stages/monte_carlo/filter/filter_layout.h"
 layout(binding = FILTER_SOURCE_UNIT) uniform sampler2D sourceImage;
 layout(location = FILTER_RADIUS_LOCATION) uniform int uRadius;
 layout(std430, binding = FILTER_TILES_BINDING) buffer FilterTiles {

@@ -1,8 +1,8 @@
 // The tile of a filter group: with uTiled, the tile its group was given
 // (filter_tiles.comp listed it); otherwise the groups cover the image in row bands
 // (dispatchRows: one group per 8 x 8 pixels, the band's first row in uRowOffset).
-#include "filter_layout.h"
-#include "screen_pass_layout.h"
+#include "stages/monte_carlo/filter/filter_layout.h"
+#include "shared/screen_pass_layout.h"
 #if FILTER_TILE_SIZE != 8
 #error "a filter tile is the 8 x 8 pixels of one dispatchRows group"
 #endif

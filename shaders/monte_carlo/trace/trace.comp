@@ -3,7 +3,7 @@
 #include "shared/screen_pass.glsl"
 #include "shared/trace_pixel.glsl"
 #include "shared/classes.h"
-#include "shared/classify_layout.h"
+#include "stages/monte_carlo/classify/classify_layout.h"
 layout(binding = TRACE_MASK_UNIT) uniform sampler2D classMask;    // classify's class
 layout(binding = TRACE_ZRANGE_UNIT) uniform sampler2D zRangeImage;  // and its bounds
 layout(binding = TRACE_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
@@ -74,7 +74,7 @@ void main() {
     partials[slot + 1u] = uvec4(gEarlyOutFetches, 0u, 0u, 0u);
   }
   imageStore(visibilityImage, pixel, vec4(visibility));
-#if TRACE_COST  // 0 where nobody shows or exports the cost (stages/monte_carlo/trace.cpp)
+#if TRACE_COST  // 0 where nobody shows or exports the cost (stages/monte_carlo/trace/trace.cpp)
   imageStore(costImage, pixel, vec4(float(gFetches), float(gIterations), float(counts.searched),
                                     float(counts.backface + counts.inside + counts.region)));
 #endif

@@ -2,7 +2,7 @@
 // per-pixel records trace.comp wrote. Each invocation adds up
 // TRACE_TOTALS_RECORDS_PER_INVOCATION records and makes one atomicAdd per total.
 #include "shared/trace_layout.h"
-#include "shared/classify_layout.h"
+#include "stages/monte_carlo/classify/classify_layout.h"
 layout(local_size_x = 64) in;
 layout(std430, binding = TRACE_PARTIALS_BINDING) readonly buffer TracePartials {
   uvec4 partials[];  // TRACE_RECORD_UVEC4S per pixel

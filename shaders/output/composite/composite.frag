@@ -1,7 +1,7 @@
 // Stage `composite` (thesis Algorithm 1, last step): albedo x (ambient + visibility x Lambert).
 // A fragment shader over the image (app/gl/screen_triangle.h: why not a compute pass).
 #include "shared/frame.glsl"
-#include "shared/composite_layout.h"
+#include "stages/output/composite/composite_layout.h"
 layout(binding = COMPOSITE_ALBEDO_UNIT) uniform sampler2D albedoImage;
 layout(binding = COMPOSITE_WS_NORMAL_UNIT) uniform sampler2D wsNormalImage;
 layout(binding = COMPOSITE_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;

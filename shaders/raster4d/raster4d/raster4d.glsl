@@ -1,5 +1,5 @@
-// Shared by the raster4d passes (layouts and spaces: shared/raster4d_layout.h).
-#include "raster4d_layout.h"
+// Shared by the raster4d passes (layouts and spaces: stages/raster4d/raster4d/raster4d_layout.h).
+#include "stages/raster4d/raster4d/raster4d_layout.h"
 layout(std140, binding = RASTER4D_PARAMS_BINDING) uniform Raster4dBlock { Raster4dParams r4d; };
 
 // Floats as uints whose unsigned order is the float order (for atomicMin / atomicMax).

@@ -1,6 +1,6 @@
 // raster4d views: per FB pixel, the triangles and samples its lists hold and the pairs its
 // STEP 5 tested with the four planes (after the early rejection, when it is on).
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, r32f) uniform writeonly image2D trianglesImage;
 layout(binding = 1, r32f) uniform writeonly image2D samplesImage;

@@ -9,8 +9,8 @@
 //     sample through the triangle) and the triangle's plane (the light sample must be
 //     strictly on the other side from the output sample).
 //  3. Row masks (lines 11-17): each plane keeps a prefix or a suffix of each light row
-//     (shared/raster4d.glsl rowInside); or, with row masks off, every sample tested alone.
-#include "shared/raster4d.glsl"
+//     (raster4d.glsl rowInside); or, with row masks off, every sample tested alone.
+#include "raster4d.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = R4D_OCCLUSION_RECEIVERS) readonly buffer Receivers { vec4 receivers[]; };
 layout(std430, binding = R4D_OCCLUSION_LS_TRIANGLES) readonly buffer LsTriangles { vec4 lsVertices[]; };

@@ -4,7 +4,7 @@
 // into Raster4dParams on the GPU, so no later pass waits for the CPU to read them. One value
 // for the whole image: the first invocation computes it. `precise`: each operation rounded
 // as written (no fused multiply-add), so the placement is the one the CPU computed before.
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = 64) in;
 layout(std430, binding = R4D_PLACE_STATE) buffer State { Raster4dState state; };
 

@@ -13,7 +13,7 @@
 //    indirect commands of its scatters and STEP 5 (zero past the last band).
 // One group: every invocation sums a strided share of the FB pixels, the shares are reduced
 // in shared memory; the first invocation then walks the rows (at most 512) and writes the slots.
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = RASTER4D_PLAN_GROUP) in;
 layout(std430, binding = R4D_PLAN_SAMPLE_COUNTS) readonly buffer SampleCounts { uint sampleCounts[]; };
 layout(std430, binding = R4D_PLAN_TRIANGLE_COUNTS) readonly buffer TriangleCounts { uint triangleCounts[]; };

@@ -3,7 +3,7 @@
 // their light-space positions and the bounds of their Proj4 rectangles on P. The bounds
 // are kept as (x -+ a)/d so that they do not depend on D, the depth of P, which is the
 // farthest receiver's depth (P must lie behind every receiver, Appendix proof).
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 #include "shared/reference_origin.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D wsPositionTexture;

@@ -3,7 +3,7 @@
 // rule the reference follows (app/reference/reference_trace.h): an opaque surface does not
 // see through itself. Also writes the picked pixel's mask over the light: 1 occluded by a
 // triangle, 0.5 behind the tangent plane, 0 reaching the light.
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D wsPositionTexture;
 layout(binding = 1) uniform sampler2D wsNormalTexture;

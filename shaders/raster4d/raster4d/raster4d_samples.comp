@@ -3,7 +3,7 @@
 // projection from the light corner L0 (the full coverage property, Appendix, makes that
 // enough); or Algorithm 1 lines 8-11: every pixel its Proj4 covers (the redundancy of
 // Table 2, kept as a toggle to measure it).
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(location = 0) uniform int uScatter;
 layout(std430, binding = R4D_SAMPLES_RECEIVERS) readonly buffer Receivers { vec4 receivers[]; };

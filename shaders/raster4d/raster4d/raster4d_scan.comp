@@ -1,7 +1,7 @@
 // raster4d: exclusive prefix sum of the per-FB-pixel counts (count -> prefix sum -> scatter
 // builds lists of any length; nothing is dropped). One group: each invocation sums a
 // contiguous run, the run totals are scanned in shared memory, then each run is written.
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = RASTER4D_SCAN_GROUP) in;
 layout(std430, binding = R4D_SCAN_COUNTS) readonly buffer Counts { uint counts[]; };
 layout(std430, binding = R4D_SCAN_STARTS) writeonly buffer Starts { uint starts[]; };

@@ -5,7 +5,7 @@
 // drop one. A triangle that reaches the light plane has no bounded Proj4: it goes to every
 // pixel and is never rejected early. One wholly behind the light plane, or beyond every
 // receiver, cannot be on a segment from a receiver to the light and is left out.
-#include "shared/raster4d.glsl"
+#include "raster4d.glsl"
 layout(local_size_x = 64) in;
 layout(location = 0) uniform int uScatter;
 layout(std430, binding = R4D_TRIANGLES_TRIANGLES) readonly buffer Triangles { vec4 wsVertices[]; };

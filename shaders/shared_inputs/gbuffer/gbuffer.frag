@@ -1,6 +1,6 @@
 // G-buffer (thesis Algorithm 1, step 1): the unshadowed scene from the eye.
 #include "shared/frame.glsl"
-#include "shared/gbuffer_layout.h"
+#include "stages/shared_inputs/gbuffer/gbuffer_layout.h"
 layout(location = 0) in vec3 wsPosition;
 layout(location = 1) in vec3 wsNormal;
 layout(location = GBUFFER_BASE_COLOR_LOCATION) uniform vec3 uBaseColor;

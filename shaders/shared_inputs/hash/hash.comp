@@ -3,7 +3,7 @@
 // the trace does for its first ray, and shows the first light sample and the raw bits.
 #include "shared/screen_pass.glsl"
 #include "shared/hash.glsl"
-#include "shared/hash_layout.h"
+#include "stages/shared_inputs/hash/hash_layout.h"
 layout(binding = HASH_SAMPLES_IMAGE, rg32f) uniform writeonly image2D samplesImage;
 layout(binding = HASH_BITS_IMAGE, r32f) uniform writeonly image2D bitsImage;
 

@@ -9,7 +9,7 @@
 // (light_layers_risers.frag) uses them to tell a neighbour on the same sheet from another
 // occluder.
 #include "shared/frame.glsl"
-#include "shared/light_layers_layout.h"
+#include "stages/shared_inputs/light_layers/light_layers_layout.h"
 layout(location = 0) in vec3 wsPosition;
 layout(location = LIGHT_LAYERS_FAR_LOCATION) out float farLayer;
 layout(location = LIGHT_LAYERS_SLOPE_LOCATION) out vec2 farSlope;

@@ -22,7 +22,7 @@
 // (app/gl/screen_triangle.h), discarding every texel but a sheet's: a discarded fragment
 // writes nothing, so every other texel keeps what the far pass wrote without a copy.
 #include "shared/frame.glsl"
-#include "shared/light_layers_layout.h"
+#include "stages/shared_inputs/light_layers/light_layers_layout.h"
 layout(binding = RISERS_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = RISERS_FAR_UNIT) uniform sampler2D farRasterized;  // the far pass's depth buffer
 layout(binding = RISERS_SLOPE_UNIT) uniform sampler2D farSlope;     // d(1/z) per texel, x and y

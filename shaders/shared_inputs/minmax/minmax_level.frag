@@ -11,7 +11,7 @@
 // a view of mip level n - 1 alone: two levels of one texture, neither view reaching the other's
 // level, so no rendering feedback loop (GL 4.5 §9.3.1).
 #include "shared/minmax.glsl"
-#include "shared/minmax_layout.h"
+#include "stages/shared_inputs/minmax/minmax_layout.h"
 layout(binding = MINMAX_NEAR_UNIT) uniform sampler2D nearLayer;
 layout(binding = MINMAX_FAR_UNIT) uniform sampler2D farLayer;
 layout(binding = MINMAX_FINER_UNIT) uniform sampler2D finerLevel;
@@ -20,7 +20,7 @@ layout(location = MINMAX_SIZE_LOCATION) uniform ivec2 uSize;
 layout(location = 0) out vec4 bounds;
 
 #if !defined(MINMAX_FROM_LAYERS)
-#error "minmax_level.frag needs MINMAX_FROM_LAYERS 0 or 1 (app/gl/minmax_build.h)"
+#error "minmax_level.frag needs MINMAX_FROM_LAYERS 0 or 1 (stages/shared_inputs/minmax/minmax_build.h)"
 #endif
 
 void main() {

@@ -1,8 +1,8 @@
 // What every soft-shadow-map pass reads: the light (frame.glsl), the micro-patch geometry
 // (ssm_patch.glsl) and the stage's parameters (ssm_layout.h).
-#include "frame.glsl"
-#include "ssm_patch.glsl"
-#include "ssm_layout.h"
+#include "shared/frame.glsl"
+#include "shared/ssm_patch.glsl"
+#include "shared/ssm_layout.h"
 layout(std140, binding = SSM_PARAMS_BINDING) uniform SsmBlock { SsmParams ssm; };
 
 float lightPlaneZ() { return light.lightDepthRange.x; }  // Eq 3.1: the light depth

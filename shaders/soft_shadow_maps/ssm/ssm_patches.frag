@@ -1,7 +1,7 @@
 // Soft shadow maps, step 5 (Atty et al. 2006 §3.4, Fig. 9): for the receiver seen through
 // this soft-shadow-map texel, the fraction of the light the micro-patch hides; additive
 // blending sums the micro-patches (the colour mask picks this pass's channel).
-#include "shared/ssm_common.glsl"
+#include "ssm_common.glsl"
 layout(binding = SSM_PATCHES_RECEIVER_UNIT) uniform sampler2D receiverMap;
 layout(location = 0) flat in vec4 vPatchRect;
 layout(location = 1) flat in float vPatchZ;

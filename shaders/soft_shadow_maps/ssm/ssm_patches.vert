@@ -2,7 +2,7 @@
 // the occluder map. The texel becomes a micro-patch (§3.2); the quad drawn into the soft
 // shadow map covers its penumbra extent (§3.3) for every receiver up to the farthest one.
 // Texels without an occluder, and occluders at or behind the light plane, draw nothing.
-#include "shared/ssm_common.glsl"
+#include "ssm_common.glsl"
 layout(binding = SSM_PATCHES_OCCLUDER_UNIT) uniform sampler2D occluderMap;  // this pass's: nearest or farthest surfaces
 layout(std430, binding = DEPTH_BOUNDS_BINDING) readonly buffer Bounds { DepthBounds receivers; };
 layout(std430, binding = SSM_WORK_BINDING) buffer Work { SsmWork work; };

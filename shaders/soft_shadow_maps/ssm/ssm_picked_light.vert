@@ -2,7 +2,7 @@
 // micro-patch back-projected from that receiver onto the light, drawn in light coordinates
 // ([0,1]^2 fills the view). Counted with additive blending: 0 is light seen through a gap
 // (a light leak), 1 hidden once, 2 or more an overlap (over-darkening, bounded by Eq 3).
-#include "shared/ssm_common.glsl"
+#include "ssm_common.glsl"
 layout(binding = SSM_PICKED_OCCLUDER_UNIT) uniform sampler2D occluderMap;
 layout(binding = SSM_PICKED_RECEIVER_UNIT) uniform sampler2D receiverMap;
 layout(binding = SSM_PICKED_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;

@@ -5,7 +5,7 @@
 // Occluders are not receivers: SSM computes no self-shadowing (§1), so a point lying in front
 // of the receiver map (an occluder's surface) is lit.
 #include "shared/screen_pass.glsl"
-#include "shared/ssm_common.glsl"
+#include "ssm_common.glsl"
 layout(binding = SSM_PROJECT_WS_POSITION_UNIT) uniform sampler2D wsPositionTexture;
 layout(binding = SSM_PROJECT_RECEIVER_UNIT) uniform sampler2D receiverMap;
 layout(binding = SSM_PROJECT_SOFT_SHADOW_MAP_UNIT) uniform sampler2D softShadowMap;  // r: front, g: back

@@ -1,8 +1,8 @@
 // Stage `hard_shadow`: the baseline hard shadow (Williams 1978; thesis §2.3).
 #include "core/frame.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "gl/shader_program.h"
-#include "shared/hard_shadow_layout.h"
+#include "baselines/hard_shadow/hard_shadow_layout.h"
 #include "shared/screen_pass_layout.h"
 
 static_assert(gpu::distinctBelow({HARD_SHADOW_NEAR_UNIT, HARD_SHADOW_WS_POSITION_UNIT,
@@ -53,7 +53,7 @@ public:
   }
 
 private:
-  ShaderProgram program_{{{GL_COMPUTE_SHADER, "hard_shadow.comp"}}};
+  ShaderProgram program_{{{GL_COMPUTE_SHADER, "baselines/hard_shadow/hard_shadow.comp"}}};
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Units and locations of hard_shadow.comp (C++: stages/baselines/hard_shadow.cpp): the
+// Units and locations of hard_shadow.comp (C++: stages/baselines/hard_shadow/hard_shadow.cpp): the
 // G-buffer and the near layer are read with texelFetch, the visibility written as an image.
 #define HARD_SHADOW_NEAR_UNIT 1
 #define HARD_SHADOW_WS_POSITION_UNIT 2

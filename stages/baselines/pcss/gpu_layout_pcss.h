@@ -1,9 +1,9 @@
-// PCSS block (shaders/shared/pcss_layout.h) seen from C++, checked.
+// PCSS block (stages/baselines/pcss/pcss_layout.h) seen from C++, checked.
 #pragma once
 #include "gl/gpu_layout.h"
 
 namespace gpu {
-#include "shared/pcss_layout.h"
+#include "baselines/pcss/pcss_layout.h"
 }  // namespace gpu
 
 static_assert(sizeof(gpu::PcssParams) == 16);

@@ -1,5 +1,5 @@
 // Stage `pcss`: Percentage-Closer Soft Shadows (Fernando 2005), the baseline of most soft
-// shadow demos, on the near layer (shaders/pcss.comp has the numbered steps). How it avoids
+// shadow demos, on the near layer (shaders/baselines/pcss/pcss.comp has the numbered steps). How it avoids
 // the pitfalls users meet in other engines:
 //  - light size in world units: the search and filter regions are the light rectangle's cone
 //    from the receiver (its world size, through the Eq 3.1 frustum), never a hand-tuned "light
@@ -11,15 +11,15 @@
 //    still miss (blockers thinner than their spacing) the searchRadius view shows, and the
 //    per-pixel shift turns into noise rather than bands.
 #include "core/frame.h"
-#include "gl/gpu_layout_pcss.h"
+#include "baselines/pcss/gpu_layout_pcss.h"
 #include "gl/gpu_layout_ssm.h"
 #include "gl/hash_kind.h"
 #include "gl/shader_program.h"
 #include "gl/tap_patterns.h"
 #include "shared/screen_pass_layout.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 
-// Bindings (shaders/shared/pcss_layout.h), within GL 4.5's minimums.
+// Bindings (stages/baselines/pcss/pcss_layout.h), within GL 4.5's minimums.
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, PCSS_PARAMS_BINDING},
                                  gpu::kUniformBindings));
 static_assert(gpu::distinctBelow({PCSS_TAPS_BINDING, DEPTH_BOUNDS_BINDING}, gpu::kStorageBindings));
@@ -113,8 +113,8 @@ public:
   }
 
 private:
-  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "pcss.comp"}}, hashSpecializations()};  // one per hash (hash.glsl)
-  ShaderProgram boundsProgram_{{{GL_COMPUTE_SHADER, "depth_bounds.comp"}}};
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "baselines/pcss/pcss.comp"}}, hashSpecializations()};  // one per hash (hash.glsl)
+  ShaderProgram boundsProgram_{{{GL_COMPUTE_SHADER, "shared/depth_bounds.comp"}}};
   GlBuffer boundsBuffer_, tapBuffer_, paramBuffer_;
 };
 

@@ -1,4 +1,4 @@
-// PCSS (stages/baselines/pcss.cpp), read by C++ (app/gl/gpu_layout_pcss.h) and GLSL.
+// PCSS (stages/baselines/pcss/pcss.cpp), read by C++ (stages/baselines/pcss/gpu_layout_pcss.h) and GLSL.
 #define PCSS_PARAMS_BINDING 4  // uniform: PcssParams
 #define PCSS_TAPS_BINDING 7    // storage: vec2 taps[]: blocker-search taps, then filter taps
 // storage DEPTH_BOUNDS_BINDING (shared/ssm_layout.h): the near layer's DepthBounds, whose

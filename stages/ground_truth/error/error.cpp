@@ -7,8 +7,8 @@
 // measures on the receiver, so an occluder's own surface would count an error the paper never
 // measures. Runs only while both inputs are written.
 //
-// On the GPU (shaders/error.comp, error_histogram.comp, error_reduce.comp; layouts in
-// shaders/shared/error_layout.h): one pixel per invocation, each 8 x 8 group's sums reduced in
+// On the GPU (shaders/ground_truth/error/error.comp, error_histogram.comp, error_reduce.comp; layouts in
+// stages/ground_truth/error/error_layout.h): one pixel per invocation, each 8 x 8 group's sums reduced in
 // shared memory, then one group adds the groups' records; the 99th percentile is selected
 // exactly (a radix select over the bits of |error|). The numbers are read after the frame
 // (Frame::readAfterFrame), so the stage never waits for the GPU. The CPU's computeErrorMetrics
@@ -25,7 +25,7 @@
 #include "gl/shader_program.h"
 
 namespace gpu {
-#include "shared/error_layout.h"
+#include "ground_truth/error/error_layout.h"
 }  // namespace gpu
 
 static_assert(sizeof(gpu::ErrorSums) == 48 && offsetof(gpu::ErrorSums, sums) == 16 &&
@@ -192,9 +192,9 @@ private:
   GlBuffer groupSums_, totals_, histogram_;
   GLsizeiptr groupBytes_ = -1;
   bool totalsAllocated_ = false;
-  ShaderProgram errorProgram_{{{GL_COMPUTE_SHADER, "error.comp"}}};
-  ShaderProgram histogramProgram_{{{GL_COMPUTE_SHADER, "error_histogram.comp"}}};
-  ShaderProgram reduceProgram_{{{GL_COMPUTE_SHADER, "error_reduce.comp"}}};
+  ShaderProgram errorProgram_{{{GL_COMPUTE_SHADER, "ground_truth/error/error.comp"}}};
+  ShaderProgram histogramProgram_{{{GL_COMPUTE_SHADER, "ground_truth/error/error_histogram.comp"}}};
+  ShaderProgram reduceProgram_{{{GL_COMPUTE_SHADER, "ground_truth/error/error_reduce.comp"}}};
 };
 
 }  // namespace

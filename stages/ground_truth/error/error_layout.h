@@ -1,5 +1,5 @@
-// Layouts of stage `error` (stages/ground_truth/error.cpp; shaders error.comp,
-// error_histogram.comp, error_reduce.comp; shared/error.glsl), read by C++ (static_assert'ed
+// Layouts of stage `error` (stages/ground_truth/error/error.cpp; shaders error.comp,
+// error_histogram.comp, error_reduce.comp; shaders/ground_truth/error/error.glsl), read by C++ (static_assert'ed
 // there) and GLSL. The error and its statistics are computed on the GPU and read after the
 // frame (Frame::readAfterFrame): per pixel one invocation in 8 x 8 groups, each group's sums
 // reduced in shared memory into one ErrorSums record, the records summed by one group of

@@ -12,7 +12,7 @@
 #include "gl/gpu_layout.h"
 #include "gl/gpu_scene.h"
 #include "gl/shader_program.h"
-#include "shared/receivers_layout.h"
+#include "ground_truth/receivers/receivers_layout.h"
 
 static_assert(gpu::distinctBelow({RECEIVERS_FLAG_LOCATION}, gpu::kUniformLocations));
 
@@ -61,7 +61,7 @@ public:
   }
 
 private:
-  ShaderProgram program_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "receivers.frag"}}};
+  ShaderProgram program_{{{GL_VERTEX_SHADER, "shared/scene.vert"}, {GL_FRAGMENT_SHADER, "ground_truth/receivers/receivers.frag"}}};
   GlFramebuffer framebuffer_;
   GlTexture depth_;
 };

@@ -9,13 +9,13 @@
 #include <cstddef>
 
 #include "core/frame.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
 
 namespace gpu {
 #include "shared/classes.h"
-#include "shared/classify_layout.h"
+#include "monte_carlo/classify/classify_layout.h"
 }  // namespace gpu
 
 static_assert(offsetof(gpu::ClassifyCounts, pixels) == 0);
@@ -154,10 +154,10 @@ public:
 
 private:
   // One program per hierarchy (classify.frag says why).
-  ShaderVariants programs_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                            {GL_FRAGMENT_SHADER, "classify.frag"}},
+  ShaderVariants programs_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
+                            {GL_FRAGMENT_SHADER, "monte_carlo/classify/classify.frag"}},
                            {"#define CLASSIFY_OVER_MINMAX 0\n", "#define CLASSIFY_OVER_MINMAX 1\n"}};
-  ShaderProgram listProgram_{{{GL_COMPUTE_SHADER, "classify_list.comp"}}};
+  ShaderProgram listProgram_{{{GL_COMPUTE_SHADER, "monte_carlo/classify/classify_list.comp"}}};
   ScreenTriangle screen_;
   GlBuffer counts_;
 };

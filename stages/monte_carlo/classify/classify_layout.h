@@ -1,8 +1,8 @@
-// Layout of stage `classify`'s pixel counts, read by C++ (stages/monte_carlo/classify.cpp, checked with
+// Layout of stage `classify`'s pixel counts, read by C++ (stages/monte_carlo/classify/classify.cpp, checked with
 // static_assert) and GLSL: a std430 storage buffer at CLASSIFY_COUNTS_BINDING holding one
 // uint per class of classes.h (std430 uint arrays have stride 4, as in C++).
 // Texture units (all read with texelFetch) and locations of classify.frag and
-// classify_list.comp (C++: stages/monte_carlo/classify.cpp).
+// classify_list.comp (C++: stages/monte_carlo/classify/classify.cpp).
 #define CLASSIFY_WS_POSITION_UNIT 0
 #define CLASSIFY_WS_NORMAL_UNIT 1
 #define CLASSIFY_LEVELS_UNIT 2      // the N-buffer (2D array texture)

@@ -1,7 +1,7 @@
 // Stage `filter` (thesis §3, Fig 3.2): a separable depth-sensitive Gaussian over the
 // trace's unfiltered visibility, horizontal then vertical; by default only over the tiles
 // where it can change a value (docs/decisions/025-filter-only-non-uniform-tiles.md;
-// shaders/filter_tiles.comp says why that is exact, whatever the weights: a window of equal values
+// shaders/monte_carlo/filter/filter_tiles.comp says why that is exact, whatever the weights: a window of equal values
 // averages to that value).
 #include <cstring>
 #include <cmath>
@@ -10,10 +10,10 @@
 #include "core/frame.h"
 #include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "shared/screen_pass_layout.h"
 namespace gpu {
-#include "shared/filter_layout.h"
+#include "monte_carlo/filter/filter_layout.h"
 }  // namespace gpu
 
 static_assert(offsetof(gpu::FilterTilesHeader, pixels) == 12);
@@ -164,8 +164,8 @@ private:
     glDispatchComputeIndirect(0);
     glMemoryBarrier(kImageResults);
   }
-  ShaderProgram program_{{{GL_COMPUTE_SHADER, "filter.comp"}}};
-  ShaderProgram tilesProgram_{{{GL_COMPUTE_SHADER, "filter_tiles.comp"}}};
+  ShaderProgram program_{{{GL_COMPUTE_SHADER, "monte_carlo/filter/filter.comp"}}};
+  ShaderProgram tilesProgram_{{{GL_COMPUTE_SHADER, "monte_carlo/filter/filter_tiles.comp"}}};
 };
 
 }  // namespace

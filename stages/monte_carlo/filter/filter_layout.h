@@ -1,5 +1,5 @@
 // Units and locations of filter.comp and filter_tiles.comp (C++:
-// stages/monte_carlo/filter.cpp): the inputs are read with texelFetch, the target written as
+// stages/monte_carlo/filter/filter.cpp): the inputs are read with texelFetch, the target written as
 // an image.
 #define FILTER_TARGET_IMAGE 0        // written
 #define FILTER_SOURCE_UNIT 0

@@ -5,18 +5,18 @@
 #include <cmath>
 #include <cstdio>
 
-#include "monte_carlo/trace_steps.h"
-#include "shared_inputs/auto_params.h"
+#include "monte_carlo/trace/trace_steps.h"
+#include "shared_inputs/light/auto_params.h"
 #include "core/frame.h"
 #include "gl/renderer_calibration.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "gl/gpu_layout_trace.h"
 
 namespace gpu {
-#include "shared/classify_layout.h"
+#include "monte_carlo/classify/classify_layout.h"
 #include "shared/screen_pass_layout.h"
 }  // namespace gpu
-#include "gl/minmax_build.h"
+#include "shared_inputs/minmax/minmax_build.h"
 #include "gl/nbuffer_build.h"
 #include "gl/hash_kind.h"
 #include "gl/shader_program.h"
@@ -25,7 +25,7 @@ namespace gpu {
 // light.layers' index + 1 the layer count: the option lists below are in this order.
 static_assert(SEARCH_LINEAR == 0 && SEARCH_LINEAR_BINARY == 1 && SEARCH_HIERARCHICAL == 2);
 static_assert(SAMPLING_JITTERED == 0 && SAMPLING_RANDOM == 1);
-// trace.rays' upper bound (auto's too: stages/shared_inputs/auto_settings.cpp stops at 8): a pixel's
+// trace.rays' upper bound (auto's too: stages/shared_inputs/light/auto_settings.cpp stops at 8): a pixel's
 // counts of rays, searched rays and early outs fit the record's fields (trace_layout.h).
 constexpr int kMaxRaysPerSide = 8;
 static_assert(kMaxRaysPerSide * kMaxRaysPerSide < (1 << TRACE_COUNT_BITS));
@@ -182,7 +182,7 @@ public:
     gpu::TraceParams params{};
     const int recordY = param("record_y").asInt();
     bindLightInput(frame, *this);
-    // `auto` rays: what the scene and view need (stage `light`, stages/shared_inputs/auto_settings.h).
+    // `auto` rays: what the scene and view need (stage `light`, stages/shared_inputs/light/auto_settings.h).
     const int rays = effectiveRays(param("rays"), lightAutoSettings(frame));
     params.config = {rays, param("sampling").asInt(), param("search").asInt(), frame.light.layers};
     params.switches = {param("early_out_backface").asBool(), param("early_out_inside").asBool(),
@@ -396,10 +396,10 @@ private:
          values("#define TRACE_LAYERS", {1, 2, 3}), values("#define TRACE_RECORDING", {0, 1}),
          values("#define TRACE_COST", {0, 1}), hashSpecializations()});
   }
-  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "trace.comp"}}, specializations()};
-  ShaderProgram totalsProgram_{{{GL_COMPUTE_SHADER, "trace_totals.comp"}}};
+  ShaderVariants deferred_{{{GL_COMPUTE_SHADER, "monte_carlo/trace/trace.comp"}}, specializations()};
+  ShaderProgram totalsProgram_{{{GL_COMPUTE_SHADER, "monte_carlo/trace/trace_totals.comp"}}};
   ShaderVariants forward_{
-      {{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "trace_forward.frag"}},
+      {{GL_VERTEX_SHADER, "shared/scene.vert"}, {GL_FRAGMENT_SHADER, "monte_carlo/trace/trace_forward.frag"}},
       specializations()};
   GlBuffer paramsBuffer_, recordsBuffer_, totalsBuffer_;
   GlBuffer partialsBuffer_;  // the deferred pass's per-pixel counts (trace_layout.h)

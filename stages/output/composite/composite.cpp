@@ -1,10 +1,10 @@
 // Stage `composite` (thesis Algorithm 1, last step): the lit scene times the chosen
 // shadow stage's visibility.
 #include "core/frame.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
-#include "shared/composite_layout.h"
+#include "output/composite/composite_layout.h"
 
 static_assert(gpu::distinctBelow({COMPOSITE_ALBEDO_UNIT, COMPOSITE_WS_NORMAL_UNIT,
                                   COMPOSITE_WS_POSITION_UNIT, COMPOSITE_VISIBILITY_UNIT},
@@ -65,8 +65,8 @@ private:
     }
     return ones_;
   }
-  ShaderProgram program_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                          {GL_FRAGMENT_SHADER, "composite.frag"}}};
+  ShaderProgram program_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
+                          {GL_FRAGMENT_SHADER, "output/composite/composite.frag"}}};
   ScreenTriangle screen_;
   GlTexture ones_;
 };

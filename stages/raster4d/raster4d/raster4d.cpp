@@ -34,7 +34,7 @@
 #include "core/run_control.h"
 #include "gl/shader_program.h"
 #include "raster4d_gpu.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "reference/reference_trace.h"
 
 namespace {
@@ -510,7 +510,7 @@ private:
     throw std::logic_error("raster4d: STEP 5 was skipped within raster4d.budget");
   }
 
-  // Each pass's storage buffers at its own bindings (shared/raster4d_layout.h).
+  // Each pass's storage buffers at its own bindings (stages/raster4d/raster4d/raster4d_layout.h).
   static void bind(std::initializer_list<std::pair<GLuint, const GlBuffer*>> buffers) {
     for (const auto& [binding, buffer] : buffers)
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer->id());
@@ -528,7 +528,7 @@ private:
   }
   // The CPU's parameters, then, copied on the GPU over them (no wait): once STEP 2 is
   // placed, the plane's D and tolerance and the FB from the state; inside a band slot, the
-  // slot's band and dispatch from the plan (shared/raster4d_layout.h).
+  // slot's band and dispatch from the plan (stages/raster4d/raster4d/raster4d_layout.h).
   void upload(const gpu::Raster4dParams& params) {
     paramsBuffer_.upload(&params, sizeof params);
     if (placed_) {
@@ -558,21 +558,21 @@ private:
   bool placed_ = false;  // upload copies STEP 2's placement (after raster4d_place.comp)
   int bandSlot_ = -1;    // upload copies this band slot's band and dispatch (>= 0)
   StepTimes times_;
-  ShaderProgram placeProgram_{{{GL_COMPUTE_SHADER, "raster4d_place.comp"}}};
-  ShaderProgram planProgram_{{{GL_COMPUTE_SHADER, "raster4d_plan.comp"}}};
-  ShaderProgram receiversProgram_{{{GL_COMPUTE_SHADER, "raster4d_receivers.comp"}}};
-  ShaderProgram samplesProgram_{{{GL_COMPUTE_SHADER, "raster4d_samples.comp"}}};
-  ShaderProgram trianglesProgram_{{{GL_COMPUTE_SHADER, "raster4d_triangles.comp"}}};
-  ShaderProgram scanProgram_{{{GL_COMPUTE_SHADER, "raster4d_scan.comp"}}};
-  ShaderProgram cellsProgram_{{{GL_COMPUTE_SHADER, "raster4d_cells.comp"}}};
+  ShaderProgram placeProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_place.comp"}}};
+  ShaderProgram planProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_plan.comp"}}};
+  ShaderProgram receiversProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_receivers.comp"}}};
+  ShaderProgram samplesProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_samples.comp"}}};
+  ShaderProgram trianglesProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_triangles.comp"}}};
+  ShaderProgram scanProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_scan.comp"}}};
+  ShaderProgram cellsProgram_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_cells.comp"}}};
   static std::vector<std::string> samplesDefines() {  // every `samples` value's
     std::vector<std::string> defines;
     for (int m = kMinSamples; m <= kMaxSamples; ++m) defines.push_back(samplesDefine(m));
     return defines;
   }
-  ShaderVariants occlusionPrograms_{{{GL_COMPUTE_SHADER, "raster4d_occlusion.comp"}},
+  ShaderVariants occlusionPrograms_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_occlusion.comp"}},
                                     samplesDefines()};
-  ShaderVariants resolvePrograms_{{{GL_COMPUTE_SHADER, "raster4d_resolve.comp"}},
+  ShaderVariants resolvePrograms_{{{GL_COMPUTE_SHADER, "raster4d/raster4d/raster4d_resolve.comp"}},
                                   samplesDefines()};
 };
 

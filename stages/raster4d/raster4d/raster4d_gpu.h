@@ -1,5 +1,5 @@
 // The GPU side of stage `raster4d` (raster4d.cpp): the layouts of
-// shaders/shared/raster4d_layout.h seen from C++ and checked, the occluder triangles as one
+// stages/raster4d/raster4d/raster4d_layout.h seen from C++ and checked, the occluder triangles as one
 // storage buffer, and the small helpers the passes share.
 #pragma once
 #include <glm/glm.hpp>
@@ -13,7 +13,7 @@
 #include "scene/scene.h"
 
 namespace gpu {
-#include "shared/raster4d_layout.h"
+#include "raster4d/raster4d/raster4d_layout.h"
 }  // namespace gpu
 
 static_assert(offsetof(gpu::Raster4dParams, lsFromWorld) == 0);
@@ -77,13 +77,13 @@ private:
 void ensureBufferBytes(const GlBuffer& buffer, size_t bytes);
 // Fills the first `bytes` of `buffer` with zeros.
 void zeroBuffer(const GlBuffer& buffer, size_t bytes);
-// Dispatches a program with local size 64 over `count` items (shared/raster4d.glsl
+// Dispatches a program with local size 64 over `count` items (shaders/raster4d/raster4d/raster4d.glsl
 // linearIndex), then waits for its writes.
 void dispatchLinear(std::uint64_t count);
 // Dispatches an 8x8-group program over width x height.
 void dispatchGrid(int width, int height);
 
-// Light space (shaders/shared/raster4d_layout.h): rows right, up, forward; origin `centre`.
+// Light space (stages/raster4d/raster4d/raster4d_layout.h): rows right, up, forward; origin `centre`.
 glm::mat4 lightSpaceFromWorld(const glm::vec3& centre, const glm::vec3& right,
                               const glm::vec3& up, const glm::vec3& forward);
 

@@ -1,6 +1,6 @@
 // Layouts of stage `raster4d` (Wang et al. 2020, 4D rasterization; stages/raster4d/), read
-// by C++ (stages/raster4d/raster4d_gpu.h checks them with static_assert) and GLSL
-// (shaders/shared/raster4d.glsl). std140 uniform block / std430 storage, 16-byte members.
+// by C++ (stages/raster4d/raster4d/raster4d_gpu.h checks them with static_assert) and GLSL
+// (shaders/raster4d/raster4d/raster4d.glsl). std140 uniform block / std430 storage, 16-byte members.
 //
 // Spaces. *Light space* (ls): origin at the light's centre, x along the light's right, y
 // along its up, z = d the distance in front of the light plane (along forward). The light

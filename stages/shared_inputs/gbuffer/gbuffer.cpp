@@ -2,7 +2,7 @@
 #include "core/frame.h"
 #include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
-#include "shared/gbuffer_layout.h"
+#include "shared_inputs/gbuffer/gbuffer_layout.h"
 
 static_assert(GBUFFER_ALBEDO_ATTACHMENT == 0 && GBUFFER_NORMAL_ATTACHMENT == 1 &&
               GBUFFER_POSITION_ATTACHMENT == 2);  // the order of `colour` below
@@ -56,7 +56,7 @@ public:
   }
 
 private:
-  ShaderProgram program_{{{GL_VERTEX_SHADER, "scene.vert"}, {GL_FRAGMENT_SHADER, "gbuffer.frag"}}};
+  ShaderProgram program_{{{GL_VERTEX_SHADER, "shared/scene.vert"}, {GL_FRAGMENT_SHADER, "shared_inputs/gbuffer/gbuffer.frag"}}};
   GlFramebuffer framebuffer_;
 };
 

@@ -1,4 +1,4 @@
-// Locations of gbuffer.frag (C++: stages/shared_inputs/gbuffer.cpp, which passes the base
+// Locations of gbuffer.frag (C++: stages/shared_inputs/gbuffer/gbuffer.cpp, which passes the base
 // colour location to GpuScene::draw) and its colour attachments.
 #define GBUFFER_BASE_COLOR_LOCATION 1
 #define GBUFFER_ALBEDO_ATTACHMENT 0

@@ -1,8 +1,8 @@
 // Stage `hash`: the random numbers of the trace, made visible (thesis §3.1, §4.3,
 // Appendix A), with the hash the `light` stage selects (light.hash) for the trace.
 #include "core/frame.h"
-#include "shared_inputs/light_input.h"
-#include "shared/hash_layout.h"
+#include "shared_inputs/light/light_input.h"
+#include "shared_inputs/hash/hash_layout.h"
 
 static_assert(gpu::distinctBelow({HASH_SAMPLES_IMAGE, HASH_BITS_IMAGE}, gpu::kImageUnits));
 #include "gl/hash_kind.h"
@@ -46,7 +46,7 @@ public:
   }
 
 private:
-  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "hash.comp"}}, hashSpecializations()};  // one per hash (hash.glsl)
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "shared_inputs/hash/hash.comp"}}, hashSpecializations()};  // one per hash (hash.glsl)
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "shared_inputs/auto_frustum.h"
+#include "shared_inputs/light/auto_frustum.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
 // The value a parameter that allows `auto` stands for this frame: its own, or what
-// stages/shared_inputs/auto_settings.h chose (lightAutoSettings(frame)). For readers that report settings.
+// stages/shared_inputs/light/auto_settings.h chose (lightAutoSettings(frame)). For readers that report settings.
 #pragma once
 #include <string>
 
 #include "core/param.h"
-#include "shared_inputs/auto_settings.h"
+#include "shared_inputs/light/auto_settings.h"
 
 inline int effectiveRays(const Param& rays, const AutoSettings& chosen) {
   return rays.automatic ? chosen.raysPerSide : rays.asInt();

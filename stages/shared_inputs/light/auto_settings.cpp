@@ -1,4 +1,4 @@
-#include "shared_inputs/auto_settings.h"
+#include "shared_inputs/light/auto_settings.h"
 
 #include "gl/renderer_calibration.h"
 #include "shared_inputs/weighted_percentile.h"

@@ -45,7 +45,7 @@
 #include "gl/renderer_calibration.h"
 #include "scene/light_frame.h"
 #include "scene/scene.h"
-#include "soft_shadow_maps/auto_ssm.h"
+#include "soft_shadow_maps/ssm/auto_ssm.h"
 
 struct AutoSettings {
   int resolution = 512;
@@ -84,6 +84,6 @@ AutoSettings chooseAutoSettings(const Scene& scene, const LightFrame& light, int
                                 int eyeHeight);
 
 // What the `light` stage of `frame`'s pipeline chose in its last run (the defaults before it
-// ran, or where the pipeline has no light stage); stages/shared_inputs/light.cpp.
+// ran, or where the pipeline has no light stage); stages/shared_inputs/light/light.cpp.
 struct Frame;
 const AutoSettings& lightAutoSettings(const Frame& frame);

@@ -5,8 +5,8 @@
 // the trace) and the hash that picks light samples (§3.1, Appendix A). Its output is the uniform block
 // of shaders/shared/light_block.h; a CPU copy goes to frame.light for the CPU-side readers; what `auto` chose stays with this stage
 // (lightAutoSettings()).
-#include "shared_inputs/auto_frustum.h"
-#include "shared_inputs/auto_params.h"
+#include "shared_inputs/light/auto_frustum.h"
+#include "shared_inputs/light/auto_params.h"
 
 #include <cstdio>
 #include "core/frame.h"
@@ -25,7 +25,7 @@ Param fovParam() {
       "closer. auto (the default): 90, or wider where a caster's shadow, seen from any point "
       "of the light (its far edge), would leave the frustum: receivers outside it read as lit "
       "(decision 009); at most 150. Casters that no frustum covers (reaching through the "
-      "light's plane) are named in a warning (stages/shared_inputs/auto_frustum.h, decision 135).",
+      "light's plane) are named in a warning (stages/shared_inputs/light/auto_frustum.h, decision 135).",
       kAutoFovFloorDegrees, 10, 150);
   fov.allowsAuto = fov.automatic = true;
   return fov;
@@ -44,7 +44,7 @@ public:
             "depth-map method's maps. auto (the default): so that 98% of the penumbra area in "
             "view spans 6 texels, but no larger than the map whose build costs what the trace "
             "does unless the narrow penumbrae hold half the shadow (a contact shadow), in "
-            "[256, 2048] (stages/shared_inputs/auto_settings.h; the choice and its reasons: the auto.* "
+            "[256, 2048] (stages/shared_inputs/light/auto_settings.h; the choice and its reasons: the auto.* "
             "counters and the inspector). The limit of every "
             "depth-map method (thesis §4.1, Atty 2006 §4.2): a penumbra narrower than a few "
             "texels is lost. A plate 0.06 above the ground under a 1x1 light 3 units up casts "
@@ -115,13 +115,13 @@ public:
     // 1. The light frame of Eq 3.1 (CPU copy for views, reference and the trace panel).
     const Scene& scene = frame.scene;
     // The field of view: `auto` covers every caster's shadow from every point of the light
-    // (stages/shared_inputs/auto_frustum.h, docs/decisions/135); a fixed one is warned about.
+    // (stages/shared_inputs/light/auto_frustum.h, docs/decisions/135); a fixed one is warned about.
     const Param& fov = param("fov_degrees");
     const FrustumFit fit = fitLightFrustum(scene, fov.max);
     const double fovDegrees = fov.automatic ? fit.fovDegrees : fov.value;
     frame.light = computeLightFrame(scene.light, scene.bounds(), float(fovDegrees));
     const LightFrame& l = frame.light;
-    // `auto` (stages/shared_inputs/auto_settings.h): the resolution and layers this scene and view
+    // `auto` (stages/shared_inputs/light/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
     chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight);
     const AutoSettings& chosen = chosen_;

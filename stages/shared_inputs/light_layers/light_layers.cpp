@@ -11,11 +11,11 @@
 // risers pass reads to tell a neighbour on the same sheet from another occluder
 // (docs/decisions/115-risers-closed-along-the-sheets-plane.md).
 #include "core/frame.h"
-#include "shared_inputs/light_input.h"
+#include "shared_inputs/light/light_input.h"
 #include "gl/gpu_layout.h"
 #include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
-#include "shared/light_layers_layout.h"
+#include "shared_inputs/light_layers/light_layers_layout.h"
 
 static_assert(gpu::distinctBelow({RISERS_NEAR_UNIT, RISERS_FAR_UNIT, RISERS_SLOPE_UNIT},
                                  gpu::kTextureUnits));
@@ -144,14 +144,14 @@ private:
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
-  ShaderProgram program_{{{GL_VERTEX_SHADER, "scene.vert"},
-                          {GL_FRAGMENT_SHADER, "light_layers.frag"}},
+  ShaderProgram program_{{{GL_VERTEX_SHADER, "shared/scene.vert"},
+                          {GL_FRAGMENT_SHADER, "shared_inputs/light_layers/light_layers.frag"}},
                          "#define LIGHT_PASS\n"};
   GlFramebuffer framebuffer_;
   GlTexture farRasterized_;  // the far layer as rasterized, before close_risers
   GlTexture farSlope_;       // d(1/z) per texel along x and y of the far surface's plane
-  ShaderProgram risers_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                         {GL_FRAGMENT_SHADER, "light_layers_risers.frag"}}};
+  ShaderProgram risers_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
+                         {GL_FRAGMENT_SHADER, "shared_inputs/light_layers/light_layers_risers.frag"}}};
   ScreenTriangle screen_;
 };
 

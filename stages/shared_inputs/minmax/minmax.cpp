@@ -5,7 +5,7 @@
 // map (level 0 is the layers) where the N-buffer (§3.5) keeps log2(W) + 1 levels. Layout: shaders/shared/minmax.glsl. The trace searches it when
 // trace.hierarchy = minmax.
 #include "core/frame.h"
-#include "gl/minmax_build.h"
+#include "shared_inputs/minmax/minmax_build.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "gl/minmax_build.h"
+#include "shared_inputs/minmax/minmax_build.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,7 +7,7 @@
 
 #include "gl/gpu_layout.h"
 #include "gl/hierarchy_cells.h"
-#include "shared/minmax_layout.h"
+#include "shared_inputs/minmax/minmax_layout.h"
 
 static_assert(gpu::distinctBelow({MINMAX_NEAR_UNIT, MINMAX_FAR_UNIT, MINMAX_FINER_UNIT},
                                  gpu::kTextureUnits));

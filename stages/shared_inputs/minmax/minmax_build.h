@@ -29,8 +29,8 @@ public:
 private:
   // Level 1 from the layers, the coarser levels from the level below (minmax_level.frag says
   // why two programs).
-  ShaderVariants levelPrograms_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                                 {GL_FRAGMENT_SHADER, "minmax_level.frag"}},
+  ShaderVariants levelPrograms_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
+                                 {GL_FRAGMENT_SHADER, "shared_inputs/minmax/minmax_level.frag"}},
                                 {"#define MINMAX_FROM_LAYERS 0\n", "#define MINMAX_FROM_LAYERS 1\n"}};
   ScreenTriangle screen_;
 };

@@ -1,4 +1,4 @@
-// Units of the min-max mipmap build (minmax_level.frag; C++: app/gl/minmax_build.cpp).
+// Units of the min-max mipmap build (minmax_level.frag; C++: stages/shared_inputs/minmax/minmax_build.cpp).
 // Level 1 reads the layers; level n >= 2 reads level n-1 through a view of its mip level.
 #define MINMAX_NEAR_UNIT 0
 #define MINMAX_FAR_UNIT 1

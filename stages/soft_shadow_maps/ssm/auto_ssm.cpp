@@ -1,11 +1,11 @@
-#include "soft_shadow_maps/auto_ssm.h"
+#include "soft_shadow_maps/ssm/auto_ssm.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
 
-#include "soft_shadow_maps/ssm_cost.h"
+#include "soft_shadow_maps/ssm/ssm_cost.h"
 #include "shared_inputs/weighted_percentile.h"
 
 SsmResolutionNeed ssmResolutionNeeded(const std::vector<double>& texelsPerResolution,

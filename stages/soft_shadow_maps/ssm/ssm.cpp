@@ -20,10 +20,10 @@
 #include "gl/gpu_layout_ssm.h"
 #include "gl/shader_program.h"
 #include "shared/screen_pass_layout.h"
-#include "shared_inputs/auto_settings.h"
-#include "shared_inputs/light_input.h"
-#include "soft_shadow_maps/auto_ssm.h"
-#include "soft_shadow_maps/ssm_cost.h"
+#include "shared_inputs/light/auto_settings.h"
+#include "shared_inputs/light/light_input.h"
+#include "soft_shadow_maps/ssm/auto_ssm.h"
+#include "soft_shadow_maps/ssm/ssm_cost.h"
 
 // Each pass's bindings (shaders/shared/ssm_layout.h), within GL 4.5's minimums.
 static_assert(gpu::distinctBelow({FRAME_BLOCK_BINDING, LIGHT_BLOCK_BINDING, SSM_PARAMS_BINDING},
@@ -96,7 +96,7 @@ public:
             "4 texels, in multiples of 128 in [128, 1024], the largest whose estimated "
             "micro-patch fragments stay within 2e7 and ssm.budget (64, 32 or 16 where even "
             "128 would not) "
-            "(stages/soft_shadow_maps/auto_ssm.h).",
+            "(stages/soft_shadow_maps/ssm/auto_ssm.h).",
             128, 16, 1024),
         Param::real("fill", "Fraction of the occluder map whose micro-patches are drawn, row by "
                     "row from the bottom: slide it to watch the soft shadow map fill up (1: all).",
@@ -391,15 +391,15 @@ private:
     return vertexArray_;
   }
 
-  ShaderProgram depthProgram_{{{GL_VERTEX_SHADER, "scene.vert"},
-                               {GL_FRAGMENT_SHADER, "light_layers.frag"}},
+  ShaderProgram depthProgram_{{{GL_VERTEX_SHADER, "shared/scene.vert"},
+                               {GL_FRAGMENT_SHADER, "shared_inputs/light_layers/light_layers.frag"}},
                               "#define LIGHT_PASS\n"};
-  ShaderProgram boundsProgram_{{{GL_COMPUTE_SHADER, "depth_bounds.comp"}}};
-  ShaderProgram patchProgram_{{{GL_VERTEX_SHADER, "ssm_patches.vert"},
-                               {GL_FRAGMENT_SHADER, "ssm_patches.frag"}}};
-  ShaderProgram pickedLightProgram_{{{GL_VERTEX_SHADER, "ssm_picked_light.vert"},
-                                     {GL_FRAGMENT_SHADER, "ssm_count.frag"}}};
-  ShaderProgram projectProgram_{{{GL_COMPUTE_SHADER, "ssm_project.comp"}}};
+  ShaderProgram boundsProgram_{{{GL_COMPUTE_SHADER, "shared/depth_bounds.comp"}}};
+  ShaderProgram patchProgram_{{{GL_VERTEX_SHADER, "soft_shadow_maps/ssm/ssm_patches.vert"},
+                               {GL_FRAGMENT_SHADER, "soft_shadow_maps/ssm/ssm_patches.frag"}}};
+  ShaderProgram pickedLightProgram_{{{GL_VERTEX_SHADER, "soft_shadow_maps/ssm/ssm_picked_light.vert"},
+                                     {GL_FRAGMENT_SHADER, "soft_shadow_maps/ssm/ssm_count.frag"}}};
+  ShaderProgram projectProgram_{{{GL_COMPUTE_SHADER, "soft_shadow_maps/ssm/ssm_project.comp"}}};
   GlFramebuffer depthFramebuffer_, colorFramebuffer_, readFramebuffer_;
   GlTexture accumulation_;
   GlBuffer occluderBounds_, receiverBounds_, counterBuffer_, paramBuffer_, workBuffer_;

@@ -1,4 +1,4 @@
-#include "soft_shadow_maps/ssm_cost.h"
+#include "soft_shadow_maps/ssm/ssm_cost.h"
 
 #include <algorithm>
 #include <cmath>
