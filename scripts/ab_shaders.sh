@@ -2,7 +2,9 @@
 # run with two sets of shaders swapped in with PENUMBRA_SHADER_DIR, $TMP/before and
 # $TMP/after (the shaders of commits $BEFORE and $AFTER), on cube and dragon; each call
 # writes one bench-compare file to $OUT. The caller sets BEFORE, AFTER and OUT and
-# alternates the calls.
+# alternates the calls. Only shaders/ is swapped: the layout headers in stages/ are the
+# binary's own on both sides (docs/design.md#layouts), and both trees must use the layout of
+# shaders/<family>/<stage>/ the binary loads.
 set -e
 P=$(pwd)/build/penumbra
 TMP=$(mktemp -d)

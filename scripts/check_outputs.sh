@@ -2,7 +2,8 @@
 # The zero-tolerance output check: every stage output (EXR) and the counters of run.json of
 # many cases, exported by two builds, must be identical. The before side runs $BEFORE_BIN
 # with the shaders of commit $BEFORE, the after side ./build/penumbra with the shaders of
-# $AFTER (both through PENUMBRA_SHADER_DIR); the cases: five scenes x two hierarchies x five
+# $AFTER (both through PENUMBRA_SHADER_DIR; a layout header in stages/ is each binary's own,
+# from its source tree); the cases: five scenes x two hierarchies x five
 # combinations of map, layers, search and deferred / forward at 160x120, and the engine at
 # 320x240, map 1024 (QUICK=1: the cube and the engine only). Counters compared: those the
 # before side writes (counters only the after side has are listed, not counted as

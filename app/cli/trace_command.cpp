@@ -7,7 +7,7 @@
 #include "io/headless_session.h"
 #include "io/image_export.h"
 #include "io/output_path.h"
-#include "monte_carlo/trace_steps.h"
+#include "monte_carlo/trace/trace_steps.h"
 
 int runTraceCommand(const TraceOptions& options) {
   int x = -1, y = -1;

@@ -34,11 +34,11 @@ struct Frame {
   std::map<std::string, double> counters;     // statistics for people: "trace.rays", ...
   // One sentence per `auto` parameter decided this run (the light stage's choices, then the
   // pipeline's choice slots); the numbers behind them are the light stage's
-  // (stages/shared_inputs/auto_settings.h).
+  // (stages/shared_inputs/light/auto_settings.h).
   std::vector<std::string> autoReasons;
   // CPU copies of GPU data a stage read back after the run (Frame::readAfterFrame), by
   // "stage.name": the bytes as the stage's layout header lays them out (the trace's recorded
-  // steps: "trace.steps", read through stages/monte_carlo/trace_steps.h).
+  // steps: "trace.steps", read through stages/monte_carlo/trace/trace_steps.h).
   std::map<std::string, std::vector<unsigned char>> readBack;
   std::map<std::string, std::unique_ptr<GlBuffer>> buffers;  // buffer outputs, "stage.output"
   // Demand (docs/decisions/014-outputs-nobody-asked-for.md): the outputs this run was asked for

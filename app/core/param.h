@@ -11,7 +11,7 @@ struct Param {
   Type type = Type::Float;
   double value = 0, min = 0, max = 1;  // Bool: 0/1, Enum: option index
   std::vector<std::string> options;    // Enum only
-  // `auto` (stages/shared_inputs/auto_settings.h; docs/accuracy.md): a parameter that allows it takes the
+  // `auto` (stages/shared_inputs/light/auto_settings.h; docs/accuracy.md): a parameter that allows it takes the
   // value "auto" (the stage chooses from the scene and view); a number or option clears it.
   bool allowsAuto = false;
   bool automatic = false;

@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/pipeline.h"
-#include "monte_carlo/trace_steps.h"
-#include "shared_inputs/auto_params.h"
+#include "monte_carlo/trace/trace_steps.h"
+#include "shared_inputs/light/auto_params.h"
 
 const char* stepDecisionName(int decision) {
   static const char* names[] = {"descend", "advance", "ascend", "hit", "miss",

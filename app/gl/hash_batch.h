@@ -1,5 +1,5 @@
 // Runs the hash functions of shaders/shared/hash.glsl on the GPU over many inputs
-// (shaders/hash_batch.comp) and reads the results back with glGetNamedBufferSubData: the
+// (shaders/commands/hash_batch.comp) and reads the results back with glGetNamedBufferSubData: the
 // engine of `penumbra hash` and of the GPU = C++ tests. Needs a current GL context.
 #pragma once
 #include <cstdint>
@@ -26,9 +26,9 @@ public:
 private:
   void run(ShaderProgram& program, std::uint32_t count, std::uint32_t key, HashKind kind,
            std::uint32_t firstSeed, glm::uvec4* hashes);
-  ShaderProgram linear_{{{GL_COMPUTE_SHADER, "hash_batch.comp"}},
+  ShaderProgram linear_{{{GL_COMPUTE_SHADER, "commands/hash_batch.comp"}},
                         "#define HASH_BATCH_LINEAR_SEEDS 1"};
-  ShaderProgram explicit_{{{GL_COMPUTE_SHADER, "hash_batch.comp"}}};
+  ShaderProgram explicit_{{{GL_COMPUTE_SHADER, "commands/hash_batch.comp"}}};
   GlBuffer seeds_, hashes_;
   size_t seedBytes_ = 0, hashBytes_ = 0;
 };

@@ -35,10 +35,10 @@ public:
              NBufferTexels texels = NBufferTexels::All);
 
 private:
-  ShaderProgram levels01_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                           {GL_FRAGMENT_SHADER, "nbuffer_levels01.frag"}}};
-  ShaderProgram level_{{{GL_VERTEX_SHADER, "screen_triangle.vert"},
-                        {GL_FRAGMENT_SHADER, "nbuffer_level.frag"}}};
+  ShaderProgram levels01_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
+                           {GL_FRAGMENT_SHADER, "shared_inputs/nbuffer/nbuffer_levels01.frag"}}};
+  ShaderProgram level_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
+                        {GL_FRAGMENT_SHADER, "shared_inputs/nbuffer/nbuffer_level.frag"}}};
   ScreenTriangle screen_;
 };
 

@@ -5,7 +5,7 @@
 //    app/scene/auto_settings.h);
 //  - nbufferTexelLevelsPerEyePixel: N-buffer texel-levels per eye pixel above which the
 //    min-max mipmap's cheaper build outweighs its looser bounds over the eye (the trace's
-//    `auto` hierarchy, stages/monte_carlo/trace.cpp).
+//    `auto` hierarchy, stages/monte_carlo/trace/trace.cpp).
 // A short calibration measures both at first use on a renderer (renderer_calibration_measure.h)
 // and caches them in $XDG_CACHE_HOME/penumbra (else ~/.cache/penumbra), one file per
 // renderer, keyed by GL_RENDERER and GL_VERSION (which names the driver's version).

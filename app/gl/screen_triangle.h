@@ -1,5 +1,5 @@
 // Fragment-shader passes over every texel of their targets: a triangle covering the
-// viewport, its corners from gl_VertexID (shaders/screen_triangle.vert), no vertex buffer.
+// viewport, its corners from gl_VertexID (shaders/shared/screen_triangle.vert), no vertex buffer.
 //
 // Why not a compute pass: llvmpipe writes fragment outputs a tile at a time, while a compute
 // shader's imageStore goes lane by lane and, for RGBA32F, channel by channel: measured on

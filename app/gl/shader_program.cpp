@@ -25,6 +25,23 @@ std::vector<ShaderVariants*>& liveVariants() {
   return variants;
 }
 
+std::filesystem::path sourceDirectory() { return PENUMBRA_SOURCE_DIR; }
+
+// `#include "name"` from the file `from`: the including file's folder, then the shader
+// directory (shaders/, or $PENUMBRA_SHADER_DIR), then the source tree, where a stage's layout
+// header sits beside its C++ ("stages/monte_carlo/classify/classify_layout.h"; docs/design.md
+// "Where a stage's files are"). The source tree is not replaced by $PENUMBRA_SHADER_DIR: the
+// layout headers are compiled into the C++ too. A name found nowhere stays relative to `from`
+// (the "not found" message names it there).
+std::filesystem::path resolveInclude(const std::filesystem::path& from, const std::string& name) {
+  const std::filesystem::path local = (from.parent_path() / name).lexically_normal();
+  for (const std::filesystem::path& candidate :
+       {local, (shaderDirectory() / name).lexically_normal(),
+        (sourceDirectory() / name).lexically_normal()})
+    if (std::filesystem::is_regular_file(candidate)) return candidate;
+  return local;
+}
+
 void expandIncludes(const std::filesystem::path& path, int fileIndex, std::set<std::string>& seen,
                     std::ostringstream& out, std::vector<std::string>& files) {
   std::ifstream in(path);
@@ -40,7 +57,7 @@ void expandIncludes(const std::filesystem::path& path, int fileIndex, std::set<s
       out << line << "\n";
       continue;
     }
-    const auto included = (path.parent_path() / match[1].str()).lexically_normal();
+    const auto included = resolveInclude(path, match[1].str());
     if (seen.insert(included.string()).second) {
       files.push_back(included.string());
       expandIncludes(included, int(files.size()) - 1, seen, out, files);
@@ -93,12 +110,17 @@ std::string loadShaderSource(const std::string& file, const std::string& defines
   std::vector<std::string> names{file};
   expandIncludes(shaderDirectory() / file, 0, seen, out, names);
   if (files) {
-    // Names relative to the shader directory, as a reader finds them in shaders/.
-    for (size_t i = 1; i < names.size(); ++i) {
-      const std::string relative =
-          std::filesystem::path(names[i]).lexically_relative(shaderDirectory()).string();
-      if (!relative.empty() && relative.rfind("..", 0) != 0) names[i] = relative;
-    }
+    // Names relative to the shader directory, as a reader finds them in shaders/ (a layout
+    // header from the source tree: relative to it, "stages/...").
+    for (size_t i = 1; i < names.size(); ++i)
+      for (const std::filesystem::path& root : {shaderDirectory(), sourceDirectory()}) {
+        const std::string relative =
+            std::filesystem::path(names[i]).lexically_relative(root).string();
+        if (!relative.empty() && relative.rfind("..", 0) != 0) {
+          names[i] = relative;
+          break;
+        }
+      }
     *files = std::move(names);
   }
   return out.str();

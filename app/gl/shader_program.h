@@ -1,6 +1,8 @@
 // GLSL programs loaded from shaders/ with our own `#include "file"` resolver, so the layout
-// headers in shaders/shared/ are read by both C++ and GLSL. A failed (re)load keeps the last
-// good program and returns the compiler log.
+// headers (shaders/shared/, and a stage's own beside its C++ in stages/<family>/<stage>/) are
+// read by both C++ and GLSL. An include is looked up in the including file's folder, then the
+// shader directory, then the source tree. A failed (re)load keeps the last good program and
+// returns the compiler log.
 #pragma once
 #include <epoxy/gl.h>
 
@@ -10,7 +12,9 @@
 #include <string>
 #include <vector>
 
-std::filesystem::path shaderDirectory();  // $PENUMBRA_SHADER_DIR, else <source>/shaders
+// $PENUMBRA_SHADER_DIR, else <source>/shaders. The override replaces the shader tree alone:
+// headers included from the source tree (stages/...) are always this checkout's.
+std::filesystem::path shaderDirectory();
 
 // Reads `file` (relative to shaderDirectory()) with every #include expanded once, with
 // #line directives so compiler messages name the right line; `files` receives the source

@@ -1,6 +1,6 @@
 // Exact reference visibility (docs/design.md#ground-truth): at each receiver point, the fraction of
 // an m x m grid of light samples that the REAL triangles of the scene do not hide, ray traced on
-// the CPU with Embree 3. The stage `reference` (stages/ground_truth/reference.cpp) and `penumbra
+// the CPU with Embree 3. The stage `reference` (stages/ground_truth/reference/reference.cpp) and `penumbra
 // bench` use it; it knows nothing about GL.
 //
 // Choices, and why (they make it the truth the methods are measured against):

@@ -1,4 +1,4 @@
-// The GPU half of the hash statistics (shaders/hash_stats_*.comp): generates the samples of
+// The GPU half of the hash statistics (shaders/hash/hash_stats/hash_stats_*.comp): generates the samples of
 // a hash over an input pattern in chunks, reduces them to counts and partial sums, and adds
 // the partials in double; hashstats::analyze does the rest. Needs a current GL context.
 #pragma once
@@ -33,12 +33,12 @@ public:
 private:
   void reduceChunk(std::uint32_t count, std::uint64_t fipsBlocksBefore, hashstats::Raw& raw);
   void clearCounts();
-  ShaderProgram generate_{{{GL_COMPUTE_SHADER, "hash_stats_generate.comp"}}};
-  ShaderProgram throughput_{{{GL_COMPUTE_SHADER, "hash_stats_generate.comp"}},
+  ShaderProgram generate_{{{GL_COMPUTE_SHADER, "hash/hash_stats/hash_stats_generate.comp"}}};
+  ShaderProgram throughput_{{{GL_COMPUTE_SHADER, "hash/hash_stats/hash_stats_generate.comp"}},
                             "#define HASH_STATS_THROUGHPUT 1"};
-  ShaderProgram accumulate_{{{GL_COMPUTE_SHADER, "hash_stats_accumulate.comp"}}};
-  ShaderProgram fips_{{{GL_COMPUTE_SHADER, "hash_stats_fips.comp"}}};
-  ShaderProgram avalanche_{{{GL_COMPUTE_SHADER, "hash_stats_avalanche.comp"}}};
+  ShaderProgram accumulate_{{{GL_COMPUTE_SHADER, "hash/hash_stats/hash_stats_accumulate.comp"}}};
+  ShaderProgram fips_{{{GL_COMPUTE_SHADER, "hash/hash_stats/hash_stats_fips.comp"}}};
+  ShaderProgram avalanche_{{{GL_COMPUTE_SHADER, "hash/hash_stats/hash_stats_avalanche.comp"}}};
   GlBuffer samples_, counts_, sums_, blocks_, flips_;
   bool allocated_ = false;
 };

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "shared_inputs/auto_params.h"
+#include "shared_inputs/light/auto_params.h"
 
 // 1. The (?) marker.
 void helpMarker(const std::string& text) {
@@ -46,7 +46,7 @@ double shownParamValue(const Param& param, std::optional<double> autoValue) {
 
 bool drawParam(Param& param, ParamHandValues& handValues, std::optional<double> autoValue) {
   bool changed = false;
-  // `auto` (stages/shared_inputs/auto_settings.h): a checkbox before the widget, which is then greyed.
+  // `auto` (stages/shared_inputs/light/auto_settings.h): a checkbox before the widget, which is then greyed.
   const ImGuiStyle& style = ImGui::GetStyle();
   const float autoWidth = param.allowsAuto ? ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
                                                  ImGui::CalcTextSize("auto").x + style.ItemSpacing.x

@@ -22,7 +22,7 @@ void helpMarker(const std::string& text);
 //    on (the caller's state: UiState::PanelMemory) and returns when auto is unticked.
 using ParamHandValues = std::map<const Param*, double>;
 bool drawParam(Param& param, ParamHandValues& handValues, std::optional<double> autoValue = {});
-// 2b. What `auto` chose for parameter `stage`.`param` in `frame` (stages/shared_inputs/auto_params.h):
+// 2b. What `auto` chose for parameter `stage`.`param` in `frame` (stages/shared_inputs/light/auto_params.h):
 //     the map size, the layers (as the option index) and the rays per side from the frame's
 //     AutoSettings; a choice the pipeline decides (Pipeline::decideAutoChoices) holds its
 //     choice in its value. Empty when the parameter is not under auto or nothing ran yet.

@@ -14,7 +14,7 @@
 #define HASH_XXHASH32 7   // xxhash32 of the 4-word seed (Jarzynski & Olano 2020)
 #define HASH_KIND_COUNT 8
 
-// shaders/hash_batch.comp: one invocation per input, 64 per group; std430 arrays of uvec4.
+// shaders/commands/hash_batch.comp: one invocation per input, 64 per group; std430 arrays of uvec4.
 #define HASH_BATCH_GROUP_SIZE 64
 #define HASH_BATCH_SEED_BINDING 0   // readonly buffer: uvec4 seeds[] (explicit-seed variant)
 #define HASH_BATCH_OUTPUT_BINDING 1 // writeonly buffer: uvec4 hashes[]

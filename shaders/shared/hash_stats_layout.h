@@ -1,4 +1,4 @@
-// The `hash_stats` stage's GPU passes (shaders/hash_stats_*.comp; thesis §3.1,
+// The `hash_stats` stage's GPU passes (shaders/hash/hash_stats/hash_stats_*.comp; thesis §3.1,
 // §4.3, Appendix A): numbers shared by C++ (app/stats/hash_stats_gpu.cpp, with
 // static_asserts) and GLSL. The GPU generates the hash outputs and reduces them to integer
 // counts and per-invocation float partial sums; the CPU adds the partials in double and
@@ -66,7 +66,7 @@
 #define HASH_STATS_FLIPS_INPUTS 1024
 #define HASH_STATS_FLIPS_TOTAL (HASH_STATS_FLIPS_INPUTS + 32)
 
-// Input patterns (shared/hash_patterns.glsl).
+// Input patterns (shaders/hash/hash_stats/hash_patterns.glsl).
 #define HASH_PATTERN_LINEAR 0  // seed (i + 1, 0, 0, 0): the thesis's 1, 2, ..., n (§3.1)
 #define HASH_PATTERN_PIXELS 1  // the renderer's seeds (x, y, ray, 0) of a 1024 x 1024 image
 #define HASH_PATTERN_MORTON 2  // pixels (x, y, 0, 0) in Morton (Z) order

@@ -1,5 +1,5 @@
 // The light, as the `light` stage hands it to every stage that reads the light's maps
-// (stages/shared_inputs/light.cpp): read by C++ (app/gl/gpu_layout.h) and GLSL
+// (stages/shared_inputs/light/light.cpp): read by C++ (app/gl/gpu_layout.h) and GLSL
 // (#include "shared/frame.glsl"). std140, 16-byte members only; bound at uniform binding
 // LIGHT_BLOCK_BINDING while a stage that declared the `light` input runs.
 //

@@ -9,7 +9,7 @@
 //
 // Storage: level 0 is not stored: it is the light layers themselves, (near, near, far),
 // read there (trace_ray.glsl hierarchyTexel). Levels n >= 1 are the mip levels of one
-// RGBA32F 2D texture (C++: app/gl/minmax_build.h): level n is mip level n - 1, read with
+// RGBA32F 2D texture (C++: stages/shared_inputs/minmax/minmax_build.h): level n is mip level n - 1, read with
 // texelFetch(levels, cell, n - 1). Its base is minmaxBaseSize(W) x minmaxBaseSize(H), the
 // next power of two of ceil(W/2) x ceil(H/2) (GL's mips round down, the cells up:
 // hierarchy_cells.h says why no smaller base holds every level); texels of a mip level past

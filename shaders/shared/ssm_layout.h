@@ -1,7 +1,7 @@
-// Soft shadow maps (stages/soft_shadow_maps/ssm.cpp), read by C++ (app/gl/gpu_layout_ssm.h)
+// Soft shadow maps (stages/soft_shadow_maps/ssm/ssm.cpp), read by C++ (app/gl/gpu_layout_ssm.h)
 // and GLSL. std140/std430 with 16-byte members only.
 #define SSM_PARAMS_BINDING 4    // uniform: SsmParams
-#define DEPTH_BOUNDS_BINDING 5  // storage: DepthBounds (shaders/depth_bounds.comp)
+#define DEPTH_BOUNDS_BINDING 5  // storage: DepthBounds (shaders/shared/depth_bounds.comp)
 #define SSM_COUNTERS_BINDING 6  // storage: SsmCounters
 #define SSM_WORK_BINDING 7      // storage: SsmWork (ssm_patches.vert)
 
@@ -46,7 +46,7 @@ struct SsmCounters {
 
 // The micro-patch quads' fragments (texel centres inside each quad, summed over the
 // instances of a pass's first draw), a 64-bit count as two words: the measured work that
-// the cost estimate (stages/soft_shadow_maps/ssm_cost.h) predicts.
+// the cost estimate (stages/soft_shadow_maps/ssm/ssm_cost.h) predicts.
 struct SsmWork {
   uint low, high, unused0, unused1;
 };

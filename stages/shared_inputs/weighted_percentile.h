@@ -1,6 +1,6 @@
 // The value below which `fraction` of the total weight lies (values weighted by, e.g., the
 // screen area of each probe): how `auto` reads "98% of the penumbra area" from its probes
-// (shared_inputs/auto_settings.cpp for the map, soft_shadow_maps/auto_ssm.cpp for SSM).
+// (shared_inputs/light/auto_settings.cpp for the map, soft_shadow_maps/ssm/auto_ssm.cpp for SSM).
 #pragma once
 #include <algorithm>
 #include <utility>

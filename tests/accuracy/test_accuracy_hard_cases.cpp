@@ -3,7 +3,7 @@
 // - a sheet nearly edge-on to the light, whose steps in the depth layers rise tens of texel
 //   widths per texel (light_layers.close_risers, docs/decisions/115-...);
 // - two plates one above the other, where `auto` must choose three layers
-//   (stages/shared_inputs/auto_settings.h step 5, docs/decisions/116-...).
+//   (stages/shared_inputs/light/auto_settings.h step 5, docs/decisions/116-...).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +13,7 @@
 
 #include "scene/mesh_builders.h"
 #include "scene/scene_builtin.h"
-#include "shared_inputs/auto_settings.h"
+#include "shared_inputs/light/auto_settings.h"
 #include "support/analytic_scenes.h"
 #include "support/gl_test.h"
 

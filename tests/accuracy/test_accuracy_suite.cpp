@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "shared_inputs/auto_settings.h"
+#include "shared_inputs/light/auto_settings.h"
 #include "support/analytic_scenes.h"
 #include "support/gl_test.h"
 

@@ -1,5 +1,5 @@
 // The light's frustum fitted to the casters (light.fov_degrees=auto,
-// stages/shared_inputs/auto_frustum.h, docs/decisions/135): an occluder straddling the edge of
+// stages/shared_inputs/light/auto_frustum.h, docs/decisions/135): an occluder straddling the edge of
 // the fixed 90-degree frustum shadows receivers outside it, which every depth-map method read
 // as lit (decision 009). Oracles: the frustum's coverage by brute force (points along the
 // shadow rays from the light's corners projected through the light's matrix), and the exact
@@ -15,7 +15,7 @@
 
 #include "scene/light_frame.h"
 #include "scene/mesh_builders.h"
-#include "shared_inputs/auto_frustum.h"
+#include "shared_inputs/light/auto_frustum.h"
 #include "support/analytic_scenes.h"
 #include "support/gl_test.h"
 

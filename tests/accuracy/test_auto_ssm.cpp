@@ -1,4 +1,4 @@
-// `auto` for ssm.resolution (stages/soft_shadow_maps/auto_ssm.h, docs/decisions/136): at the
+// `auto` for ssm.resolution (stages/soft_shadow_maps/ssm/auto_ssm.h, docs/decisions/136): at the
 // old fixed 128 a contact penumbra falls inside one SSM texel; auto picks the resolution from
 // the narrowest penumbra in view, within a cost limit. Oracle: the exact analytic visibility
 // (support/analytic_visibility.h) of the suite's scenes.

@@ -125,16 +125,51 @@ TEST(Layers, EveryScannedFileHasALayer) {
 
 // The rule itself: it refuses what it must (so a clean tree is a finding, not a blind check).
 TEST(Layers, TheRuleRefusesUpwardAndPeerIncludes) {
-  EXPECT_FALSE(allowed("app/core/frame.h", "stages/shared_inputs/auto_settings.h"));
+  EXPECT_FALSE(allowed("app/core/frame.h", "stages/shared_inputs/light/auto_settings.h"));
   EXPECT_FALSE(allowed("app/scene/scene.cpp", "app/core/frame.h"));
   EXPECT_FALSE(allowed("app/window/panels/ui_export.cpp", "app/cli/export_command.h"));
   EXPECT_FALSE(allowed("app/cli/trace_command.cpp", "app/window/window_app.h"));
   EXPECT_FALSE(allowed("app/stats/hash_stats.cpp", "app/reference/reference_trace.h"));
   EXPECT_TRUE(allowed("app/cli/main.cpp", "app/window/window_app.h"));
   EXPECT_TRUE(allowed("app/cli/main.cpp", "app/cli/export_command.h"));
-  EXPECT_TRUE(allowed("stages/monte_carlo/trace.cpp", "stages/shared_inputs/light_input.h"));
+  EXPECT_TRUE(allowed("stages/monte_carlo/trace/trace.cpp", "stages/shared_inputs/light/light_input.h"));
   EXPECT_TRUE(allowed("app/gl/gpu_scene.h", "app/scene/scene.h"));
   EXPECT_TRUE(allowed("app/gl/gpu_layout.h", "shaders/shared/light_block.h"));
+  // A stage's layout header sits in its stage folder: a layer below the stages may not read it.
+  EXPECT_FALSE(allowed("app/gl/gpu_layout.h", "stages/monte_carlo/classify/classify_layout.h"));
+  EXPECT_TRUE(allowed("stages/monte_carlo/trace/trace.cpp",
+                      "stages/monte_carlo/classify/classify_layout.h"));
+}
+
+// The GLSL side of the same order: a shared library or header in shaders/shared/ includes only
+// shaders/shared/ (a stage's layout header, in its stage folder, is read by that stage's
+// shaders and its peers', never by the shared code every stage includes). Resolved the way
+// app/gl/shader_program.cpp does: the including file's folder, then shaders/, then the source root.
+TEST(Layers, SharedShadersIncludeOnlySharedFiles) {
+  const fs::path root = PENUMBRA_SOURCE_DIR;
+  const std::regex directive(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  int includes = 0;
+  for (const auto& entry : fs::directory_iterator(root / "shaders/shared")) {
+    if (!entry.is_regular_file()) continue;
+    const std::string from = fs::relative(entry.path(), root).generic_string();
+    std::ifstream file(entry.path());
+    std::string text;
+    for (int line = 1; std::getline(file, text); ++line) {
+      std::smatch match;
+      if (!std::regex_search(text, match, directive)) continue;
+      std::string to;
+      for (const fs::path& base : {fs::path(from).parent_path(), fs::path("shaders"), fs::path()})
+        if (fs::is_regular_file(root / base / match[1].str())) {
+          to = (base / match[1].str()).lexically_normal().generic_string();
+          break;
+        }
+      ++includes;
+      EXPECT_EQ(to.rfind("shaders/shared/", 0), 0u)
+          << from << ":" << line << " includes \"" << match[1] << "\" (" << (to.empty() ? "not found" : to)
+          << "): shared shaders include only shaders/shared/";
+    }
+  }
+  EXPECT_GE(includes, 15) << "the scan found too few includes to be reading shaders/shared/";
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "gl/minmax_build.h"
+#include "shared_inputs/minmax/minmax_build.h"
 #include "gl/nbuffer_build.h"
 #include "scene/scene_builtin.h"
 #include "support/gl_test.h"

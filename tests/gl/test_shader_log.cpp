@@ -10,10 +10,10 @@
 #include "support/temp_directory.h"
 
 TEST(ShaderLog, SourceNumbersBecomeFileNames) {
-  const std::vector<std::string> files{"trace.comp", "shared/frame.glsl", "shared/trace_ray.glsl"};
+  const std::vector<std::string> files{"monte_carlo/trace/trace.comp", "shared/frame.glsl", "shared/trace_ray.glsl"};
   // Line numbers carry the file: file index x 100000 + line (shader_program.cpp).
   EXPECT_EQ(nameSourcesInLog("0:200014(3): error: `x' undeclared\n0:5(1): warning", files),
-            "shared/trace_ray.glsl:14:3: error: `x' undeclared\ntrace.comp:5:1: warning");
+            "shared/trace_ray.glsl:14:3: error: `x' undeclared\nmonte_carlo/trace/trace.comp:5:1: warning");
   EXPECT_EQ(nameSourcesInLog("1(100007) : error C0000: syntax", files),
             "shared/frame.glsl:7 : error C0000: syntax");
   EXPECT_EQ(nameSourcesInLog("0:900001(1): error", files), "0:900001:1: error");  // unknown

@@ -25,10 +25,10 @@ TEST(ShaderProgramDelete, CurrentProgramIsUnboundBeforeItIsDeleted) {
         }
       },
       nullptr);
-  ShaderProgram imgui({{GL_COMPUTE_SHADER, "depth_bounds.comp"}});  // stands for ImGui's own
+  ShaderProgram imgui({{GL_COMPUTE_SHADER, "shared/depth_bounds.comp"}});  // stands for ImGui's own
   for (bool reload : {false, true}) {
     auto program = std::make_unique<ShaderProgram>(
-        std::vector<ShaderProgram::Source>{{GL_COMPUTE_SHADER, "depth_bounds.comp"}});
+        std::vector<ShaderProgram::Source>{{GL_COMPUTE_SHADER, "shared/depth_bounds.comp"}});
     program->use();
     if (reload) {
       std::string log;

@@ -45,7 +45,7 @@ TEST(ShaderVariants, CombinationsAreTheCrossProduct) {
 TEST(ShaderVariants, AnUndeclaredVariantIsRefused) {
   // No GL context is needed: operator[] only creates the program object; it is built on
   // first use.
-  ShaderVariants variants({{GL_COMPUTE_SHADER, "trace.comp"}}, {"#define A 1\n"});
+  ShaderVariants variants({{GL_COMPUTE_SHADER, "monte_carlo/trace/trace.comp"}}, {"#define A 1\n"});
   EXPECT_NO_THROW(variants["#define A 1\n"]);
   EXPECT_THROW(variants["#define A 2\n"], std::logic_error);
 }

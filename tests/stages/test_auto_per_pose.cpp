@@ -1,4 +1,4 @@
-// `auto` on an animated scene (stages/shared_inputs/auto_settings.h,
+// `auto` on an animated scene (stages/shared_inputs/light/auto_settings.h,
 // docs/decisions/140-auto-per-pose.md): its choice at a pose depends on that pose alone. After
 // the poses before it, the settings at time t equal, field for field, those of the static
 // scene at t analysed from scratch; and a pose costs one Embree build and about one ray per
@@ -12,8 +12,8 @@
 #include "scene/animation.h"
 #include "scene/light_frame.h"
 #include "scene/scene_builtin.h"
-#include "shared_inputs/auto_frustum.h"
-#include "shared_inputs/auto_settings.h"
+#include "shared_inputs/light/auto_frustum.h"
+#include "shared_inputs/light/auto_settings.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 //   rays: it finds a non-conservative "lit" wherever the blocked part of the light is wider
 //   than a grid cell, which the tests assert cannot happen.
 // - ExactRegionClassifier (the hierarchy comparison) is NOT independent of the region
-//   formula: it repeats reachableTexels (shaders/shared/classify.glsl, Eq 3.3 / Fig 3.7) in
+//   formula: it repeats reachableTexels (shaders/monte_carlo/classify/classify.glsl, Eq 3.3 / Fig 3.7) in
 //   double precision without the 0.01-texel margin, because what it checks is the min/max
 //   over that region: that the N-buffer and min-max hierarchies bound the exact brute-force
 //   min/max over it. The region itself is checked by the ray walk above.
@@ -413,7 +413,7 @@ namespace {
 // Eq 3.3 iterated on the CPU with exact bounds: at each iteration the closed square of
 // Fig 3.7 at the current zNearMin, in texels, and min/max over every texel inside it, brute
 // force (no hierarchy). Depths in linear light depth [0, 1], as the layers store them.
-// The square is a copy of reachableTexels (shaders/shared/classify.glsl) in double precision
+// The square is a copy of reachableTexels (shaders/monte_carlo/classify/classify.glsl) in double precision
 // and without its 0.01-texel margin (which only grows the GPU's region): this oracle checks
 // the hierarchies' min/max over the region, not the region (the ray walk checks that).
 class ExactRegionClassifier {

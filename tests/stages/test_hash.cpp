@@ -166,7 +166,7 @@ TEST(HashGpu, ToUnitSquareIsExactAndNeverOne) {
                                    glm::uvec4(0xFFFFFF00u, 0xFFFFFF7Fu, 0x80000000u, 0x000000FFu)};
   std::mt19937 random(7);
   for (int i = 0; i < 10000; ++i) words.emplace_back(random(), random(), random(), random());
-  ShaderProgram probe({{GL_COMPUTE_SHADER, "hash_probe.comp"}});
+  ShaderProgram probe({{GL_COMPUTE_SHADER, "tests/hash_probe.comp"}});
   GlBuffer in, out;
   glNamedBufferData(in.id(), GLsizeiptr(words.size() * 16), words.data(), GL_STATIC_DRAW);
   glNamedBufferData(out.id(), GLsizeiptr(words.size() * 16), nullptr, GL_DYNAMIC_READ);

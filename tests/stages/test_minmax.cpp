@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <random>
 
-#include "gl/minmax_build.h"
+#include "shared_inputs/minmax/minmax_build.h"
 #include "scene/scene_builtin.h"
 #include "support/gl_test.h"
 #include "support/random_layers.h"

@@ -382,7 +382,7 @@ TEST(ErrorStage, SignedImageIsMethodMinusReferenceOnReceiversInsideTheMap) {
   EXPECT_GT(counters.at("error.meanAbsInShadow"), 0.05);  // a hard shadow misses the penumbra
   for (const char* name : {"error.rmse", "error.p99", "error.meanSigned"})
     EXPECT_TRUE(std::isfinite(counters.at(name))) << name;
-  // The GPU's statistics (shaders/error*.comp) against plain loops over the images: counts,
+  // The GPU's statistics (shaders/ground_truth/error/error*.comp) against plain loops over the images: counts,
   // max and the percentile exactly (a sort, nearest rank), the sums to summation order.
   std::vector<float> absolutes;
   double sumSq = 0, sumSigned = 0, sumShadow = 0;

@@ -18,7 +18,7 @@
 #include "core/run_control.h"
 #include "scene/light_frame.h"
 #include "scene/scene_builtin.h"
-#include "soft_shadow_maps/ssm_cost.h"
+#include "soft_shadow_maps/ssm/ssm_cost.h"
 #include "support/command.h"
 #include "support/gl_test.h"
 #include "support/temp_directory.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "monte_carlo/trace_steps.h"
+#include "monte_carlo/trace/trace_steps.h"
 #include "scene/scene_builtin.h"
 #include "scene/scene_stress.h"
 #include "support/gl_test.h"

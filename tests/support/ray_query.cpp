@@ -1,7 +1,7 @@
 #include "ray_query.h"
 
 #include "gl_test.h"
-#include "gl/minmax_build.h"
+#include "shared_inputs/minmax/minmax_build.h"
 #include "gl/nbuffer_build.h"
 #include "gl/shader_program.h"
 

@@ -1,4 +1,4 @@
-// The window's texture view on llvmpipe: the GPU mapping (shaders/view.comp) shows exactly
+// The window's texture view on llvmpipe: the GPU mapping (shaders/view/view.comp) shows exactly
 // the bytes the CPU twin (displayRgb8ForView over app/io/colormap.cpp) writes into "PNG as
 // displayed", for every colormap, channel selection, overlay, array layer and integer
 // texture; texel read-back returns what was uploaded; the difference view (A - B) equals the

@@ -124,7 +124,7 @@ void drawCounters(const UiState& state) {
 }
 
 // What the parameters set to `auto` chose for this scene and view, and why
-// (stages/shared_inputs/auto_settings.h; docs/decisions/043-auto-map-resolution.md). Whether there are reasons
+// (stages/shared_inputs/light/auto_settings.h; docs/decisions/043-auto-map-resolution.md). Whether there are reasons
 // to show.
 bool hasAutoReasons(const UiState& state) {
   return state.session.frame && !state.session.frame->autoReasons.empty();

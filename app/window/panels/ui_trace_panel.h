@@ -6,7 +6,7 @@
 // ray's projected path) over views of light-map size (the layers, the N-buffer levels).
 // The steps come from the views' traceSource (ViewState, ui_view_state.h);
 // app/window/views/ui_trace_source.cpp installs the one that reads
-// the recorded steps (stages/monte_carlo/trace_steps.h) (recorded for trace.record_x / record_y, which the window sets from the
+// the recorded steps (stages/monte_carlo/trace/trace_steps.h) (recorded for trace.record_x / record_y, which the window sets from the
 // pick). Another search can install its own:
 //
 //     state.views.traceSource = [](const Frame& frame, glm::ivec2 pixel, int ray) {

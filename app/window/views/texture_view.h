@@ -28,10 +28,10 @@ public:
 
 private:
   ShaderProgram& programFor(const GlTexture& source);
-  ShaderProgram float2D_{{{GL_COMPUTE_SHADER, "view.comp"}}};
-  ShaderProgram floatArray_{{{GL_COMPUTE_SHADER, "view.comp"}}, "#define SOURCE_ARRAY\n"};
-  ShaderProgram uint2D_{{{GL_COMPUTE_SHADER, "view.comp"}}, "#define SOURCE_UINT\n"};
-  ShaderProgram uintArray_{{{GL_COMPUTE_SHADER, "view.comp"}},
+  ShaderProgram float2D_{{{GL_COMPUTE_SHADER, "view/view.comp"}}};
+  ShaderProgram floatArray_{{{GL_COMPUTE_SHADER, "view/view.comp"}}, "#define SOURCE_ARRAY\n"};
+  ShaderProgram uint2D_{{{GL_COMPUTE_SHADER, "view/view.comp"}}, "#define SOURCE_UINT\n"};
+  ShaderProgram uintArray_{{{GL_COMPUTE_SHADER, "view/view.comp"}},
                            "#define SOURCE_UINT\n#define SOURCE_ARRAY\n"};
   GlTexture display_;
   struct Key {

@@ -1,6 +1,6 @@
 #include "window/views/ui_trace_source.h"
-#include "monte_carlo/trace_steps.h"
-#include "shared_inputs/auto_params.h"
+#include "monte_carlo/trace/trace_steps.h"
+#include "shared_inputs/light/auto_params.h"
 
 #include <cstdio>
 

@@ -5,7 +5,7 @@
 //                                          (uncovered texels give 0 - 1 < 0: "negative -> 0")
 //   filter.visibility - trace.visibility   what the filter changed
 //   trace.visibility - reference.visibility  the method's error (as the `error` stage)
-// The difference is computed on the GPU (shaders/view_difference.comp) into a float texture
+// The difference is computed on the GPU (shaders/view/view_difference.comp) into a float texture
 // that the view then shows, reads back, autofits and exports like any output. It starts
 // with the diverging colormap, symmetric about 0.
 #pragma once
@@ -28,7 +28,7 @@ public:
 
 private:
   ShaderProgram& programFor(const GlTexture& a, const GlTexture& b, GLenum resultFormat);
-  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "view_difference.comp"}}};
+  ShaderVariants programs_{{{GL_COMPUTE_SHADER, "view/view_difference.comp"}}};
   GlTexture result_;
   struct Key {
     GLuint a = 0, b = 0;

@@ -1,6 +1,6 @@
 // How one view maps a stage output to colours (RenderDoc's texture viewer controls): channel
 // toggles, black/white point, colormap, NaN/Inf/negative overlay, array layer. The GPU
-// mapping (shaders/view.comp via app/window/views/texture_view.h) and this CPU twin (used by "PNG as
+// mapping (shaders/view/view.comp via app/window/views/texture_view.h) and this CPU twin (used by "PNG as
 // displayed") must agree byte for byte; tests/window/test_window_view.cpp checks it.
 #pragma once
 #include <array>

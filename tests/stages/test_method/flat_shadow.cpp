@@ -7,7 +7,7 @@
 #include "gl/gpu_layout.h"
 #include "gl/shader_program.h"
 #include "shared/screen_pass_layout.h"
-#include "tests/stages/test_method/flat_shadow_layout.h"
+#include "flat_shadow_layout.h"
 
 static_assert(FLAT_SHADOW_WS_POSITION_UNIT < gpu::kTextureUnits);
 static_assert(FLAT_SHADOW_VISIBILITY_IMAGE < gpu::kImageUnits);

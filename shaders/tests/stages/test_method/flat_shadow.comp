@@ -3,7 +3,7 @@
 // occluder: every receiver point sees the fraction `level` of the light, and pixels with no
 // surface (w = 0 in the G-buffer) see all of it. One pixel per invocation.
 #include "../../../shared/screen_pass.glsl"
-#include "flat_shadow_layout.h"
+#include "tests/stages/test_method/flat_shadow_layout.h"
 layout(binding = FLAT_SHADOW_WS_POSITION_UNIT) uniform sampler2D wsPositionImage;
 layout(binding = FLAT_SHADOW_VISIBILITY_IMAGE, r32f) uniform writeonly image2D visibilityImage;
 layout(location = FLAT_SHADOW_LEVEL_LOCATION) uniform float uLevel;  // flat_shadow.level

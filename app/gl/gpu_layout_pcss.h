@@ -1,9 +1,0 @@
-// PCSS block (shaders/shared/pcss_layout.h) seen from C++, checked.
-#pragma once
-#include "gl/gpu_layout.h"
-
-namespace gpu {
-#include "shared/pcss_layout.h"
-}  // namespace gpu
-
-static_assert(sizeof(gpu::PcssParams) == 16);
