@@ -24,6 +24,10 @@ struct Frame {
   const Pipeline& pipeline;  // resolves input slots to producers; not for reading parameters
   int eyeWidth = 512, eyeHeight = 512;
   std::uint32_t frameKey = 0;  // scrambles the hash per frame (thesis Appendix A "key")
+  // The window's timeline is playing this run (set by the window's run only; false for every
+  // export, script, lesson, bench and CLI run): a stage may keep a policy choice it made at an
+  // earlier pose instead of deciding it again (light.auto_while_playing).
+  bool timelinePlaying = false;
   // CPU copy of the `light` stage's output (written by that stage; for the CPU-side readers:
   // reference, views, the trace panel).
   LightFrame light{};

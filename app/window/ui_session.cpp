@@ -129,6 +129,7 @@ RunKey Session::currentKey(std::vector<std::string> requested) const {
   key.time = time;
   key.shaders = shaderReloads;
   key.calibration = rendererCalibrationGeneration();
+  key.playing = timelinePlaying;
   std::sort(requested.begin(), requested.end());
   key.requested = std::move(requested);
   return key;
@@ -175,6 +176,12 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
   lastRun = key;  // a failing run is not retried until something changes
   clearRunCancel();  // Esc cancels the run under way, not the next one
   markRunStart();    // the "running" overlay's clock (panels/ui_run_budget.h)
+  // Only this run sees the flag: an export or script run through the same frame does not.
+  struct PlayingFlag {
+    Frame& frame;
+    ~PlayingFlag() { frame.timelinePlaying = false; }
+  } playingFlag{*frame};
+  frame->timelinePlaying = timelinePlaying;
   try {
     pipeline.run(*frame, key.requested);
   } catch (const RunBudgetExceeded& error) {
@@ -199,6 +206,7 @@ bool Session::runIfNeeded(glm::ivec2 viewRegion, const std::vector<std::string>&
 
 std::string Session::runAll() {
   if (!frame) return "no frame yet";
+  frame->timelinePlaying = false;  // every stage decides as for an export
   try {
     pipeline.run(*frame);
   } catch (const std::exception& error) {

@@ -32,6 +32,7 @@ struct RunKey {
   double time = 0;                     // seconds into the scene's animation
   int shaders = 0;                     // shader reloads
   int calibration = 0;                 // rendererCalibrationGeneration(): `auto` re-decides
+  bool playing = false;  // timelinePlaying: `auto` holds while playing, so Pause runs again
   std::vector<std::string> requested;  // the outputs shown (Pipeline::run's `requested`), sorted
   bool operator==(const RunKey&) const = default;
 };
@@ -56,6 +57,9 @@ struct Session {
   int sceneLoads = 0, shaderReloads = 0;
   bool runEveryFrame = false;   // for timing: run even when the key has not changed
   bool previewing = false;      // camera moving: eye at 1/previewDivisor resolution
+  // The timeline plays live (timelinePlaysLive, ui_timeline.h; set by the main loop each UI
+  // frame): runIfNeeded passes it to its run as Frame::timelinePlaying; runAll never does.
+  bool timelinePlaying = false;
   int previewDivisor = 1;       // chosen so a preview run takes about kPreviewMs
   double fullResolutionMs = 0;  // the last run at full resolution
   int pipelineRuns = 0;

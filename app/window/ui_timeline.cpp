@@ -9,6 +9,10 @@
 #include "window/ui_session.h"
 #include "window/ui_state.h"
 
+bool timelinePlaysLive(const Session& session, bool scripted) {
+  return session.playing && session.animated() && !scripted;
+}
+
 std::string advanceTimeline(Session& session, TimelineClock& clock, double now) {
   const double elapsed = clock.last < 0 ? 0 : now - clock.last;
   clock.last = now;

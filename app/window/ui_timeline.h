@@ -18,6 +18,12 @@ struct TimelineClock {
 // Returns "" or why the new pose was refused (playing then stops).
 std::string advanceTimeline(Session& session, TimelineClock& clock, double nowSeconds);
 
+// Whether the timeline plays live: playing an animated scene, not under a script (whose
+// exports are of full-size frames at their own times) nor a recording (which stops play and
+// sets each time itself). The main loop previews meanwhile, and the runs carry
+// Frame::timelinePlaying, so `auto` keeps its last choices (light.auto_while_playing).
+bool timelinePlaysLive(const Session& session, bool scripted);
+
 // One frame step: 1/24 s, the frame rate of exported animations.
 inline constexpr double kTimelineStep = 1.0 / 24;
 

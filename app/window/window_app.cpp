@@ -396,7 +396,8 @@ struct FrameLoop {
     else if (state.currentKey() != before) draggingSlider = true;
     // A playing timeline moves the scene every frame: it previews like a drag (the full
     // size runs again on Pause). Not under a script, whose exports are of full-size frames.
-    const bool playing = state.session.playing && state.session.animated() && !runner;
+    const bool playing = timelinePlaysLive(state.session, runner != nullptr);
+    state.session.timelinePlaying = playing;  // `auto` holds its choices (light.auto_while_playing)
     state.session.setCameraMoving(moving || draggingSlider || state.script.movesCamera || playing);
     ImGui::Render();
     ++framesRendered;

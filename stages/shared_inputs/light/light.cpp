@@ -9,6 +9,7 @@
 #include "shared_inputs/light/auto_params.h"
 
 #include <cstdio>
+#include <string>
 #include "core/frame.h"
 #include "core/pipeline.h"
 #include "gl/gpu_layout.h"
@@ -104,6 +105,19 @@ public:
             "xxhash32: a cheap integer hash in common use (Jarzynski & Olano 2020). The "
             "hash_stats stage measures each one.",
             {kHashKindNames.begin(), kHashKindNames.end()}, int(HashKind::Md5_16)),
+        Param::choice(
+            "auto_while_playing",
+            "What `auto` (resolution, layers, the trace's rays) does while the window's "
+            "timeline plays. held (the default): it keeps the choices made at the pose where "
+            "playing started (or its last run before), as long as the scene's objects and "
+            "the eye size stay the same; the frustum fit (fov_degrees auto) still follows "
+            "every pose. Its choices are a policy, not part of any method: a map size that "
+            "switches between two frames is a jump in the picture that no method made "
+            "(docs/temporal.md), and the analysis is most of this stage's time (an Embree "
+            "build and a ray per probe point every pose, docs/decisions/140). every_frame: "
+            "decided anew at every pose. Pause, step, scrub, exports, scripts, lessons, the "
+            "bench and the CLI always decide at their pose (docs/decisions/141).",
+            {"every_frame", "held"}, 1),
     };
   }
   std::string name() const override { return "light"; }
@@ -125,12 +139,28 @@ public:
     const LightFrame& l = frame.light;
     // `auto` (stages/shared_inputs/light/auto_settings.h): the resolution and layers this scene and view
     // need, and the rays per pixel the trace takes when its own `rays` is auto.
+    // While the timeline plays (light.auto_while_playing held), the last choice stands when
+    // it was made for the same objects, eye size and normal offset (docs/decisions/141).
+    const HeldFor heldFor{scene.name, scene.objects.size(), scene.triangleCount(),
+                          frame.eyeWidth, frame.eyeHeight, param("normal_offset").asFloat()};
+    const bool hold = frame.timelinePlaying && param("auto_while_playing").asInt() == 1 &&
+                      decided_ && heldFor == decidedFor_;
     const AutoSettingsWork workBefore = autoSettingsWork();
-    chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight,
-                                 param("normal_offset").asFloat());
+    if (!hold) {
+      chosen_ = chooseAutoSettings(scene, frame.light, frame.eyeWidth, frame.eyeHeight,
+                                   param("normal_offset").asFloat());
+      decided_ = true, decidedFor_ = heldFor, decidedAt_ = scene.time;
+    }
     const AutoSettingsWork workAfter = autoSettingsWork();
     const AutoSettings& chosen = chosen_;
     frame.autoReasons = chosen.reasons;
+    if (hold) {
+      char held[96];
+      std::snprintf(held, sizeof held, "auto: held while playing (decided at t = %.2f s)",
+                    decidedAt_);
+      frame.autoReasons.insert(frame.autoReasons.begin(), held);
+    }
+    frame.counters["auto.held"] = hold ? 1 : 0;
     if (fov.automatic) frame.autoReasons.push_back(fit.reason);
     const std::string fovWarning = fov.automatic ? fit.warning : fixedFovWarning(fit, fov.value);
     if (!fovWarning.empty()) {
@@ -185,7 +215,18 @@ public:
   const AutoSettings& chosen() const { return chosen_; }
 
 private:
+  // What a choice was made for: it is held only for the same of each.
+  struct HeldFor {
+    std::string scene;
+    size_t objects = 0, triangles = 0;
+    int eyeWidth = 0, eyeHeight = 0;
+    float normalOffset = 0;
+    bool operator==(const HeldFor&) const = default;
+  };
   AutoSettings chosen_;  // what `auto` chose in the last run
+  bool decided_ = false;
+  HeldFor decidedFor_;
+  double decidedAt_ = 0;  // the scene time of that choice
 };
 
 }  // namespace
