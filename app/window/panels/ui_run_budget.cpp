@@ -74,29 +74,38 @@ void releaseCapture(Overlay& overlay) {
   overlay.lists.clear();
 }
 
-// The last frame ImGui rendered (what the screen shows), copied; the commands of textures
-// deleted since (a view's texture that a stage reallocated) are dropped.
+// A view's texture still alive and still 2D (a name a stage freed may come back as another
+// kind of texture, which ImGui's GL_TEXTURE_2D bind would refuse).
+bool live2D(ImTextureID id) {
+  const GLuint name = GLuint(reinterpret_cast<intptr_t>(id));
+  if (!glIsTexture(name)) return false;
+  GLint target = 0;
+  glGetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
+  return target == GL_TEXTURE_2D;
+}
+
+// Drops the commands whose texture is gone: ImGui's renderer binds a command's texture even
+// when it draws no element, so a dropped command draws nothing with the font atlas bound.
+// Checked again before every overlay frame, since the run may free a view's texture (a stage
+// reallocating its output) after the capture.
+void dropDeadTextures(std::vector<ImDrawList*>& lists) {
+  const ImTextureID font = ImGui::GetIO().Fonts->TexID;
+  for (ImDrawList* list : lists)
+    for (ImDrawCmd& command : list->CmdBuffer)
+      if (command.UserCallback || (command.TextureId != font && !live2D(command.TextureId))) {
+        command.ElemCount = 0;
+        command.UserCallback = nullptr;
+        command.TextureId = font;
+      }
+}
+
+// The last frame ImGui rendered (what the screen shows), copied.
 void captureLastFrame(Overlay& overlay) {
   releaseCapture(overlay);
   const ImDrawData* data = ImGui::GetDrawData();
   if (!data || !data->Valid) return;
-  const ImTextureID font = ImGui::GetIO().Fonts->TexID;
-  // A view's texture still alive and still 2D (a name a stage freed may come back as
-  // another kind of texture, which ImGui's GL_TEXTURE_2D bind would refuse).
-  auto live2D = [](ImTextureID id) {
-    const GLuint name = GLuint(reinterpret_cast<intptr_t>(id));
-    if (!glIsTexture(name)) return false;
-    GLint target = 0;
-    glGetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
-    return target == GL_TEXTURE_2D;
-  };
-  for (int i = 0; i < data->CmdListsCount; ++i) {
-    ImDrawList* copy = data->CmdLists[i]->CloneOutput();
-    for (ImDrawCmd& command : copy->CmdBuffer)
-      if (command.UserCallback || (command.TextureId != font && !live2D(command.TextureId)))
-        command.ElemCount = 0, command.UserCallback = nullptr;
-    overlay.lists.push_back(copy);
-  }
+  for (int i = 0; i < data->CmdListsCount; ++i)
+    overlay.lists.push_back(data->CmdLists[i]->CloneOutput());
   overlay.displayPos = data->DisplayPos;
   overlay.displaySize = data->DisplaySize;
   overlay.framebufferScale = data->FramebufferScale;
@@ -104,6 +113,7 @@ void captureLastFrame(Overlay& overlay) {
 
 void renderCapture(Overlay& overlay) {
   if (overlay.lists.empty()) return;
+  dropDeadTextures(overlay.lists);
   ImDrawData data;
   data.Valid = true;
   data.CmdLists = overlay.lists.data();
