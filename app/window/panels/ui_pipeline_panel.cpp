@@ -141,7 +141,15 @@ void drawStage(UiState& state, Stage& stage, int number) {
   for (const Param& param : stage.params()) names = std::max(names, ImGui::CalcTextSize(param.key.c_str()).x);
   const float avail = ImGui::GetContentRegionAvail().x;
   const float rest = avail - names - buttonsWidth({"(?)"}) - ImGui::GetStyle().ItemInnerSpacing.x;
-  ImGui::PushItemWidth(std::min(std::max(rest, uiPixels(80)), 0.55f * avail));  // else the name goes above
+  // A choice's widest text (" (auto)" included) fits its combo; where that leaves too little
+  // room beside a long name, drawParam puts the name above.
+  float choices = uiPixels(80);
+  for (const Param& param : stage.params())
+    if (param.type == Param::Type::Enum)
+      for (const std::string& option : param.options)
+        choices = std::max(choices, ImGui::CalcTextSize((option + " (auto)").c_str()).x +
+                                        ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().FramePadding.x);
+  ImGui::PushItemWidth(std::min(std::max(rest, choices), std::max(0.55f * avail, choices)));
   for (Param& param : stage.params())
     if (drawParam(param, state.panelMemory.handValues, autoChosenValue(stage.name(), param, state.session.frame.get()))) {
       state.status = stage.name() + "." + param.key + " = " + param.toString();
