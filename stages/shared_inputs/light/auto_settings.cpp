@@ -1,9 +1,8 @@
 #include "shared_inputs/light/auto_settings.h"
 
 #include "gl/renderer_calibration.h"
+#include "shared_inputs/light/scene_rays.h"
 #include "shared_inputs/weighted_percentile.h"
-
-#include <embree3/rtcore.h>
 
 #include <algorithm>
 #include <atomic>
@@ -18,71 +17,6 @@
 #include <thread>
 
 namespace {
-
-// Rays this thread handed to Embree (SceneRays::hit runs on the probe threads).
-thread_local std::uint64_t raysOnThisThread = 0;
-
-// One Embree device for the program's analyses (its threads and allocators outlive each
-// scene built on it).
-RTCDevice embreeDevice() {
-  static RTCDevice device = rtcNewDevice(nullptr);
-  return device;
-}
-
-// Every triangle of the scene (receivers too: the penumbra falls on them), with which
-// geometry ids are occluders. One level, built from the posed triangles as they are: a new
-// pose is a new build (docs/decisions/140-auto-per-pose.md: a two-level scene refitted per
-// pose, or instances of each mesh at rest, would answer some rays differently).
-struct SceneRays {
-  RTCScene scene = nullptr;
-  std::vector<bool> occluder;  // by geometry id
-  explicit SceneRays(const Scene& source) {
-    RTCDevice device = embreeDevice();
-    scene = rtcNewScene(device);
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-    for (const SceneObject& object : source.objects) {
-      const Mesh& mesh = object.mesh;
-      RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-          std::max<size_t>(mesh.positions.size(), 1)));
-      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-          mesh.triangleCount()));
-      for (size_t i = 0; i < mesh.positions.size(); ++i)
-        for (int c = 0; c < 3; ++c) vertices[3 * i + c] = mesh.positions[i][c];
-      for (size_t i = 0; i < mesh.indices.size(); ++i) indices[i] = mesh.indices[i];
-      rtcCommitGeometry(geometry);
-      occluder.push_back(!object.receiverOnly);
-      rtcAttachGeometry(scene, geometry);  // ids 0, 1, ... in order
-      rtcReleaseGeometry(geometry);
-    }
-    rtcCommitScene(scene);
-  }
-  SceneRays(const SceneRays&) = delete;
-  SceneRays& operator=(const SceneRays&) = delete;
-  ~SceneRays() { rtcReleaseScene(scene); }
-  // Nearest hit along origin + t direction, t in (tNear, inf): t (inf: none), geometry id and,
-  // when asked, the geometric normal there.
-  float hit(const glm::vec3& origin, const glm::vec3& direction, float tNear, unsigned& geometry,
-            glm::vec3* normal = nullptr) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit query{};
-    query.ray.org_x = origin.x; query.ray.org_y = origin.y; query.ray.org_z = origin.z;
-    query.ray.dir_x = direction.x; query.ray.dir_y = direction.y; query.ray.dir_z = direction.z;
-    query.ray.tnear = tNear;
-    query.ray.tfar = std::numeric_limits<float>::infinity();
-    query.ray.mask = 0xffffffffu;
-    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene, &context, &query);
-    ++raysOnThisThread;
-    geometry = query.hit.geomID;
-    if (normal) *normal = glm::vec3(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
-    return geometry == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity()
-                                               : query.ray.tfar;
-  }
-};
 
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0;
@@ -256,9 +190,9 @@ std::vector<Part> inChunks(size_t count, const Work& work, const Part& initial =
   std::atomic<size_t> next{0};
   const auto worker = [&] {
     for (size_t c = next++; c < chunks; c = next++) {
-      const std::uint64_t before = raysOnThisThread;
+      const std::uint64_t before = sceneRaysOnThisThread();
       work(c * count / chunks, (c + 1) * count / chunks, parts[c]);
-      parts[c].rays = raysOnThisThread - before;
+      parts[c].rays = sceneRaysOnThisThread() - before;
     }
   };
   const size_t threads = std::clamp<size_t>(count / kItemsPerThreadAtLeast, 1,
@@ -389,10 +323,10 @@ ProbeSet castProbes(const Scene& scene, const SceneRays& rays, const LightFrame&
   // count the most crossings, no other probe walks them (the same maximum, fewer rays).
   const size_t first = sampled.size() / kChunks;
   ProbeSet all;
-  const std::uint64_t raysBefore = raysOnThisThread;
+  const std::uint64_t raysBefore = sceneRaysOnThisThread();
   for (size_t i = 0; i < first; ++i)
     probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, all);
-  all.rays = raysOnThisThread - raysBefore;
+  all.rays = sceneRaysOnThisThread() - raysBefore;
   ProbeSet initial;
   if (all.depthComplexity == kMostCrossings) initial.depthComplexity = kMostCrossings;
   for (const ProbeSet& part : inChunks<ProbeSet>(
