@@ -76,22 +76,29 @@ std::string resolve(const fs::path& root, const std::string& from, const std::st
   return "";
 }
 
+// Calls found(line, name) for every `#include "name"` of one file (C++ or GLSL).
+template <class Found>
+void forEachInclude(const fs::path& file, const Found& found) {
+  static const std::regex directive(R"re(^\s*#\s*include\s*"([^"]+)")re");
+  std::ifstream in(file);
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    std::smatch match;
+    if (std::regex_search(text, match, directive)) found(line, match[1].str());
+  }
+}
+
 std::vector<Include> includesIn(const fs::path& root) {
   std::vector<Include> all;
-  const std::regex directive(R"re(^\s*#\s*include\s*"([^"]+)")re");
   for (const char* top : {"app", "stages"})
     for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
       const std::string ext = entry.path().extension().string();
       if (!entry.is_regular_file() || (ext != ".h" && ext != ".cpp")) continue;
       const std::string from = fs::relative(entry.path(), root).generic_string();
-      std::ifstream file(entry.path());
-      std::string text;
-      for (int line = 1; std::getline(file, text); ++line) {
-        std::smatch match;
-        if (!std::regex_search(text, match, directive)) continue;
-        const std::string to = resolve(root, from, match[1]);
+      forEachInclude(entry.path(), [&](int line, const std::string& name) {
+        const std::string to = resolve(root, from, name);
         if (!to.empty()) all.push_back({from, to, line});
-      }
+      });
     }
   return all;
 }
@@ -147,27 +154,22 @@ TEST(Layers, TheRuleRefusesUpwardAndPeerIncludes) {
 // app/gl/shader_program.cpp does: the including file's folder, then shaders/, then the source root.
 TEST(Layers, SharedShadersIncludeOnlySharedFiles) {
   const fs::path root = PENUMBRA_SOURCE_DIR;
-  const std::regex directive(R"re(^\s*#\s*include\s*"([^"]+)")re");
   int includes = 0;
   for (const auto& entry : fs::directory_iterator(root / "shaders/shared")) {
     if (!entry.is_regular_file()) continue;
     const std::string from = fs::relative(entry.path(), root).generic_string();
-    std::ifstream file(entry.path());
-    std::string text;
-    for (int line = 1; std::getline(file, text); ++line) {
-      std::smatch match;
-      if (!std::regex_search(text, match, directive)) continue;
+    forEachInclude(entry.path(), [&](int line, const std::string& name) {
       std::string to;
       for (const fs::path& base : {fs::path(from).parent_path(), fs::path("shaders"), fs::path()})
-        if (fs::is_regular_file(root / base / match[1].str())) {
-          to = (base / match[1].str()).lexically_normal().generic_string();
+        if (fs::is_regular_file(root / base / name)) {
+          to = (base / name).lexically_normal().generic_string();
           break;
         }
       ++includes;
       EXPECT_EQ(to.rfind("shaders/shared/", 0), 0u)
-          << from << ":" << line << " includes \"" << match[1] << "\" (" << (to.empty() ? "not found" : to)
+          << from << ":" << line << " includes \"" << name << "\" (" << (to.empty() ? "not found" : to)
           << "): shared shaders include only shaders/shared/";
-    }
+    });
   }
   EXPECT_GE(includes, 15) << "the scan found too few includes to be reading shaders/shared/";
 }
