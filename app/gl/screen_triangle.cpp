@@ -28,7 +28,8 @@ void ScreenTriangle::clearAndDraw(const std::vector<const GlTexture*>& targets,
 }
 
 void ScreenTriangle::drawRect(const std::vector<Target>& targets, glm::ivec2 origin,
-                              glm::ivec2 size, const std::vector<glm::vec4>& clearTo) {
+                              glm::ivec2 size, const std::vector<glm::vec4>& clearTo,
+                              const GlTexture* depth) {
   constexpr int kMaxTargets = 8;  // GL 4.5 guarantees 8 draw buffers
   if (targets.empty() || targets.size() > kMaxTargets)
     throw std::invalid_argument("ScreenTriangle: 1 to 8 targets");
@@ -44,11 +45,17 @@ void ScreenTriangle::drawRect(const std::vector<Target>& targets, glm::ivec2 ori
       glNamedFramebufferTextureLayer(framebuffer_.id(), attachment, texture, 0, target.layer);
     buffers[i] = attachment;
   }
+  glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, depth ? depth->id() : 0, 0);
   glNamedFramebufferDrawBuffers(framebuffer_.id(), GLsizei(targets.size()), buffers);
   framebuffer_.checkComplete("screen triangle");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(origin.x, origin.y, size.x, size.y);
-  glDisable(GL_DEPTH_TEST);
+  if (depth) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+  } else {
+    glDisable(GL_DEPTH_TEST);
+  }
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
@@ -57,5 +64,9 @@ void ScreenTriangle::drawRect(const std::vector<Target>& targets, glm::ivec2 ori
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+  if (depth) {
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

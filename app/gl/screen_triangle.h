@@ -43,13 +43,20 @@ public:
     drawRect({{&target, layer}}, origin, size);
   }
 
+  // The same with `depth` as the depth attachment, written with each fragment's depth
+  // whatever is there (GL_ALWAYS): a pass that rewrites a depth layer (the risers pass).
+  void drawRectWithDepth(const GlTexture& target, const GlTexture& depth, glm::ivec2 origin,
+                         glm::ivec2 size) {
+    drawRect({{&target, -1}}, origin, size, {}, &depth);
+  }
+
 private:
   struct Target {
     const GlTexture* texture;
     int layer;  // -1: the whole texture (not layered)
   };
   void drawRect(const std::vector<Target>& targets, glm::ivec2 origin, glm::ivec2 size,
-                const std::vector<glm::vec4>& clearTo = {});
+                const std::vector<glm::vec4>& clearTo = {}, const GlTexture* depth = nullptr);
   GlFramebuffer framebuffer_;
   GLuint vertexArray_ = 0;  // empty: core profile needs one bound to draw
 };

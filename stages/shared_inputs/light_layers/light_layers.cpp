@@ -15,6 +15,7 @@
 #include "core/frame.h"
 #include "shared_inputs/light/light_input.h"
 #include "gl/gpu_layout.h"
+#include "gl/screen_triangle.h"
 #include "gl/shader_program.h"
 #include "shared_inputs/light_layers/light_layers_layout.h"
 
@@ -46,9 +47,6 @@ public:
                        "over the texel's footprint.",
                        true),
     };
-  }
-  ~LightLayersStage() override {
-    if (risersVertexArray_) glDeleteVertexArrays(1, &risersVertexArray_);
   }
   LightLayersStage(const LightLayersStage&) = delete;
   LightLayersStage& operator=(const LightLayersStage&) = delete;
@@ -111,30 +109,13 @@ public:
     glCopyImageSubData(nearLayer.id(), GL_TEXTURE_2D, 0, origin.x, origin.y, 0,
                        nearRasterized_.id(), GL_TEXTURE_2D, 0, origin.x, origin.y, 0, extent.x,
                        extent.y, 1);
-    glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, nearLayer.id(), 0);
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, far.id(), 0);
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT1, 0, 0);
-    glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0);
-    framebuffer_.checkComplete("light_layers risers");
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-    glViewport(origin.x, origin.y, extent.x, extent.y);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
     risers_.use();
     glBindTextureUnit(RISERS_NEAR_UNIT, nearRasterized_.id());
     glBindTextureUnit(RISERS_FAR_UNIT, farRasterized_.id());
     glBindTextureUnit(RISERS_SLOPE_UNIT, farSlope_.id());
     glTextureBarrier();
-    if (!risersVertexArray_) glCreateVertexArrays(1, &risersVertexArray_);
-    glBindVertexArray(risersVertexArray_);  // empty: the triangle's corners from gl_VertexID
-    glDrawArrays(GL_TRIANGLES, 0, 3);       // shaders/shared/screen_triangle.vert
-    glBindVertexArray(0);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // Far as the colour, near as the depth (each fragment's, whatever was there).
+    screen_.drawRectWithDepth(far, nearLayer, origin, extent);
   }
 
 private:
@@ -187,7 +168,7 @@ private:
   GlTexture nearRasterized_;  // the near layer as rasterized (a copy), which the risers read
   ShaderProgram risers_{{{GL_VERTEX_SHADER, "shared/screen_triangle.vert"},
                          {GL_FRAGMENT_SHADER, "shared_inputs/light_layers/light_layers_risers.frag"}}};
-  GLuint risersVertexArray_ = 0;  // empty: core profile needs one bound to draw
+  ScreenTriangle screen_;
 };
 
 }  // namespace
