@@ -1,6 +1,7 @@
 #include "shared_inputs/light/auto_settings.h"
 
 #include "gl/renderer_calibration.h"
+#include "shared_inputs/light/occluder_image.h"
 #include "shared_inputs/light/scene_rays.h"
 #include "shared_inputs/weighted_percentile.h"
 
@@ -212,6 +213,7 @@ void appendTo(std::vector<T>& to, const std::vector<T>& from) {
 // What the probes of some of the occluders' triangles measured (steps 1-2).
 struct ProbeSet {
   std::vector<double> widthsWorld, texelsPerResolution, widthsPixels, areasPixels;
+  std::vector<unsigned> objects;  // the scene object each of those probes lies on
   // Step 4's texels per unit resolution, divided by how many more than kPenumbraTexels the
   // normal offset's lift asks for.
   std::vector<double> resolvingTexelsPerResolution;
@@ -225,6 +227,7 @@ struct ProbeSet {
     appendTo(resolvingTexelsPerResolution, more.resolvingTexelsPerResolution);
     appendTo(widthsPixels, more.widthsPixels);
     appendTo(areasPixels, more.areasPixels);
+    appendTo(objects, more.objects);
     appendTo(inView, more.inView);
     depthComplexity = std::max(depthComplexity, more.depthComplexity);
     rays += more.rays;
@@ -243,7 +246,8 @@ inline constexpr int kMostCrossings = 8;
 
 // Steps 1-2 for the 12 probes of one triangle (t = 0, 1/4, 1/2, 3/4 of each edge).
 void probeTriangle(const Scene& scene, const SceneRays& rays, const LightFrame& light,
-                   const ProbeView& v, const Mesh& mesh, size_t t, ProbeSet& out) {
+                   const ProbeView& v, unsigned object, size_t t, ProbeSet& out) {
+  const Mesh& mesh = scene.objects[object].mesh;
   const Camera& camera = scene.camera;
   for (int e = 0; e < 3; ++e)
     for (float along : {0.0f, 0.25f, 0.5f, 0.75f}) {
@@ -306,18 +310,20 @@ void probeTriangle(const Scene& scene, const SceneRays& rays, const LightFrame& 
       const double stripPixels =
           0.25 * glm::length(b - a) * receiverFromLight / occluderDepth / pixelWorld;
       out.areasPixels.push_back(out.widthsPixels.back() * stripPixels);
+      out.objects.push_back(object);
     }
 }
 
 // Steps 1-2 over every stride-th occluder triangle, in scene order.
 ProbeSet castProbes(const Scene& scene, const SceneRays& rays, const LightFrame& light,
                     const ProbeView& view, size_t stride) {
-  std::vector<std::pair<const Mesh*, size_t>> sampled;  // (mesh, first index of the triangle)
+  std::vector<std::pair<unsigned, size_t>> sampled;  // (object, first index of the triangle)
   size_t seen = 0;
-  for (const SceneObject& object : scene.objects) {
+  for (unsigned o = 0; o < scene.objects.size(); ++o) {
+    const SceneObject& object = scene.objects[o];
     if (object.receiverOnly) continue;
     for (size_t t = 0; t + 2 < object.mesh.indices.size(); t += 3)
-      if (seen++ % stride == 0) sampled.emplace_back(&object.mesh, t);
+      if (seen++ % stride == 0) sampled.emplace_back(o, t);
   }
   // The first 1/kChunks of the triangles first, on this thread: where its probes already
   // count the most crossings, no other probe walks them (the same maximum, fewer rays).
@@ -325,7 +331,7 @@ ProbeSet castProbes(const Scene& scene, const SceneRays& rays, const LightFrame&
   ProbeSet all;
   const std::uint64_t raysBefore = sceneRaysOnThisThread();
   for (size_t i = 0; i < first; ++i)
-    probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, all);
+    probeTriangle(scene, rays, light, view, sampled[i].first, sampled[i].second, all);
   all.rays = sceneRaysOnThisThread() - raysBefore;
   ProbeSet initial;
   if (all.depthComplexity == kMostCrossings) initial.depthComplexity = kMostCrossings;
@@ -333,7 +339,7 @@ ProbeSet castProbes(const Scene& scene, const SceneRays& rays, const LightFrame&
            sampled.size() - first,
            [&](size_t begin, size_t end, ProbeSet& out) {
              for (size_t i = first + begin; i < first + end; ++i)
-               probeTriangle(scene, rays, light, view, *sampled[i].first, sampled[i].second, out);
+               probeTriangle(scene, rays, light, view, sampled[i].first, sampled[i].second, out);
            },
            initial))
     all.append(part);
@@ -431,12 +437,41 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   out.affordableResolution = 256;
   while (out.affordableResolution < 2048 && mapBuildWork(out.affordableResolution + 128) <= traceWork)
     out.affordableResolution += 128;
+  // The steep occluders' images (occluder_image.h): the map on which the steep occluders
+  // holding 98% of the penumbra area span kOccluderImageTexels across their narrowest
+  // extent (the others count as wide). Its own need, beside the penumbrae's, and above the
+  // cost cap: a steep occluder drawn by a few texel centres is too bright or too dark in all
+  // of its shadow, not in a part of it.
+  {
+    const std::vector<OccluderImage> objectImages = occluderImages(scene, light);
+    std::vector<double> imageWidths;
+    for (unsigned o : probes.objects)
+      imageWidths.push_back(objectImages[o].depthOverWidth >= kSteepDepthOverWidth
+                                ? objectImages[o].width
+                                : std::numeric_limits<double>::infinity());
+    out.narrowestOccluderImage = weightedPercentile(imageWidths, areasPixels, 0.02);
+  }
+  const double imageNeeded = kOccluderImageTexels / std::max(out.narrowestOccluderImage, 1e-9);
+  out.occluderImageResolution = roundUp(imageNeeded);
+  const int penumbraNeededResolution = out.neededResolution;
+  out.neededResolution = std::max(out.neededResolution, out.occluderImageResolution);
   out.resolution = std::min(out.neededResolution,
-                            std::max(out.affordableResolution, out.halfAreaResolution));
+                            std::max({out.affordableResolution, out.halfAreaResolution,
+                                      out.occluderImageResolution}));
   out.ssmNeed = ssmResolutionNeeded(texelsPerResolution, areasPixels);  // auto_ssm.h
   out.smallestPenumbraWorld = percentile(widthsWorld, 0.02);
   out.smallestPenumbraTexels = percentile(texelsPerResolution, 0.02) * out.resolution;
-  if (out.resolution == out.neededResolution) {
+  if (out.resolution == out.neededResolution && out.occluderImageResolution > penumbraNeededResolution) {
+    out.reasons.push_back(format(
+        "map %.0f: the steep occluders (at least twice as deep along the light's rays as "
+        "their image is wide) holding 98%% of the penumbra area in view span at least %.0f texels across "
+        "their image in the light's map (the narrowest %.2g texels)",
+        out.resolution, kOccluderImageTexels, out.narrowestOccluderImage * out.resolution) +
+        format("; %.0f would give their penumbrae 6 texels, but a steep occluder a few texels "
+               "wide (a sheet nearly edge-on to the light) is too bright or too dark in all of "
+               "its shadow",
+               penumbraNeededResolution));
+  } else if (out.resolution == out.neededResolution) {
     out.reasons.push_back(format(
         "map %.0f: 98%% of the penumbra area in view spans at least 6 texels; the narrowest "
         "penumbra is %.3g world units wide, %.2g texels",
@@ -468,6 +503,12 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
     out.reasons.push_back(format("the %.0f^2 map that would give it %.0f texels exceeds the "
                                  "2048 limit: expect the narrowest shadows too sharp or too bright",
                                  needed, kPenumbraTexels));
+  if (imageNeeded > 2048.0 && out.resolution == 2048)
+    out.reasons.push_back(format("the %.0f^2 map on which the narrowest steep occluder's image "
+                                 "would span %.0f texels exceeds the 2048 limit: at 2048 it spans "
+                                 "%.2g, and its shadow may be too bright or too dark by a texel of that",
+                                 imageNeeded, kOccluderImageTexels,
+                                 out.narrowestOccluderImage * out.resolution));
   out.reasons.push_back(
       format("rays %.0fx%.0f: the narrowest penumbra is %.2g pixels wide", out.raysPerSide,
              out.raysPerSide, out.smallestPenumbraPixels) +

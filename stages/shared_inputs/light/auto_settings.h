@@ -34,7 +34,15 @@
 //    liftTexels / kLiftShiftFraction texels: the normal offset's part along the light's axis
 //    (a lift towards the light), carried along a ray that reaches the receiver at angle a
 //    from the axis, moves the receiver, and its penumbra, by the lift x tan a across the rays
-//    (docs/decisions/150-auto-map-texels-at-a-wide-frustum.md).
+//    (docs/decisions/150-auto-map-texels-at-a-wide-frustum.md). And the steep occluders
+//    themselves (at least twice as deep along the light's axis as their image is wide: a
+//    sheet a few degrees from edge-on to the light's centre): the map on which those holding
+//    98% of the penumbra area (each probe weighs for its object) span kOccluderImageTexels
+//    (12) across their narrowest image in the light's map (occluder_image.h). That need
+//    stands above the cost cap: such an occluder is drawn by the few texel centres it
+//    covers, and the rays from the light's other points cross each texel's error over its
+//    whole depth, too bright or too dark in all of its shadow, not in a part of it
+//    (docs/decisions/156-auto-map-from-the-occluders-images.md).
 // Rasterizing the occluders rounds their outlines to texels, which shifts a penumbra by up
 // to half a texel: with 6 texels per penumbra that is a bias of up to 8% across it.
 // 5. Layers: the depth complexity along the probes' light rays (occluder surfaces crossed
@@ -73,6 +81,10 @@ struct AutoSettings {
   double smallestPenumbraWorld = 0;     // 2nd percentile, world units at the receiver
   double smallestPenumbraTexels = 0;    // the same in texels of the chosen map
   double smallestPenumbraPixels = 0;    // and in eye pixels
+  double narrowestOccluderImage = 0;    // the occluders' image widths in the light's map,
+                                        // 2nd percentile by penumbra area, fraction of the
+                                        // map's side (occluder_image.h)
+  int occluderImageResolution = 256;    // where that spans kOccluderImageTexels
   int depthComplexity = 0;              // most occluder surfaces on one probe's light ray
   int separateOccluderProbes = 0;       // in-view probes whose light ray has free space
                                         // between two occluders (step 5; 0 where the
@@ -82,6 +94,14 @@ struct AutoSettings {
 };
 
 inline constexpr double kPenumbraTexels = 6.0;
+// A steep occluder's image in the light's map (step 4: one at least kSteepDepthOverWidth
+// times as deep along the light's axis as its image is wide) spans at least this many
+// texels across its narrowest extent. On 36 sheets 1-24 degrees from edge-on, leaning
+// either way about two axes (tests/accuracy/test_accuracy_hard_cases.cpp), an image 9.3
+// texels wide left three of the four 10-degree sheets at 0.030 or over (filtered, mean
+// |error| in shadow), 11.1 none; at 12 every sheet's error is at most 0.0294
+// (docs/decisions/156-auto-map-from-the-occluders-images.md).
+inline constexpr double kOccluderImageTexels = 12.0, kSteepDepthOverWidth = 2.0;
 // The smallest map `auto` takes at a 90-degree frustum; a wider one (light.fov_degrees=auto)
 // scales it by tan(fov / 2), so that its texels are no wider in the world (step 4).
 inline constexpr double kMinResolution = 256.0;

@@ -177,10 +177,12 @@ public:
     frame.light.hashKind = param("hash").asInt();
     frame.counters["auto.resolution"] = chosen.resolution;
     // What the resolution weighed: 98% of the penumbra area at 6 texels, the largest map
-    // whose build costs no more than the trace, half the area at 6 texels.
+    // whose build costs no more than the trace, half the area at 6 texels, and the steep
+    // occluders' images at 12 texels (docs/decisions/156).
     frame.counters["auto.res_needed"] = chosen.neededResolution;
     frame.counters["auto.res_affordable"] = chosen.affordableResolution;
     frame.counters["auto.res_half_area"] = chosen.halfAreaResolution;
+    frame.counters["auto.res_occluder_image"] = chosen.occluderImageResolution;
     frame.counters["auto.layers"] = chosen.layers;
     frame.counters["auto.rays_per_side"] = chosen.raysPerSide;
     frame.counters["auto.probes_in_view"] = chosen.probes;
