@@ -190,6 +190,21 @@ TEST(AccuracyHardCases, AutoMapResolvesSteepSheets) {
   EXPECT_LE(compareWithAnalytic(run.read("filter.visibility"), analyticImage(run)).meanAbsInShadow, 0.03);
 }
 
+// A sheet exactly edge-on to the light's centre is in no map (its image is a line): `auto`
+// does not raise the map for it (no size would show it) and warns, naming it; one degree
+// from edge-on it is seen (7.45 texels at 2048) and there is no warning.
+TEST(AccuracyHardCases, AutoWarnsOfASheetEdgeOnToTheLightsCentre) {
+  for (const float degrees : {0.0f, 1.0f}) {
+    PipelineRun run(edgeOnSheet(degrees), {"trace.rays=1"}, 128, 96);
+    const AutoSettings& chosen = lightAutoSettings(*run.frame);
+    bool warned = false;
+    for (const std::string& reason : run.frame->autoReasons)
+      warned = warned || reason.find("WARNING: occluder 'sheet' is edge-on") != std::string::npos;
+    EXPECT_EQ(warned, degrees == 0.0f) << degrees << " degrees";
+    EXPECT_EQ(chosen.resolution, degrees == 0.0f ? 256 : 2048) << degrees << " degrees";
+  }
+}
+
 // Two plates one above the other, the upper smaller and offset (the layout of Atty 2006's
 // Eq 3 overlap case, assets/scenes/two_plates.json): two layers fill the space between them.
 Scene twoPlates(float lowerY, float upperY, glm::vec3 upperOffset) {

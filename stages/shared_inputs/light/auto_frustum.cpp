@@ -19,14 +19,14 @@ double fovFor(double tanX, double tanY, double w, double h) {
   return degreesOfTanHalf(0.5 * std::max(w, h) / depth);
 }
 
-std::string names(const std::vector<std::string>& list) {
+}  // namespace
+
+std::string quotedNames(const std::vector<std::string>& list) {
   std::string out;
   for (size_t i = 0; i < list.size() && i < 6; ++i) out += (i ? ", '" : "'") + list[i] + "'";
   if (list.size() > 6) out += " and " + std::to_string(list.size() - 6) + " more";
   return out;
 }
-
-}  // namespace
 
 FrustumFit fitLightFrustum(const Scene& scene, double maxDegrees) {
   FrustumFit fit;
@@ -88,11 +88,11 @@ FrustumFit fitLightFrustum(const Scene& scene, double maxDegrees) {
   fit.uncovered.insert(fit.uncovered.end(), tooWide.begin(), tooWide.end());
   std::string warning;
   if (!behind.empty())
-    warning += "caster " + names(behind) +
+    warning += "caster " + quotedNames(behind) +
                " reaches through the light's plane: its part next to the plane shadows "
                "receivers outside any light frustum, which read as lit there";
   if (!tooWide.empty())
-    warning += std::string(warning.empty() ? "" : "; ") + "caster " + names(tooWide) +
+    warning += std::string(warning.empty() ? "" : "; ") + "caster " + quotedNames(tooWide) +
                " would need a field of view over " + std::to_string(int(maxDegrees)) +
                " degrees: receivers it shadows outside the light's frustum read as lit";
   if (!warning.empty()) fit.warning = "WARNING: " + warning + " (docs/decisions/135)";

@@ -45,3 +45,6 @@ FrustumFit fitLightFrustum(const Scene& scene, double maxDegrees);
 // The warning for a fixed field of view (light.fov_degrees set by hand): "" when it covers
 // every coverable caster.
 std::string fixedFovWarning(const FrustumFit& fit, double fixedDegrees);
+
+// Up to six names, quoted, for a warning: 'a', 'b' and 3 more.
+std::string quotedNames(const std::vector<std::string>& list);

@@ -90,6 +90,7 @@ struct AutoSettings {
                                         // between two occluders (step 5; 0 where the
                                         // depth complexity is above 2: not traced)
   std::vector<std::string> reasons;     // one sentence per choice
+  std::string warning;                  // a steep occluder no map can show (step 4), or empty
   SsmResolutionNeed ssmNeed;            // ssm.resolution=auto's need (auto_ssm.h; the ssm stage caps it)
 };
 

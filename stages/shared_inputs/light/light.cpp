@@ -163,11 +163,15 @@ public:
     frame.counters["auto.held"] = hold ? 1 : 0;
     if (fov.automatic) frame.autoReasons.push_back(fit.reason);
     const std::string fovWarning = fov.automatic ? fit.warning : fixedFovWarning(fit, fov.value);
-    if (!fovWarning.empty()) {
-      frame.autoReasons.push_back(fovWarning);
+    // The warnings: casters outside any frustum, and a steep occluder no map size shows.
+    std::string warning = fovWarning;
+    if (!chosen.warning.empty()) warning += (warning.empty() ? "" : "\n") + chosen.warning;
+    if (!warning.empty()) {
+      if (!fovWarning.empty()) frame.autoReasons.push_back(fovWarning);
+      if (!chosen.warning.empty()) frame.autoReasons.push_back(chosen.warning);
       static std::string lastWarning;  // printed once per distinct warning (the log)
-      if (fovWarning != lastWarning) std::fprintf(stderr, "%s\n", fovWarning.c_str());
-      lastWarning = fovWarning;
+      if (warning != lastWarning) std::fprintf(stderr, "%s\n", warning.c_str());
+      lastWarning = warning;
     }
     frame.counters["auto.fov_degrees"] = fit.fovDegrees;
     frame.counters["auto.fov_needed"] = fit.neededDegrees;
