@@ -46,10 +46,12 @@ TEST(OccluderImage, MinimumWidthMatchesBruteForce) {
     const glm::dvec2 along(std::cos(angle), std::sin(angle)), across(-along.y, along.x);
     std::vector<glm::dvec2> points;
     const int count = 3 + trial % 90;
-    for (int k = 0; k < count; ++k) points.push_back(unit(random) * along + stretch * unit(random) * across);
+    for (int k = 0; k < count; ++k)
+      points.push_back(unit(random) * along + stretch * unit(random) * across);
     if (trial % 3 == 0) points.push_back(points.front());
     const double expected = bruteMinimumWidth(points);
-    EXPECT_NEAR(convexHullMinimumWidth(points), expected, 1e-9 * (1 + expected)) << "trial " << trial;
+    EXPECT_NEAR(convexHullMinimumWidth(points), expected, 1e-9 * (1 + expected))
+        << "trial " << trial;
   }
   // Collinear points and a single point have no width.
   EXPECT_EQ(convexHullMinimumWidth({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), 0.0);
@@ -72,12 +74,13 @@ TEST(OccluderImage, SheetNearlyEdgeOnIsNarrowAndSteep) {
   for (float degrees : {1.0f, 4.0f, 12.0f}) {
     Scene scene = makeAnalyticScene("plate_mid");
     scene.objects.resize(1);
-    scene.objects.push_back({"sheet",
-                             makeQuad(1.0f, glm::rotate(glm::translate(glm::mat4(1), {0, 1, 0}),
-                                                        glm::radians(90.0f - degrees), glm::vec3(0, 0, 1))),
-                             {1, 1, 1}, false});
-    scene.objects.push_back({"rod", makeBox({1.0f, 0.02f, 0.02f}, glm::translate(glm::mat4(1), {0, 1.5f, 0})), {1, 1, 1}, false});
-    scene.objects.push_back({"plate", makeQuad(0.5f, glm::translate(glm::mat4(1), {0, 0.5f, 0})), {1, 1, 1}, false});
+    const glm::mat4 sheet = glm::rotate(glm::translate(glm::mat4(1), {0, 1, 0}),
+                                        glm::radians(90.0f - degrees), glm::vec3(0, 0, 1));
+    const glm::mat4 rod = glm::translate(glm::mat4(1), {0, 1.5f, 0});
+    const glm::mat4 plate = glm::translate(glm::mat4(1), {0, 0.5f, 0});
+    scene.objects.push_back({"sheet", makeQuad(1.0f, sheet), {1, 1, 1}, false});
+    scene.objects.push_back({"rod", makeBox({1.0f, 0.02f, 0.02f}, rod), {1, 1, 1}, false});
+    scene.objects.push_back({"plate", makeQuad(0.5f, plate), {1, 1, 1}, false});
     const LightFrame light = computeLightFrame(scene.light, scene.bounds(), 90.0f);
     const std::vector<OccluderImage> images = occluderImages(scene, light);
     ASSERT_EQ(images.size(), 4u);
@@ -86,7 +89,8 @@ TEST(OccluderImage, SheetNearlyEdgeOnIsNarrowAndSteep) {
     // about sin(degrees) / distance; on the map's plane at unit depth that is the width.
     const glm::vec3 p = light.wsProjectionPoint;
     const float depth = glm::dot(glm::vec3(0, 1, 0) - p, light.forward);
-    const double expected = std::sin(glm::radians(double(degrees))) / depth / (2.0 * light.tanHalfFovX);
+    const double expected =
+        std::sin(glm::radians(double(degrees))) / depth / (2.0 * light.tanHalfFovX);
     EXPECT_NEAR(images[1].width, expected, 0.35 * expected) << degrees << " degrees";
     EXPECT_GT(images[1].depthOverWidth, 2.0) << degrees << " degrees: steep";
     EXPECT_LT(images[2].depthOverWidth, 2.0) << "the rod lies across the rays";

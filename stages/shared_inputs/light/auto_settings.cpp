@@ -455,7 +455,8 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
       const OccluderImage& image = objectImages[o];
       const bool steep = image.depthOverWidth >= kSteepDepthOverWidth;
       const bool inNoMap = steep && image.width * 2048.0 < 1.0;
-      imageWidths.push_back(steep && !inNoMap ? image.width : std::numeric_limits<double>::infinity());
+      imageWidths.push_back(steep && !inNoMap ? image.width
+                                              : std::numeric_limits<double>::infinity());
       if (inNoMap && !named[o]) {
         named[o] = true;
         unseen.push_back(scene.objects[o].name);
@@ -463,10 +464,11 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
     }
     out.narrowestOccluderImage = weightedPercentile(imageWidths, areasPixels, 0.02);
     if (!unseen.empty())
-      out.warning = "WARNING: occluder " + quotedNames(unseen) + " is edge-on to the light's centre: its image "
-                    "in the light's map is under a texel wide even at 2048, so the depth layers "
-                    "do not hold it and the methods that read them (trace, PCSS, SSM, hard "
-                    "shadow) miss its shadow; the reference and raster4d see it (docs/decisions/156)";
+      out.warning = "WARNING: occluder " + quotedNames(unseen) +
+                    " is edge-on to the light's centre: its image in the light's map is under a "
+                    "texel wide even at 2048, so the depth layers do not hold it and the methods "
+                    "that read them (trace, PCSS, SSM, hard shadow) miss its shadow; the "
+                    "reference and raster4d see it (docs/decisions/156)";
   }
   const double imageNeeded = kOccluderImageTexels / std::max(out.narrowestOccluderImage, 1e-9);
   out.occluderImageResolution = roundUp(imageNeeded);
@@ -478,11 +480,12 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   out.ssmNeed = ssmResolutionNeeded(texelsPerResolution, areasPixels);  // auto_ssm.h
   out.smallestPenumbraWorld = percentile(widthsWorld, 0.02);
   out.smallestPenumbraTexels = percentile(texelsPerResolution, 0.02) * out.resolution;
-  if (out.resolution == out.neededResolution && out.occluderImageResolution > penumbraNeededResolution) {
+  if (out.resolution == out.neededResolution &&
+      out.occluderImageResolution > penumbraNeededResolution) {
     out.reasons.push_back(format(
         "map %.0f: the steep occluders (at least twice as deep along the light's rays as "
-        "their image is wide) holding 98%% of the penumbra area in view span at least %.0f texels across "
-        "their image in the light's map (the narrowest %.2g texels)",
+        "their image is wide) holding 98%% of the penumbra area in view span at least %.0f "
+        "texels across their image in the light's map (the narrowest %.2g texels)",
         out.resolution, kOccluderImageTexels, out.narrowestOccluderImage * out.resolution) +
         format("; %.0f would give their penumbrae 6 texels, but a steep occluder a few texels "
                "wide (a sheet nearly edge-on to the light) is too bright or too dark in all of "
@@ -522,8 +525,9 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
                                  needed, kPenumbraTexels));
   if (imageNeeded > 2048.0 && out.resolution == 2048)
     out.reasons.push_back(format("the %.0f^2 map on which the narrowest steep occluder's image "
-                                 "would span %.0f texels exceeds the 2048 limit: at 2048 it spans "
-                                 "%.2g, and its shadow may be too bright or too dark by a texel of that",
+                                 "would span %.0f texels exceeds the 2048 limit: at 2048 it "
+                                 "spans %.2g, and its shadow may be too bright or too dark by a "
+                                 "texel of that",
                                  imageNeeded, kOccluderImageTexels,
                                  out.narrowestOccluderImage * out.resolution));
   out.reasons.push_back(
