@@ -446,30 +446,15 @@ AutoSettings analyze(const Scene& scene, const SceneRays& rays, const LightFrame
   // A steep occluder whose image is under a texel wide even at 2048 (a sheet exactly edge-on
   // to the light's centre) is in no map: no size helps, so it is left out of the need and
   // named in a warning.
-  {
-    const std::vector<OccluderImage> objectImages = occluderImages(scene, light);
-    std::vector<double> imageWidths;
-    std::vector<bool> named(scene.objects.size(), false);
-    std::vector<std::string> unseen;
-    for (unsigned o : probes.objects) {
-      const OccluderImage& image = objectImages[o];
-      const bool steep = image.depthOverWidth >= kSteepDepthOverWidth;
-      const bool inNoMap = steep && image.width * 2048.0 < 1.0;
-      imageWidths.push_back(steep && !inNoMap ? image.width
-                                              : std::numeric_limits<double>::infinity());
-      if (inNoMap && !named[o]) {
-        named[o] = true;
-        unseen.push_back(scene.objects[o].name);
-      }
-    }
-    out.narrowestOccluderImage = weightedPercentile(imageWidths, areasPixels, 0.02);
-    if (!unseen.empty())
-      out.warning = "WARNING: occluder " + quotedNames(unseen) +
-                    " is edge-on to the light's centre: its image in the light's map is under a "
-                    "texel wide even at 2048, so the depth layers do not hold it and the methods "
-                    "that read them (trace, PCSS, SSM, hard shadow) miss its shadow; the "
-                    "reference and raster4d see it (docs/decisions/156)";
-  }
+  const SteepOccluders steep =
+      steepOccluders(scene, light, probes.objects, areasPixels, kSteepDepthOverWidth, 2048);
+  out.narrowestOccluderImage = steep.narrowestImage;
+  if (!steep.inNoMap.empty())
+    out.warning = "WARNING: occluder " + quotedNames(steep.inNoMap) +
+                  " is edge-on to the light's centre: its image in the light's map is under a "
+                  "texel wide even at 2048, so the depth layers do not hold it and the methods "
+                  "that read them (trace, PCSS, SSM, hard shadow) miss its shadow; the "
+                  "reference and raster4d see it (docs/decisions/156)";
   const double imageNeeded = kOccluderImageTexels / std::max(out.narrowestOccluderImage, 1e-9);
   out.occluderImageResolution = roundUp(imageNeeded);
   const int penumbraNeededResolution = out.neededResolution;

@@ -1,5 +1,7 @@
 #include "shared_inputs/light/occluder_image.h"
 
+#include "shared_inputs/weighted_percentile.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -113,4 +115,26 @@ std::vector<OccluderImage> occluderImages(const Scene& scene, const LightFrame& 
                                               : std::numeric_limits<double>::infinity();
   }
   return images;
+}
+
+SteepOccluders steepOccluders(const Scene& scene, const LightFrame& light,
+                              const std::vector<unsigned>& probeObjects,
+                              const std::vector<double>& probeAreas, double steepDepthOverWidth,
+                              int largestMap) {
+  const std::vector<OccluderImage> images = occluderImages(scene, light);
+  SteepOccluders out;
+  std::vector<double> widths;
+  std::vector<bool> named(scene.objects.size(), false);
+  for (unsigned o : probeObjects) {
+    const OccluderImage& image = images[o];
+    const bool steep = image.depthOverWidth >= steepDepthOverWidth;
+    const bool inNoMap = steep && image.width * double(largestMap) < 1.0;
+    widths.push_back(steep && !inNoMap ? image.width : std::numeric_limits<double>::infinity());
+    if (inNoMap && !named[o]) {
+      named[o] = true;
+      out.inNoMap.push_back(scene.objects[o].name);
+    }
+  }
+  if (!widths.empty()) out.narrowestImage = weightedPercentile(widths, probeAreas, 0.02);
+  return out;
 }

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "scene/light_frame.h"
@@ -35,6 +36,21 @@ struct OccluderImage {
 // at or behind the projection point's plane (their image is unbounded) keep the defaults
 // (infinitely wide, not deep).
 std::vector<OccluderImage> occluderImages(const Scene& scene, const LightFrame& light);
+
+// Step 4's measure over the in-view probes (`probeObjects`: the object each lies on;
+// `probeAreas`: the penumbra area each stands for): the image width below which 2% of that
+// area lies, counting only steep occluders (depthOverWidth >= steepDepthOverWidth; the others
+// count as infinitely wide), and the steep occluders whose image is under a texel even at
+// `largestMap` (a sheet exactly edge-on to the light's centre): no map shows them, so they are
+// left out of the width and named.
+struct SteepOccluders {
+  double narrowestImage = std::numeric_limits<double>::infinity();
+  std::vector<std::string> inNoMap;
+};
+SteepOccluders steepOccluders(const Scene& scene, const LightFrame& light,
+                              const std::vector<unsigned>& probeObjects,
+                              const std::vector<double>& probeAreas, double steepDepthOverWidth,
+                              int largestMap);
 
 // The minimum width of the convex hull of `points` (any order, repeats allowed): the
 // smallest distance between two parallel lines enclosing them all. 0 for fewer than three
